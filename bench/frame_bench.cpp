@@ -1,0 +1,161 @@
+#include "bench/frame_bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include "core/fast_raycaster.h"
+#include "core/reference_raycaster.h"
+#include "core/slice_tiles.h"
+
+namespace angio {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct Level {
+  std::string name;
+  Sampling sampling;
+};
+
+std::vector<Level> levels() {
+  Sampling trilinearMedium = qualitySampling(Quality::medium);
+  trilinearMedium.filter = Filter::trilinear;
+  return {{"fast", qualitySampling(Quality::fast)},
+          {"medium", qualitySampling(Quality::medium)},
+          {"medium-trilinear", trilinearMedium},
+          {"high", qualitySampling(Quality::high)}};
+}
+
+// One frame: returns samples evaluated.
+using FrameFunction = std::function<double(const RenderParams&)>;
+
+FrameTimes timeFrames(const std::string& level, const std::string& variant, int angles,
+                      const RenderParams& base, const FrameFunction& frame) {
+  std::vector<double> ms, samples;
+  for (int n = 0; n < angles; ++n) {
+    RenderParams p = base;
+    p.angleDeg = 360.0 * n / angles;
+    const auto start = Clock::now();
+    samples.push_back(frame(p));
+    ms.push_back(msSince(start));
+  }
+  return {level, variant, median(ms), *std::min_element(ms.begin(), ms.end()),
+          *std::max_element(ms.begin(), ms.end()), median(samples), angles};
+}
+
+}  // namespace
+
+BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, const BenchSettings& settings) {
+  std::optional<tbb::global_control> limit;
+  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+  BenchReport report;
+  report.transferFunction = tf.name;
+  report.dims = volume.dims;
+  report.volumeMiB = volume.voxelCount() * sizeof(Voxel) / 1048576.0;
+  report.threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+
+  const TfTable table = buildTable(tf);
+  auto start = Clock::now();
+  const SliceTiles tiles = buildSliceTiles(volume, settings.axis);
+  report.preprocessMs = msSince(start);
+  start = Clock::now();
+  const std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
+  report.classifyMs = msSince(start);
+  report.accelerationMiB = (tiles.minDensity.size() * 4 + visible.size()) / 1048576.0;
+
+  auto fastFrame = [&](FastRenderOptions options) {
+    return [&, options](const RenderParams& p) {
+      FastRenderStats stats;
+      renderFast(volume, tiles, visible, table, p, options, &stats);
+      return double(stats.samples);
+    };
+  };
+  for (const Level& level : levels()) {
+    RenderParams p;
+    p.axis = settings.axis;
+    p.sampling = level.sampling;
+    report.rows.push_back(timeFrames(level.name, "all", settings.angles, p, fastFrame({})));
+    std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
+    if (settings.withContributions) {
+      RenderParams noErt = p;
+      noErt.sampling.ert = 1.0;
+      report.rows.push_back(timeFrames(level.name, "no ERT", settings.angles, noErt, fastFrame({})));
+      FastRenderOptions noSkip;
+      noSkip.skipEmpty = false;
+      report.rows.push_back(timeFrames(level.name, "no empty-space skipping",
+                                       std::max(settings.angles / 6, 2), p, fastFrame(noSkip)));
+      {
+        tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+        report.rows.push_back(timeFrames(level.name, "one thread", std::max(settings.angles / 6, 2), p,
+                                         fastFrame({})));
+      }
+    }
+    if (settings.withReference)
+      report.rows.push_back(timeFrames(level.name, "reference", std::max(settings.angles / 3, 2), p,
+                                       [&](const RenderParams& rp) {
+                                         renderReference(volume, table, rp);
+                                         return 0.0;
+                                       }));
+  }
+  return report;
+}
+
+std::string formatTable(const BenchReport& r) {
+  std::ostringstream out;
+  char line[256];
+  std::snprintf(line, sizeof line, "volume %dx%dx%d (%.0f MiB), TF \"%s\", %d threads\n", r.dims.x,
+                r.dims.y, r.dims.z, r.volumeMiB, r.transferFunction.c_str(), r.threads);
+  out << line;
+  std::snprintf(line, sizeof line,
+                "preprocessing (slice tiles) %.0f ms, TF classification %.1f ms, structures %.1f MiB\n",
+                r.preprocessMs, r.classifyMs, r.accelerationMiB);
+  out << line;
+  std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %14s %7s\n", "level", "variant",
+                "median ms", "min ms", "max ms", "samples/frame", "frames");
+  out << line;
+  for (const FrameTimes& t : r.rows) {
+    std::snprintf(line, sizeof line, "%-17s %-24s %10.1f %10.1f %10.1f %14.3g %7d\n", t.level.c_str(),
+                  t.variant.c_str(), t.medianMs, t.minMs, t.maxMs, t.medianSamples, t.frames);
+    out << line;
+  }
+  return out.str();
+}
+
+std::string toJson(const BenchReport& r) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const FrameTimes& t : r.rows)
+    rows.push_back({{"level", t.level}, {"variant", t.variant}, {"median_ms", t.medianMs},
+                    {"min_ms", t.minMs}, {"max_ms", t.maxMs}, {"median_samples", t.medianSamples},
+                    {"frames", t.frames}});
+  nlohmann::json j{{"dataset", r.dataset},
+                   {"transfer_function", r.transferFunction},
+                   {"dims", {r.dims.x, r.dims.y, r.dims.z}},
+                   {"volume_mib", r.volumeMiB},
+                   {"acceleration_mib", r.accelerationMiB},
+                   {"preprocess_ms", r.preprocessMs},
+                   {"classify_ms", r.classifyMs},
+                   {"threads", r.threads},
+                   {"frames", rows}};
+  return j.dump(2);
+}
+
+}  // namespace angio

@@ -1,0 +1,47 @@
+#pragma once
+// Frame-time benchmark of the raycasters: for each quality level, render N angles about one axis
+// and report median, min and max ms per frame and samples per frame; then the same with one
+// technique switched off at a time ("contribution", thesis fig. 4.9 ff.).
+#include <string>
+#include <vector>
+
+#include "core/render_params.h"
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace angio {
+
+struct BenchSettings {
+  int angles = 36;
+  Axis axis = Axis::k;
+  bool withReference = false;  // also time the reference raycaster (slow)
+  bool withContributions = true;
+  int threads = 0;             // 0 = all cores
+};
+
+struct FrameTimes {
+  std::string level;        // "fast", "medium", "high", "medium-trilinear"
+  std::string variant;      // "all", "reference", "no empty-space skipping", ...
+  double medianMs = 0, minMs = 0, maxMs = 0;
+  double medianSamples = 0;  // density reconstructions per frame
+  int frames = 0;
+};
+
+struct BenchReport {
+  std::string dataset;
+  std::string transferFunction;
+  glm::ivec3 dims{0};
+  double volumeMiB = 0;
+  double accelerationMiB = 0;     // slice tiles + classification
+  double preprocessMs = 0;        // building the slice tiles for the axis
+  double classifyMs = 0;          // classifying them for the TF
+  int threads = 0;
+  std::vector<FrameTimes> rows;
+};
+
+BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, const BenchSettings& settings);
+
+std::string formatTable(const BenchReport& report);
+std::string toJson(const BenchReport& report);
+
+}  // namespace angio

@@ -1,0 +1,24 @@
+#include "core/compositing.h"
+
+namespace angio {
+
+float opacityAtDistance(float opacityPerVoxel, double osd) {
+  return float(1.0 - std::pow(1.0 - double(opacityPerVoxel), osd));
+}
+
+SampleTable correctedTable(const TfTable& table, double osd) {
+  SampleTable corrected;
+  for (int d = 0; d < kDensityLevels; ++d) {
+    corrected[d] = table.rgba[d];
+    corrected[d].a = opacityAtDistance(table.rgba[d].a, osd);
+  }
+  return corrected;
+}
+
+glm::vec4 mipPixel(float maximumDensity, const MipWindow& window) {
+  const double low = window.level - window.window / 2;
+  const float grey = float(std::clamp((huOfDensity(maximumDensity) - low) / window.window, 0.0, 1.0));
+  return glm::vec4(grey, grey, grey, 1.f);
+}
+
+}  // namespace angio

@@ -1,0 +1,52 @@
+#include "core/ray_templates.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "core/compositing.h"
+
+namespace angio {
+
+namespace {
+
+int tileOf(double q, int n) {
+  return int(std::floor(std::clamp(q, 0.0, double(n - 1)))) / kTileSize;
+}
+
+std::vector<TileRun> columnRuns(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles,
+                                int x) {
+  // Any row inside the axis extent has the same in-plane samples; use the middle one.
+  glm::dvec3 origin = view.rayOrigin(x, 0);
+  origin[view.axis] = view.centre[view.axis];
+  const SampleRange range = sampleRange(view, origin);
+  const int nb = volume.dims[tiles.axisB], nc = volume.dims[tiles.axisC];
+  std::vector<TileRun> runs;
+  for (long k = range.first; k <= range.last; ++k) {
+    const glm::dvec3 q = sampleCoordinate(volume, view, origin, k);
+    const int tile = tileOf(q[tiles.axisC], nc) * tiles.tilesB + tileOf(q[tiles.axisB], nb);
+    if (!runs.empty() && runs.back().tile == tile)
+      ++runs.back().count;
+    else
+      runs.push_back({tile, 1, k});
+  }
+  return runs;
+}
+
+}  // namespace
+
+RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles) {
+  std::vector<std::vector<TileRun>> perColumn(view.width);
+  tbb::parallel_for(0, view.width, [&](int x) { perColumn[x] = columnRuns(volume, view, tiles, x); });
+  RayTemplates templates;
+  templates.columnBegin.reserve(view.width + 1);
+  for (const auto& runs : perColumn) {
+    templates.columnBegin.push_back(std::uint32_t(templates.runs.size()));
+    templates.runs.insert(templates.runs.end(), runs.begin(), runs.end());
+  }
+  templates.columnBegin.push_back(std::uint32_t(templates.runs.size()));
+  return templates;
+}
+
+}  // namespace angio

@@ -1,0 +1,63 @@
+#include "core/reference_raycaster.h"
+
+#include <atomic>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/compositing.h"
+#include "core/volume_sampling.h"
+
+namespace angio {
+
+namespace {
+
+glm::vec4 compositeDvr(const Volume& volume, const ViewGeometry& view, const glm::dvec3& origin,
+                       SampleRange samples, const SampleTable& table, const RenderParams& params) {
+  const Filter filter = params.sampling.filter;
+  const glm::vec3 viewDir(view.viewDir);
+  RayAccumulator ray;
+  for (long k = samples.first; k <= samples.last; ++k) {
+    const glm::dvec3 q = sampleCoordinate(volume, view, origin, k);
+    const glm::vec4 rgba = table[tableIndex(sampleDensity(volume, q, filter))];
+    if (rgba.a <= 0.f) continue;  // transparent: contributes nothing, shading not needed
+    ray.add(rgba, shadingFactor(params.shading, sampleGradient(volume, q, filter), viewDir));
+    if (ray.opacity >= params.sampling.ert) break;
+  }
+  return ray.pixel();
+}
+
+glm::vec4 compositeMip(const Volume& volume, const ViewGeometry& view, const glm::dvec3& origin,
+                       SampleRange samples, const RenderParams& params) {
+  if (samples.empty()) return glm::vec4(0.f);
+  float maximum = 0.f;
+  for (long k = samples.first; k <= samples.last; ++k)
+    maximum = std::max(maximum, sampleDensity(volume, sampleCoordinate(volume, view, origin, k),
+                                              params.sampling.filter));
+  return mipPixel(maximum, params.mip);
+}
+
+}  // namespace
+
+Image renderReference(const Volume& volume, const TfTable& table, const RenderParams& params,
+                      const std::function<void(double)>& progress) {
+  const ViewGeometry view = makeViewGeometry(volume, params);
+  Image image = makeImage(view.width, view.height);
+  const SampleTable corrected = correctedTable(table, params.sampling.osd);
+  std::atomic<int> rowsDone{0};
+  tbb::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < view.width; ++x) {
+        const glm::dvec3 origin = view.rayOrigin(x, y);
+        const SampleRange samples = sampleRange(view, origin);
+        image.at(x, y) = params.compositing == Compositing::mip
+                             ? compositeMip(volume, view, origin, samples, params)
+                             : compositeDvr(volume, view, origin, samples, corrected, params);
+      }
+    const int done = rowsDone += int(rows.size());
+    if (progress) progress(double(done) / view.height);
+  });
+  return image;
+}
+
+}  // namespace angio

@@ -1,0 +1,50 @@
+#pragma once
+// Everything that decides a rendered image besides the volume and the TF (rendering model).
+#include <optional>
+#include <string>
+
+namespace angio {
+
+enum class Axis { i = 0, j = 1, k = 2 };
+enum class Filter { nearest, trilinear, mean };
+enum class Quality { fast, medium, high };
+enum class Compositing { dvr, mip };
+
+struct Sampling {
+  double isd = 1.0;   // image sampling distance, voxel units
+  double osd = 1.0;   // object sampling distance, voxel units
+  Filter filter = Filter::nearest;
+  double ert = 0.98;  // early ray termination threshold on accumulated opacity; 1 = never
+};
+
+struct Shading {
+  bool enabled = true;
+  double ka = 0.3;  // ambient
+  double kd = 0.7;  // headlight diffuse
+};
+
+struct MipWindow {
+  double window = 600;  // HU
+  double level = 250;   // HU
+};
+
+struct RenderParams {
+  Axis axis = Axis::k;
+  double angleDeg = 0;
+  Sampling sampling;
+  Shading shading;
+  Compositing compositing = Compositing::dvr;
+  MipWindow mip;
+};
+
+// The quality levels' default sampling (rendering model table).
+Sampling qualitySampling(Quality quality);
+
+const char* toString(Axis axis);
+const char* toString(Filter filter);
+const char* toString(Quality quality);
+std::optional<Axis> parseAxis(const std::string& text);
+std::optional<Filter> parseFilter(const std::string& text);
+std::optional<Quality> parseQuality(const std::string& text);
+
+}  // namespace angio

@@ -1,0 +1,55 @@
+#include "core/transfer_function.h"
+
+#include <algorithm>
+
+namespace angio {
+
+void sortPoints(TransferFunction& tf) {
+  std::stable_sort(tf.points.begin(), tf.points.end(),
+                   [](const ControlPoint& a, const ControlPoint& b) { return a.hu < b.hu; });
+}
+
+namespace {
+
+glm::vec4 pointValue(const ControlPoint& p) { return glm::vec4(p.color, float(p.opacity)); }
+
+glm::vec4 interpolate(const std::vector<ControlPoint>& points, double hu) {
+  if (points.empty()) return glm::vec4(0.f);
+  if (hu <= points.front().hu) return pointValue(points.front());
+  if (hu >= points.back().hu) return pointValue(points.back());
+  const auto upper = std::upper_bound(points.begin(), points.end(), hu,
+                                      [](double h, const ControlPoint& p) { return h < p.hu; });
+  const ControlPoint& b = *upper;
+  const ControlPoint& a = *(upper - 1);
+  const double t = (hu - a.hu) / (b.hu - a.hu);
+  return glm::mix(pointValue(a), pointValue(b), float(t));
+}
+
+}  // namespace
+
+glm::vec4 evaluate(const TransferFunction& tf, double hu) {
+  glm::vec4 value = interpolate(tf.points, hu - tf.modulators.huShift);
+  value.a = float(std::clamp(value.a * tf.modulators.opacityScale, 0.0, 1.0));
+  return value;
+}
+
+TfTable buildTable(const TransferFunction& tf) {
+  TfTable table;
+  TransferFunction sorted = tf;
+  sortPoints(sorted);
+  for (int d = 0; d < kDensityLevels; ++d) {
+    table.rgba[d] = evaluate(sorted, huOfDensity(d));
+    table.integratedOpacity[d + 1] = table.integratedOpacity[d] + table.rgba[d].a;
+    table.integratedVisible[d + 1] = table.integratedVisible[d] + (table.rgba[d].a > 0.f ? 1 : 0);
+  }
+  return table;
+}
+
+bool TfTable::anyVisible(int lo, int hi) const {
+  if (hi < lo) return false;  // before clamping: [5000, 4500] is empty, not density 4095
+  lo = std::clamp(lo, 0, kDensityLevels - 1);
+  hi = std::clamp(hi, 0, kDensityLevels - 1);
+  return integratedVisible[hi + 1] - integratedVisible[lo] > 0;
+}
+
+}  // namespace angio

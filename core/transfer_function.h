@@ -1,0 +1,57 @@
+#pragma once
+// Transfer function (rendering model, "Post-classification"): control points (HU, rgb, opacity)
+// linearly interpolated and tabulated over the 4096 densities, plus the integrated opacity table
+// (thesis sec. 4.2.2): prefix sums of opacity, so "is any density in [lo, hi] visible?" is one
+// subtraction. Opacity is per voxel unit.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/voxel.h"
+
+namespace angio {
+
+struct ControlPoint {
+  double hu = 0;
+  glm::vec3 color{0.f};  // rgb in [0, 1]
+  double opacity = 0;    // in [0, 1], per voxel unit
+};
+
+// The thesis's "safe" manipulators (sec. 4.2.2): they never change the TF's shape.
+struct TfModulators {
+  double opacityScale = 1.0;  // global opacity modulator, result clamped to [0, 1]
+  double huShift = 0.0;       // every control point moved by this many HU
+};
+
+struct TransferFunction {
+  std::string name;
+  std::vector<ControlPoint> points;  // sorted by hu (sortPoints keeps them so)
+  TfModulators modulators;
+  // MIP window/level (HU) that goes with this TF; used when rendering in MIP mode.
+  double mipWindow = 600;
+  double mipLevel = 250;
+};
+
+void sortPoints(TransferFunction& tf);
+
+// Piecewise-linear evaluation at a HU value, modulators applied; constant beyond the end points,
+// fully transparent black when there are no points.
+glm::vec4 evaluate(const TransferFunction& tf, double hu);
+
+struct TfTable {
+  std::array<glm::vec4, kDensityLevels> rgba{};  // by density d, opacity per voxel unit
+  // integratedOpacity[d] = sum of opacity over densities < d; [4096] = total (thesis sec. 4.2.2).
+  std::array<double, kDensityLevels + 1> integratedOpacity{};
+  // The same prefix sum over "opacity > 0" as integers: exact even for opacities too small to
+  // change a floating-point sum, so the visibility query never misses a visible density.
+  std::array<int, kDensityLevels + 1> integratedVisible{};
+
+  // True iff some density in [lo, hi] (clamped to the table) has opacity > 0. O(1).
+  bool anyVisible(int lo, int hi) const;
+};
+
+TfTable buildTable(const TransferFunction& tf);
+
+}  // namespace angio

@@ -1,0 +1,70 @@
+#include "core/view_geometry.h"
+
+#include <cmath>
+#include <limits>
+
+namespace angio {
+
+namespace {
+
+glm::dvec3 unitAxis(int index) {
+  glm::dvec3 e(0.0);
+  e[index] = 1.0;
+  return e;
+}
+
+}  // namespace
+
+ViewGeometry makeViewGeometry(const Volume& volume, const RenderParams& params) {
+  ViewGeometry view;
+  view.axis = int(params.axis);
+  view.axisB = (view.axis + 1) % 3;  // (a, b, c) cyclic: (k, i, j), (i, j, k), (j, k, i)
+  view.axisC = (view.axis + 2) % 3;
+  const double theta = params.angleDeg * M_PI / 180.0;
+  const double c = std::cos(theta), s = std::sin(theta);
+  view.viewDir = c * unitAxis(view.axisC) - s * unitAxis(view.axisB);
+  view.right = c * unitAxis(view.axisB) + s * unitAxis(view.axisC);
+  view.up = unitAxis(view.axis);
+
+  const double u = voxelUnit(volume);
+  view.pixelMm = params.sampling.isd * u;
+  view.sampleMm = params.sampling.osd * u;
+  view.extent = domainExtent(volume);
+  view.centre = view.extent * 0.5;
+  const double diagonal = std::hypot(view.extent[view.axisB], view.extent[view.axisC]);
+  view.width = std::max(1, int(std::ceil(diagonal / view.pixelMm)));
+  view.height = std::max(1, int(std::ceil(view.extent[view.axis] / view.pixelMm)));
+  return view;
+}
+
+glm::dvec3 ViewGeometry::rayOrigin(int x, int y) const {
+  const double h = (x + 0.5 - width * 0.5) * pixelMm;
+  const double v = (height * 0.5 - y - 0.5) * pixelMm;
+  return centre + h * right + v * up;
+}
+
+SampleRange sampleRange(const ViewGeometry& view, glm::dvec3 origin) {
+  // Slab test against the closed box [0, E]; a tiny tolerance keeps samples that sit exactly on a
+  // face (e.g. theta = 0, where rays run along voxel rows) inside despite rounding.
+  constexpr double kEps = 1e-9;
+  double tNear = -std::numeric_limits<double>::infinity();
+  double tFar = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = origin[axis], d = view.viewDir[axis], e = view.extent[axis];
+    if (std::abs(d) < 1e-12) {
+      if (o < -kEps || o > e + kEps) return {};
+      continue;
+    }
+    double t0 = (0.0 - o) / d, t1 = (e - o) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    tNear = std::max(tNear, t0);
+    tFar = std::min(tFar, t1);
+  }
+  if (tNear > tFar + kEps) return {};
+  SampleRange range;
+  range.first = long(std::ceil(tNear / view.sampleMm - kEps));
+  range.last = long(std::floor(tFar / view.sampleMm + kEps));
+  return range;
+}
+
+}  // namespace angio

@@ -1,0 +1,244 @@
+#include "io/dicom_series.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include <itkGDCMImageIO.h>
+#include <itkGDCMSeriesFileNames.h>
+
+#include "io/input_error.h"
+#include "io/volume_conversion.h"
+#include "io/volume_formats.h"
+#include "io/volume_memory.h"
+
+namespace angio {
+
+namespace {
+
+struct Series {
+  std::string uid;
+  std::vector<std::string> files;
+};
+
+// One slice read in full: where it sits and its pixels, already encoded.
+struct Slice {
+  std::string file;
+  glm::dvec3 position{0.0};          // ImagePositionPatient: centre of the first voxel (mm, LPS)
+  glm::dvec3 row{0.0}, column{0.0};  // ImageOrientationPatient
+  glm::dvec2 pixelSpacing{1.0};      // mm along row, column
+  int rows = 0, columns = 0;
+  double along = 0.0;  // position along the slice normal
+  std::vector<Voxel> voxels;
+};
+
+std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+// "12.5", "15.0": two decimals at most, one at least.
+std::string millimetres(double value) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.2f", value);
+  std::string s = text;
+  while (s.size() > 1 && s.back() == '0' && s[s.size() - 2] != '.') s.pop_back();
+  return s == "-0.0" ? "0.0" : s;
+}
+
+Series chooseSeries(const std::filesystem::path& folder, const ReadOptions& options) {
+  auto names = itk::GDCMSeriesFileNames::New();
+  // Group by SeriesInstanceUID alone: a series that mixes orientations or sizes is reported as
+  // such below instead of being split silently.
+  names->SetUseSeriesDetails(false);
+  names->SetDirectory(folder.string());
+  std::vector<Series> all;
+  for (const std::string& uid : names->GetSeriesUIDs()) all.push_back({uid, names->GetFileNames(uid)});
+  if (all.empty()) throw InputError(folder, "no DICOM series found in the folder");
+  std::stable_sort(all.begin(), all.end(),
+                   [](const Series& a, const Series& b) { return a.files.size() > b.files.size(); });
+  if (all.size() > 1 && options.warn) {
+    std::ostringstream text;
+    text << folder.string() << ": " << all.size() << " DICOM series in the folder; loading "
+         << all[0].uid << " (" << all[0].files.size() << " slices), ignoring";
+    for (std::size_t n = 1; n < all.size(); ++n)
+      text << (n > 1 ? ", " : " ") << all[n].uid << " (" << all[n].files.size() << " slices)";
+    options.warn(text.str());
+  }
+  return all.front();
+}
+
+itk::GDCMImageIO::Pointer readSliceHeader(const std::filesystem::path& folder, const std::string& file) {
+  auto io = itk::GDCMImageIO::New();
+  io->SetFileName(file);
+  io->ReadImageInformation();
+  std::string value;
+  if (!io->GetValueFromTag("0020|0032", value) || !io->GetValueFromTag("0020|0037", value))
+    throw InputError(folder,
+                     "slice " + fileName(file) + " has no ImagePositionPatient/ImageOrientationPatient");
+  if (io->GetNumberOfComponents() != 1)
+    throw InputError(folder, "slice " + fileName(file) + " is not greyscale; need CT slices");
+  if (io->GetDimensions(2) != 1)
+    throw InputError(folder,
+                     "slice " + fileName(file) + " is a multi-frame image inside a series of slices");
+  return io;
+}
+
+// Reads a slice's header and pixels (rescale slope/intercept applied by GDCM) as encoded voxels;
+// counts NaN/Inf pixel values (float pixel data) into `nonFinite`.
+Slice readSlice(const std::filesystem::path& folder, const std::string& file,
+                std::vector<double>& scratch, std::size_t& nonFinite) {
+  const itk::GDCMImageIO::Pointer io = readSliceHeader(folder, file);
+  Slice slice;
+  slice.file = file;
+  slice.columns = int(io->GetDimensions(0));
+  slice.rows = int(io->GetDimensions(1));
+  slice.pixelSpacing = {io->GetSpacing(0), io->GetSpacing(1)};
+  for (int axis = 0; axis < 3; ++axis) {
+    slice.position[axis] = io->GetOrigin(axis);
+    slice.row[axis] = io->GetDirection(0)[axis];
+    slice.column[axis] = io->GetDirection(1)[axis];
+  }
+  scratch.resize((io->GetImageSizeInBytes() + sizeof(double) - 1) / sizeof(double));
+  io->Read(scratch.data());
+  slice.voxels.resize(std::size_t(slice.columns) * slice.rows);
+  nonFinite += withComponentType(io->GetComponentType(), [&](auto type) {
+    using T = typename decltype(type)::type;
+    return HuToVoxels{}(reinterpret_cast<const T*>(scratch.data()), 1, int(slice.voxels.size()),
+                        slice.voxels.data());
+  });
+  return slice;
+}
+
+glm::dvec3 sliceNormal(const std::filesystem::path& folder, const Slice& slice) {
+  const glm::dvec3 normal = glm::cross(slice.row, slice.column);
+  const double length = glm::length(normal);
+  if (!(length > 0.5))  // the cosines should be orthonormal; tolerate rounding only
+    throw InputError(folder,
+                     "slice " + fileName(slice.file) + " has an invalid ImageOrientationPatient");
+  return normal / length;
+}
+
+void requireSameOrientationAndSize(const std::filesystem::path& folder,
+                                   const std::vector<Slice>& slices) {
+  const Slice& first = slices.front();
+  for (const Slice& slice : slices) {
+    const double difference =
+        std::max(glm::length(slice.row - first.row), glm::length(slice.column - first.column));
+    if (difference > 1e-3)
+      throw InputError(folder, "mixed slice orientations in one series (" + fileName(first.file) +
+                                   " vs " + fileName(slice.file) + ")");
+    if (slice.rows != first.rows || slice.columns != first.columns)
+      throw InputError(folder, "slices of different sizes in one series (" + fileName(first.file) +
+                                   " vs " + fileName(slice.file) + ")");
+  }
+}
+
+// The LPS coordinate (x, y or z) a slice normal runs along, for messages.
+int dominantAxis(glm::dvec3 normal) {
+  const glm::dvec3 a = glm::abs(normal);
+  return a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+}
+
+double uniformSpacing(const std::filesystem::path& folder, const std::vector<Slice>& slices,
+                      glm::dvec3 normal) {
+  std::vector<double> along;
+  for (const Slice& slice : slices) along.push_back(slice.along);
+  std::vector<double> missing;
+  try {
+    missing = missingSlicePositions(along);
+  } catch (const std::invalid_argument& problem) {
+    throw InputError(folder, problem.what());
+  }
+  if (!missing.empty()) {
+    const int axis = dominantAxis(normal);
+    std::string list;
+    const std::size_t shown = std::min<std::size_t>(missing.size(), 10);
+    for (std::size_t n = 0; n < shown; ++n) {
+      const glm::dvec3 point = slices.front().position + normal * (missing[n] - along.front());
+      list += (n ? ", " : "") + millimetres(point[axis]);
+    }
+    if (shown < missing.size()) list += ", ... (" + std::to_string(missing.size()) + " in all)";
+    throw InputError(
+        folder, std::string("gap in slice positions: missing ") + "xyz"[axis] + " = " + list + " mm");
+  }
+  return (along.back() - along.front()) / double(along.size() - 1);
+}
+
+}  // namespace
+
+std::vector<double> missingSlicePositions(const std::vector<double>& sorted) {
+  if (sorted.size() < 2) return {};
+  std::vector<double> steps;
+  for (std::size_t n = 1; n < sorted.size(); ++n) steps.push_back(sorted[n] - sorted[n - 1]);
+  const double smallest = *std::min_element(steps.begin(), steps.end());
+  if (smallest < 1e-3) {
+    const std::size_t at = std::min_element(steps.begin(), steps.end()) - steps.begin();
+    throw std::invalid_argument("two slices at the same position (" + millimetres(sorted[at]) +
+                                " mm along the slice normal)");
+  }
+  // The common step: the median of the steps near the smallest (missing slices make larger ones).
+  std::vector<double> common;
+  for (double step : steps)
+    if (step <= 1.5 * smallest) common.push_back(step);
+  std::nth_element(common.begin(), common.begin() + common.size() / 2, common.end());
+  const double base = common[common.size() / 2];
+  const double tolerance = 0.05 * base;  // scanners jitter by far less than this
+  std::vector<double> missing;
+  for (std::size_t n = 0; n < steps.size(); ++n) {
+    const double multiple = std::round(steps[n] / base);
+    if (multiple < 1 || std::abs(steps[n] - multiple * base) > tolerance * multiple)
+      throw std::invalid_argument("non-uniform slice spacing: step of " + millimetres(steps[n]) +
+                                  " mm after " + millimetres(sorted[n]) + " mm (common step " +
+                                  millimetres(base) + " mm)");
+    for (int t = 1; t < int(multiple); ++t) missing.push_back(sorted[n] + t * steps[n] / multiple);
+  }
+  return missing;
+}
+
+DicomStack readDicomSeries(const std::filesystem::path& folder, const ReadOptions& options,
+                           double extraBytesPerVoxel) {
+  try {
+    const Series series = chooseSeries(folder, options);
+    if (series.files.size() < 2)
+      throw InputError(folder, "the DICOM series has a single slice; need a 3-D volume");
+    {  // Before reading pixels: the slices, the stack assembled from them and the caller's share.
+      const auto first = readSliceHeader(folder, series.files.front());
+      const glm::dvec3 dims(first->GetDimensions(0), first->GetDimensions(1), series.files.size());
+      requireMemory(folder, dims, dims.x * dims.y * dims.z * (2 * sizeof(Voxel) + extraBytesPerVoxel));
+    }
+    DicomStack stack;
+    std::vector<Slice> slices;
+    std::vector<double> scratch;
+    for (const std::string& file : series.files) {
+      slices.push_back(readSlice(folder, file, scratch, stack.nonFinite));
+      if (options.progress) options.progress(0.85 * double(slices.size()) / double(series.files.size()));
+    }
+    requireSameOrientationAndSize(folder, slices);
+    const glm::dvec3 normal = sliceNormal(folder, slices.front());
+    for (Slice& slice : slices) slice.along = glm::dot(slice.position, normal);
+    std::sort(slices.begin(), slices.end(),
+              [](const Slice& a, const Slice& b) { return a.along < b.along; });
+
+    VolumeGeometry& geometry = stack.geometry;
+    geometry.dims = {slices[0].columns, slices[0].rows, int(slices.size())};
+    geometry.spacing = {slices[0].pixelSpacing.x, slices[0].pixelSpacing.y,
+                        uniformSpacing(folder, slices, normal)};
+    geometry.origin = slices.front().position;
+    geometry.direction =
+        glm::dmat3(glm::normalize(slices[0].row), glm::normalize(slices[0].column), normal);
+    const std::size_t sliceVoxels = std::size_t(geometry.dims.x) * geometry.dims.y;
+    stack.voxels.resize(sliceVoxels * slices.size());
+    for (std::size_t k = 0; k < slices.size(); ++k) {
+      std::copy(slices[k].voxels.begin(), slices[k].voxels.end(),
+                stack.voxels.begin() + k * sliceVoxels);
+      std::vector<Voxel>().swap(slices[k].voxels);  // give the memory back as we go
+    }
+    stack.description = "DICOM series " + series.uid + " (" + std::to_string(slices.size()) + " slices)";
+    return stack;
+  } catch (const itk::ExceptionObject& error) {
+    throw InputError(folder, "cannot read the DICOM series: " + oneLine(error));
+  }
+}
+
+}  // namespace angio

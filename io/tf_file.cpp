@@ -1,0 +1,275 @@
+#include "io/tf_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/atomic_write.h"
+#include "io/input_error.h"
+
+#ifndef ANGIORAY_PRESET_DIR
+#define ANGIORAY_PRESET_DIR "presets"
+#endif
+
+namespace angio {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using OrderedJson = nlohmann::ordered_json;
+
+namespace {
+
+constexpr double kMinHu = huOfDensity(0);
+constexpr double kMaxHu = huOfDensity(kDensityLevels - 1);
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// --- Loading --------------------------------------------------------------------------------
+
+// A JSON value that must be a finite number (strings such as "NaN", null and booleans are
+// rejected). JSON has no NaN or infinity and the parser rejects 1e999, so the finiteness check is
+// a guard for JSON built in memory.
+double requireNumber(const Json& value, const fs::path& source, const std::string& what) {
+  if (!value.is_number()) throw InputError(source, what + " is not a number: " + value.dump());
+  const double number = value.get<double>();
+  if (!std::isfinite(number)) throw InputError(source, what + " is not finite");
+  return number;
+}
+
+double requireInRange(const Json& value, double lo, double hi, const fs::path& source,
+                      const std::string& what) {
+  const double number = requireNumber(value, source, what);
+  if (number < lo || number > hi) {
+    throw InputError(source, what + " " + formatNumber(number) + " outside [" + formatNumber(lo) +
+                                 ", " + formatNumber(hi) + "]");
+  }
+  return number;
+}
+
+const Json& requireKey(const Json& object, const char* key, const fs::path& source,
+                       const std::string& where) {
+  const auto found = object.find(key);
+  if (found == object.end()) throw InputError(source, where + " has no \"" + key + "\"");
+  return *found;
+}
+
+// Points are numbered from 1 in messages, in file order.
+ControlPoint parsePoint(const Json& point, int number, const fs::path& source) {
+  const std::string where = "point " + std::to_string(number);
+  if (!point.is_object()) throw InputError(source, where + " is not an object");
+  ControlPoint parsed;
+  parsed.hu = requireInRange(requireKey(point, "hu", source, where), kMinHu, kMaxHu, source,
+                             where + ": hu");
+  const Json& color = requireKey(point, "color", source, where);
+  if (!color.is_array() || color.size() != 3)
+    throw InputError(source, where + ": color is not an array of 3 numbers");
+  for (int c = 0; c < 3; ++c) {
+    parsed.color[c] =
+        float(requireInRange(color[c], 0, 1, source, where + ": color[" + std::to_string(c) + "]"));
+  }
+  parsed.opacity = requireInRange(requireKey(point, "opacity", source, where), 0, 1, source,
+                                  where + ": opacity");
+  return parsed;
+}
+
+void parseMip(const Json& mip, const fs::path& source, TransferFunction& tf) {
+  if (!mip.is_object()) throw InputError(source, "\"mip\" is not an object");
+  if (mip.contains("window")) {
+    tf.mipWindow = requireNumber(mip["window"], source, "mip window");
+    if (tf.mipWindow <= 0) throw InputError(source, "mip window must be > 0");
+  }
+  if (mip.contains("level")) tf.mipLevel = requireNumber(mip["level"], source, "mip level");
+}
+
+void parseModulators(const Json& modulators, const fs::path& source, TransferFunction& tf) {
+  if (!modulators.is_object()) throw InputError(source, "\"modulators\" is not an object");
+  if (modulators.contains("opacity_scale")) {
+    tf.modulators.opacityScale =
+        requireNumber(modulators["opacity_scale"], source, "modulators opacity_scale");
+    if (tf.modulators.opacityScale < 0)
+      throw InputError(source, "modulators opacity_scale must be >= 0");
+  }
+  if (modulators.contains("hu_shift"))
+    tf.modulators.huShift = requireNumber(modulators["hu_shift"], source, "modulators hu_shift");
+}
+
+Json parseJsonText(const std::string& text, const fs::path& source) {
+  try {
+    return Json::parse(text);
+  } catch (const Json::parse_error& error) {
+    // what() is "[json.exception.parse_error.101] parse error at line 1, column 2: <reason>".
+    const std::string message = error.what();
+    const auto reasonStart = message.find(": ");
+    const std::string reason =
+        reasonStart == std::string::npos ? message : message.substr(reasonStart + 2);
+    throw InputError(source,
+                     "not valid JSON at byte " + std::to_string(error.byte) + ": " + reason);
+  } catch (const Json::exception& error) {
+    // E.g. out_of_range 406 "number overflow parsing '1e999'", which carries no position.
+    const std::string message = error.what();
+    throw InputError(source, "not valid JSON: " + message.substr(message.find(']') + 2));
+  }
+}
+
+// --- Saving ---------------------------------------------------------------------------------
+
+// Colours are floats: written with the shortest decimal that reads back as the same float
+// (0.6f as 0.6, not 0.6000000238418579), so files stay readable and round trips stay exact.
+double shortestDecimal(float value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::strtod(std::string(buffer, end).c_str(), nullptr);
+}
+
+std::string dumpJson(const OrderedJson& value, int indent = -1) {
+  // Invalid UTF-8 in a name is replaced rather than throwing halfway through a save.
+  return value.dump(indent, ' ', false, Json::error_handler_t::replace);
+}
+
+OrderedJson pointJson(const ControlPoint& point) {
+  OrderedJson json;
+  json["hu"] = point.hu;
+  json["color"] = {shortestDecimal(point.color.r), shortestDecimal(point.color.g),
+                   shortestDecimal(point.color.b)};
+  json["opacity"] = point.opacity;
+  return json;
+}
+
+// --- Presets --------------------------------------------------------------------------------
+
+fs::path presetDirectory() {
+  if (const char* fromEnvironment = std::getenv("ANGIORAY_PRESET_DIR");
+      fromEnvironment != nullptr && *fromEnvironment != '\0') {
+    return fromEnvironment;
+  }
+  std::error_code error;
+  const fs::path besideExecutable =
+      fs::read_symlink("/proc/self/exe", error).parent_path() / "presets";
+  if (!error && fs::is_directory(besideExecutable, error)) return besideExecutable;
+  return ANGIORAY_PRESET_DIR;
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+std::string presetIdList(const std::vector<Preset>& presets) {
+  std::string list;
+  for (const Preset& preset : presets) list += (list.empty() ? "" : ", ") + preset.id;
+  return list.empty() ? "(none found)" : list;
+}
+
+}  // namespace
+
+TransferFunction parseTransferFunction(const std::string& text, const fs::path& source) {
+  const Json json = parseJsonText(text, source);
+  if (!json.is_object())
+    throw InputError(source, "not a transfer function (expected a JSON object)");
+
+  TransferFunction tf;
+  tf.name = source.stem().string();
+  if (json.contains("name")) {
+    if (!json["name"].is_string()) throw InputError(source, "\"name\" is not a string");
+    tf.name = json["name"].get<std::string>();
+  }
+  if (!json.contains("points")) throw InputError(source, "has no \"points\"");
+  const Json& points = json["points"];
+  if (!points.is_array()) throw InputError(source, "\"points\" is not an array");
+  if (points.empty()) throw InputError(source, "\"points\" is empty");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    tf.points.push_back(parsePoint(points[i], int(i) + 1, source));
+  sortPoints(tf);
+
+  if (json.contains("mip")) parseMip(json["mip"], source, tf);
+  if (json.contains("modulators")) parseModulators(json["modulators"], source, tf);
+  // "description" and "mode" are for people and the UI; a TransferFunction does not keep them.
+  return tf;
+}
+
+TransferFunction loadTransferFunction(const fs::path& path) {
+  std::error_code error;
+  if (!fs::exists(path, error)) throw InputError(path, "no such file");
+  if (fs::is_directory(path, error)) throw InputError(path, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in || in.bad()) throw InputError(path, "cannot read the file");
+  return parseTransferFunction(text.str(), path);
+}
+
+std::string toJson(const TransferFunction& tf) {
+  // One point per line, like the shipped presets, rather than dump(2)'s one number per line.
+  std::string out = "{\n  \"name\": " + dumpJson(OrderedJson(tf.name)) + ",\n  \"points\": [\n";
+  for (std::size_t i = 0; i < tf.points.size(); ++i) {
+    out += "    " + dumpJson(pointJson(tf.points[i])) + (i + 1 < tf.points.size() ? ",\n" : "\n");
+  }
+  out += "  ],\n";
+  const OrderedJson mip = {{"window", tf.mipWindow}, {"level", tf.mipLevel}};
+  const OrderedJson modulators = {{"opacity_scale", tf.modulators.opacityScale},
+                                  {"hu_shift", tf.modulators.huShift}};
+  out += "  \"mip\": " + dumpJson(mip) + ",\n";
+  out += "  \"modulators\": " + dumpJson(modulators) + "\n}\n";
+  return out;
+}
+
+void saveTransferFunction(const TransferFunction& tf, const fs::path& path) {
+  const std::string text = toJson(tf);
+  try {
+    writeAtomically(path, [&](const fs::path& tempPath) {
+      std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
+      if (!out) throw InputError(path, "cannot open for writing");
+      out << text;
+      out.close();
+      if (!out) throw InputError(path, "write failed");
+    });
+  } catch (const fs::filesystem_error& error) {
+    throw InputError(path, "cannot write: " + error.code().message());
+  }
+}
+
+std::vector<Preset> listPresets() {
+  std::vector<Preset> presets;
+  std::error_code error;
+  for (fs::directory_iterator it(presetDirectory(), error), end; !error && it != end;
+       it.increment(error)) {
+    const fs::path& file = it->path();
+    if (file.extension() == ".json" && it->is_regular_file(error))
+      presets.push_back({file.stem().string(), file});
+  }
+  std::sort(presets.begin(), presets.end(),
+            [](const Preset& a, const Preset& b) { return a.id < b.id; });
+  return presets;
+}
+
+TransferFunction loadPresetOrFile(const std::string& presetOrPath) {
+  const std::vector<Preset> presets = listPresets();
+  for (const Preset& preset : presets) {
+    if (preset.id == presetOrPath) return loadTransferFunction(preset.file);
+  }
+  const std::string wantedName = lowercase(presetOrPath);
+  for (const Preset& preset : presets) {
+    try {
+      TransferFunction tf = loadTransferFunction(preset.file);
+      if (lowercase(tf.name) == wantedName) return tf;
+    } catch (const InputError&) {
+      // A broken preset cannot match by name; it must not hide a valid file argument either.
+    }
+  }
+  std::error_code error;
+  if (!presetOrPath.empty() && fs::exists(presetOrPath, error))
+    return loadTransferFunction(presetOrPath);
+  throw InputError(presetOrPath, "no such preset or file; presets: " + presetIdList(presets));
+}
+
+}  // namespace angio

@@ -1,0 +1,90 @@
+#include "io/volume_formats.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <itkMetaImageIO.h>
+#include <itkNiftiImageIO.h>
+#include <itkNrrdImageIO.h>
+
+namespace angio {
+
+namespace {
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+std::optional<VolumeFormat> volumeFormatOf(const std::filesystem::path& path) {
+  std::string name = path.filename().string();
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (endsWith(name, ".mha") || endsWith(name, ".mhd")) return VolumeFormat::MetaImage;
+  if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) return VolumeFormat::Nrrd;
+  if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) return VolumeFormat::Nifti;
+  return std::nullopt;
+}
+
+const char* formatName(VolumeFormat format) {
+  switch (format) {
+    case VolumeFormat::MetaImage: return "MetaImage";
+    case VolumeFormat::Nrrd: return "NRRD";
+    case VolumeFormat::Nifti: return "NIfTI";
+  }
+  return "?";
+}
+
+itk::ImageIOBase::Pointer makeImageIO(VolumeFormat format) {
+  switch (format) {
+    case VolumeFormat::MetaImage: return itk::MetaImageIO::New().GetPointer();
+    case VolumeFormat::Nrrd: return itk::NrrdImageIO::New().GetPointer();
+    case VolumeFormat::Nifti: return itk::NiftiImageIO::New().GetPointer();
+  }
+  return nullptr;
+}
+
+std::string componentTypeName(itk::IOComponentEnum type) {
+  using C = itk::IOComponentEnum;
+  switch (type) {
+    case C::UCHAR: return "uint8";
+    case C::CHAR: return "int8";
+    case C::USHORT: return "uint16";
+    case C::SHORT: return "int16";
+    case C::UINT: return "uint32";
+    case C::INT: return "int32";
+    case C::ULONG: return "uint" + std::to_string(8 * sizeof(unsigned long));
+    case C::LONG: return "int" + std::to_string(8 * sizeof(long));
+    case C::ULONGLONG: return "uint64";
+    case C::LONGLONG: return "int64";
+    case C::FLOAT: return "float32";
+    case C::DOUBLE: return "float64";
+    case C::LDOUBLE: return "long double";
+    default: return "unknown type";
+  }
+}
+
+std::string oneLine(const itk::ExceptionObject& error) {
+  std::string text = error.GetDescription();
+  // itkExceptionMacro prefixes "ITK ERROR: ClassName(0x55d0...): ", which means nothing to users.
+  const std::string prefix = "ITK ERROR: ";
+  if (text.compare(0, prefix.size(), prefix) == 0) {
+    const auto end = text.find("): ");
+    text = end == std::string::npos ? text.substr(prefix.size()) : text.substr(end + 3);
+  }
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  // Collapse runs of spaces and trim.
+  std::string squeezed;
+  for (char c : text) {
+    if (c == ' ' && (squeezed.empty() || squeezed.back() == ' ')) continue;
+    squeezed += c;
+  }
+  while (!squeezed.empty() && squeezed.back() == ' ') squeezed.pop_back();
+  if (squeezed.size() > 300) squeezed = squeezed.substr(0, 297) + "...";
+  return squeezed.empty() ? "unknown ITK error" : squeezed;
+}
+
+}  // namespace angio

@@ -1,0 +1,302 @@
+#include "io/volume_reader.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <new>
+#include <string>
+
+#include <itkGDCMImageIO.h>
+#include <tbb/parallel_for.h>
+
+#include "io/dicom_series.h"
+#include "io/input_error.h"
+#include "io/volume_conversion.h"
+#include "io/volume_formats.h"
+#include "io/volume_integrity.h"
+#include "io/volume_memory.h"
+#include "io/volume_reorientation.h"
+
+namespace angio {
+
+namespace {
+
+// A volume file's voxels exactly as stored (component type and axis order of the file).
+struct StoredVolume {
+  VolumeGeometry geometry;
+  itk::IOComponentEnum componentType = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
+  std::unique_ptr<double[]> data;  // raw components; double storage aligns every type
+  std::string description;         // "MetaImage float32"
+};
+
+void report(const ReadOptions& options, double fraction) {
+  if (options.progress) options.progress(fraction);
+}
+
+void warn(const ReadOptions& options, const std::string& message) {
+  if (options.warn) options.warn(message);
+}
+
+std::string dimsText(const std::vector<std::size_t>& dims) {
+  std::string text;
+  for (std::size_t d = 0; d < dims.size(); ++d) text += (d ? " x " : "") + std::to_string(dims[d]);
+  return text;
+}
+
+std::string vectorText(glm::dvec3 v, const char* unit) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%g x %g x %g%s", v.x, v.y, v.z, unit);
+  return text;
+}
+
+void requireOpenable(const std::filesystem::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) throw InputError(file, std::string("cannot be opened: ") + std::strerror(errno));
+}
+
+// An ImageIO that says it can read `file`, with the header read.
+itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::string& formatLabel) {
+  requireOpenable(file);
+  itk::ImageIOBase::Pointer io;
+  if (const auto format = volumeFormatOf(file)) {
+    io = makeImageIO(*format);
+    formatLabel = formatName(*format);
+    if (!io->CanReadFile(file.c_str()))
+      throw InputError(
+          file, std::string("is not a valid ") + formatLabel + " file (corrupt or truncated header)");
+  } else {
+    io = itk::GDCMImageIO::New().GetPointer();
+    formatLabel = "DICOM";
+    if (!io->CanReadFile(file.c_str()))
+      throw InputError(file,
+                       "unknown volume format (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, "
+                       ".mhd or a folder of DICOM slices)");
+  }
+  io->SetFileName(file.string());
+  io->ReadImageInformation();
+  return io;
+}
+
+// Checks the header describes a 3-D scalar volume with sane spacing, and returns where it sits.
+VolumeGeometry storedGeometry(const std::filesystem::path& file, const itk::ImageIOBase& io,
+                              const std::string& formatLabel) {
+  const unsigned dimensions = io.GetNumberOfDimensions();
+  std::vector<std::size_t> dims;
+  for (unsigned d = 0; d < dimensions; ++d) dims.push_back(io.GetDimensions(d));
+  // Trailing axes of size 1 (a 4-D NIfTI with one time point) do not count.
+  std::size_t used = dims.size();
+  while (used > 3 && dims[used - 1] == 1) --used;
+  std::size_t extent = 0;  // axes with more than one voxel
+  for (std::size_t d = 0; d < std::min<std::size_t>(used, 3); ++d) extent += dims[d] > 1;
+  if (used > 3)
+    throw InputError(file, "is " + std::to_string(used) + "-D (" + dimsText(dims) +
+                               " voxels); need a 3-D scalar volume");
+  if (used < 3 || extent < 3) {
+    if (formatLabel == "DICOM")
+      throw InputError(file, "is a single DICOM slice; open its folder to load the series");
+    throw InputError(file, "is " + std::to_string(std::max<std::size_t>(extent, 1)) + "-D (" +
+                               dimsText(dims) + " voxels); need a 3-D scalar volume");
+  }
+  if (io.GetNumberOfComponents() != 1 || io.GetPixelType() != itk::IOPixelEnum::SCALAR)
+    throw InputError(file, "has " + std::to_string(io.GetNumberOfComponents()) + "-component " +
+                               itk::ImageIOBase::GetPixelTypeAsString(io.GetPixelType()) +
+                               " voxels; need a 3-D scalar volume");
+  for (int axis = 0; axis < 3; ++axis)
+    if (dims[axis] > std::size_t(std::numeric_limits<int>::max()))
+      throw InputError(file, "has impossible dimensions (" + dimsText(dims) + ")");
+  VolumeGeometry geometry;
+  for (int axis = 0; axis < 3; ++axis) {
+    geometry.dims[axis] = int(dims[axis]);
+    geometry.spacing[axis] = io.GetSpacing(axis);
+    geometry.origin[axis] = io.GetOrigin(axis);
+    const std::vector<double> column = io.GetDirection(axis);
+    for (int row = 0; row < 3; ++row) geometry.direction[axis][row] = column[row];
+  }
+  const glm::dvec3 s = geometry.spacing;
+  if (!(s.x > 0 && s.y > 0 && s.z > 0) || !std::isfinite(s.x + s.y + s.z))
+    throw InputError(file, "has zero, negative or invalid voxel spacing (" + vectorText(s, " mm") + ")");
+  const glm::dvec3 o = geometry.origin;
+  if (!std::isfinite(o.x + o.y + o.z))
+    throw InputError(file, "has an invalid origin (" + vectorText(o, " mm") + ")");
+  return geometry;
+}
+
+// Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will
+// allocate on top of the raw data, for the memory check made before anything is allocated.
+StoredVolume readStoredVolume(const std::filesystem::path& file, double extraBytesPerVoxel,
+                              const ReadOptions& options) {
+  try {
+    std::string formatLabel;
+    const itk::ImageIOBase::Pointer io = openHeader(file, formatLabel);
+    StoredVolume stored;
+    stored.geometry = storedGeometry(file, *io, formatLabel);
+    stored.componentType = io->GetComponentType();
+    stored.description = formatLabel + " " + componentTypeName(stored.componentType);
+    withComponentType(stored.componentType, [](auto) { return 0; });  // rejects unusual types
+    if (const auto format = volumeFormatOf(file))
+      requireCompleteData(file, *format, io->GetImageSizeInBytes());
+    const glm::dvec3 dims(stored.geometry.dims);
+    const double voxels = dims.x * dims.y * dims.z;
+    const double rawBytes = double(io->GetImageSizeInBytes());
+    requireMemory(file, dims, rawBytes + voxels * extraBytesPerVoxel);
+    report(options, 0.05);
+
+    itk::ImageIORegion region(io->GetNumberOfDimensions());
+    for (unsigned d = 0; d < io->GetNumberOfDimensions(); ++d) {
+      region.SetIndex(d, 0);
+      region.SetSize(d, io->GetDimensions(d));
+    }
+    io->SetIORegion(region);
+    stored.data = std::make_unique_for_overwrite<double[]>(
+        (io->GetImageSizeInBytes() + sizeof(double) - 1) / sizeof(double));
+    io->Read(stored.data.get());
+    report(options, 0.6);
+    return stored;
+  } catch (const itk::ExceptionObject& error) {
+    throw InputError(file, "cannot be read: " + oneLine(error));
+  } catch (const std::invalid_argument& error) {
+    throw InputError(file, error.what());
+  }
+}
+
+Reorientation planFor(const std::filesystem::path& file, const VolumeGeometry& geometry) {
+  try {
+    return planReorientation(geometry.direction);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(file, std::string("has an invalid direction matrix: ") + error.what());
+  }
+}
+
+void warnIfOblique(const std::filesystem::path& file, const Reorientation& plan,
+                   const ReadOptions& options) {
+  if (plan.obliqueDegrees <= 1.0) return;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f", plan.obliqueDegrees);
+  warn(options, file.string() + ": oblique volume (an axis is " + text +
+                    " degrees off the LPS axes); snapped to the nearest axes for rendering");
+}
+
+// A volume placed by `geometry`, holding `voxels` (allocated, zero, if none are given).
+Volume volumeOn(const VolumeGeometry& geometry, std::vector<Voxel> voxels = {}) {
+  Volume volume;
+  volume.dims = geometry.dims;
+  volume.spacing = geometry.spacing;
+  volume.origin = geometry.origin;
+  volume.direction = geometry.direction;
+  volume.voxels = std::move(voxels);
+  volume.voxels.resize(volume.voxelCount());
+  return volume;
+}
+
+Volume volumeFromFile(const std::filesystem::path& file, const ReadOptions& options,
+                      std::string& description) {
+  const StoredVolume stored = readStoredVolume(file, sizeof(Voxel), options);
+  const Reorientation plan = planFor(file, stored.geometry);
+  warnIfOblique(file, plan, options);
+  Volume volume = volumeOn(reorientedGeometry(stored.geometry, plan));
+  const std::size_t nonFinite = withComponentType(stored.componentType, [&](auto type) {
+    using T = typename decltype(type)::type;
+    return reorientCopy(reinterpret_cast<const T*>(stored.data.get()), stored.geometry.dims, plan,
+                        volume.voxels.data(), HuToVoxels{});
+  });
+  if (nonFinite > 0)
+    warn(options, file.string() + ": " + std::to_string(nonFinite) +
+                      " voxels are NaN or infinite; treated as -1024 HU");
+  description = stored.description;
+  return volume;
+}
+
+Volume volumeFromDicom(const std::filesystem::path& folder, const ReadOptions& options,
+                       std::string& description) {
+  // Reorientation may need a second voxel array; count it in the memory check.
+  DicomStack stack = readDicomSeries(folder, options, sizeof(Voxel));
+  const Reorientation plan = planFor(folder, stack.geometry);
+  warnIfOblique(folder, plan, options);
+  const VolumeGeometry geometry = reorientedGeometry(stack.geometry, plan);
+  Volume volume;
+  if (plan.movesVoxels()) {
+    volume = volumeOn(geometry);
+    reorientCopy(stack.voxels.data(), stack.geometry.dims, plan, volume.voxels.data(), CopyRow{});
+  } else {
+    volume = volumeOn(geometry, std::move(stack.voxels));
+  }
+  if (stack.nonFinite > 0)
+    warn(options, folder.string() + ": " + std::to_string(stack.nonFinite) +
+                      " voxels are NaN or infinite; treated as -1024 HU");
+  description = stack.description;
+  return volume;
+}
+
+// Same grid up to header rounding: dims exact, spacing and direction to 1e-4, origin to 1% of a voxel.
+std::string gridDifference(const VolumeGeometry& labels, const Volume& volume) {
+  if (labels.dims != volume.dims)
+    return "dims " + vectorText(glm::dvec3(labels.dims), "") + " vs the volume's " +
+           vectorText(glm::dvec3(volume.dims), "");
+  const glm::dvec3 spacingError = glm::abs(labels.spacing - volume.spacing) / volume.spacing;
+  if (glm::any(glm::greaterThan(spacingError, glm::dvec3(1e-4))))
+    return "spacing " + vectorText(labels.spacing, " mm") + " vs the volume's " +
+           vectorText(volume.spacing, " mm");
+  if (glm::length(labels.origin - volume.origin) > 0.01 * voxelUnit(volume))
+    return "origin " + vectorText(labels.origin, " mm") + " vs the volume's " +
+           vectorText(volume.origin, " mm");
+  for (int axis = 0; axis < 3; ++axis)
+    if (glm::length(labels.direction[axis] - volume.direction[axis]) > 1e-4)
+      return "a different orientation";
+  return "";
+}
+
+void addLabels(Volume& volume, const std::filesystem::path& file, const ReadOptions& options) {
+  if (!std::filesystem::exists(file)) throw InputError(file, "label volume does not exist");
+  if (std::filesystem::is_directory(file))
+    throw InputError(file, "label volume must be a file (.nii, .nii.gz, .nrrd, .mha), not a folder");
+  const StoredVolume stored = readStoredVolume(file, 1.0, ReadOptions{});
+  const Reorientation plan = planFor(file, stored.geometry);
+  const std::string difference = gridDifference(reorientedGeometry(stored.geometry, plan), volume);
+  if (!difference.empty())
+    throw InputError(file, "label volume is not on the volume's grid (" + difference + ")");
+  std::vector<std::uint8_t> labels(volume.voxelCount());
+  const std::size_t invalid = withComponentType(stored.componentType, [&](auto type) {
+    using T = typename decltype(type)::type;
+    return reorientCopy(reinterpret_cast<const T*>(stored.data.get()), stored.geometry.dims, plan,
+                        labels.data(), ToLabels{});
+  });
+  if (invalid > 0)
+    throw InputError(file, std::to_string(invalid) + " voxels have label values outside 0..15");
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, labels.size(), 1 << 16),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t n = range.begin(); n != range.end(); ++n)
+                        volume.voxels[n] = Voxel(densityOf(volume.voxels[n]) | (labels[n] << 12));
+                    });
+  report(options, 0.95);
+}
+
+}  // namespace
+
+LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& options) {
+  report(options, 0.0);
+  std::error_code error;
+  const bool exists = std::filesystem::exists(path, error);
+  if (!exists)
+    throw InputError(path, error ? "cannot be accessed: " + error.message() : "does not exist");
+  LoadedVolume loaded;
+  try {
+    loaded.volume = std::filesystem::is_directory(path)
+                        ? volumeFromDicom(path, options, loaded.description)
+                        : volumeFromFile(path, options, loaded.description);
+    if (!options.labelPath.empty()) addLabels(loaded.volume, options.labelPath, options);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw InputError(path, "out of memory while loading");
+  } catch (const std::exception& error) {  // e.g. a file vanishing mid-read
+    throw InputError(path, error.what());
+  }
+  report(options, 1.0);
+  return loaded;
+}
+
+}  // namespace angio

@@ -1,0 +1,31 @@
+#pragma once
+// Volume loading through ITK: DICOM series (directory), NIfTI, NRRD, MetaImage. Values are taken
+// as HU (DICOM rescale applied), stored as the rendering model's 12-bit densities, and the volume is
+// reoriented to the LPS-aligned frame (voxel axes along +L, +P, +S). Throws InputError with a
+// one-line message naming the file and the problem.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/volume.h"
+
+namespace angio {
+
+struct ReadOptions {
+  // Optional label volume on the same grid; its values (0..15) go into the 4 label bits.
+  std::filesystem::path labelPath;
+  // Called with each warning (NaN replaced, oblique snapped, other DICOM series present, ...).
+  std::function<void(const std::string&)> warn;
+  // Called with load progress in [0, 1]; may be empty.
+  std::function<void(double)> progress;
+};
+
+struct LoadedVolume {
+  Volume volume;
+  std::string description;  // e.g. "DICOM series 1.2.3 (120 slices)", "MetaImage float32"
+};
+
+LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& options = {});
+
+}  // namespace angio

@@ -1,0 +1,78 @@
+// Ground-truth centerline CSV: the reference file's format, written atomically.
+#include "io/centerline_csv.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/input_error.h"
+
+namespace angio {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CenterlineCsvTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("angioray_csv_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string read(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
+  const std::vector<PhantomPath> paths = {
+      {"a", {{{1.0, -2.5, 3.25}, 10.0}, {{1.0, -2.5, 2.25}, 9.5}}},
+      {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
+  const fs::path file = dir_ / "centerlines.csv";
+  writeCenterlinesCsv(paths, file);
+  EXPECT_EQ(read(file),
+            "path,x_mm,y_mm,z_mm,radius_mm\n"
+            "0,1.000,-2.500,3.250,10.000\n"
+            "0,1.000,-2.500,2.250,9.500\n"
+            "1,-0.000,100.123,-1199.500,1.500\n");
+}
+
+TEST_F(CenterlineCsvTest, HeaderMatchesTheSharedReferenceFile) {
+  std::ifstream reference(std::string(ANGIORAY_SHARED_DATA) + "/aorta-centerlines.csv");
+  std::string header;
+  ASSERT_TRUE(std::getline(reference, header));
+  const fs::path file = dir_ / "empty.csv";
+  writeCenterlinesCsv({}, file);
+  EXPECT_EQ(read(file), header + "\n");
+}
+
+TEST_F(CenterlineCsvTest, UnwritableTargetThrowsInputErrorAndLeavesNothing) {
+  const fs::path file = dir_ / "missing-dir" / "centerlines.csv";
+  try {
+    writeCenterlinesCsv({{"a", {{{0, 0, 0}, 1}}}}, file);
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(CenterlineCsvTest, ReplacesAnExistingFileWhole) {
+  const fs::path file = dir_ / "centerlines.csv";
+  std::ofstream(file) << "old content that is longer than the new one\n" << std::string(1000, 'x');
+  writeCenterlinesCsv({{"a", {{{0, 0, 0}, 1}}}}, file);
+  EXPECT_EQ(read(file), "path,x_mm,y_mm,z_mm,radius_mm\n0,0.000,0.000,0.000,1.000\n");
+}
+
+}  // namespace
+}  // namespace angio

@@ -1,0 +1,637 @@
+// Volume loading: formats, component types, reorientation to the LPS-aligned frame, DICOM series,
+// labels and every kind of bad input (rendering-model.md "Volume frame" and voxel encoding).
+#include "io/volume_reader.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <itkGDCMImageIO.h>
+#include <itkImage.h>
+#include <itkImageFileReader.h>
+#include <itkImageFileWriter.h>
+#include <itkMetaDataObject.h>
+#include <itkRGBPixel.h>
+
+#include "core/voxel.h"
+#include "io/input_error.h"
+#include "io/dicom_series.h"
+#include "io/volume_formats.h"
+
+namespace angio {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder under the system temp dir, removed afterwards.
+class VolumeReaderTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("angioray-volume-reader-" + std::to_string(::getpid()) + "-" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+struct Placement {
+  glm::dvec3 spacing{1.0};
+  glm::dvec3 origin{0.0};
+  glm::dmat3 direction{1.0};  // columns: directions of the stored axes
+};
+
+// An image of `dims` whose voxel at index i holds value(i) (i a std::array<int, N>).
+template <class T, unsigned N = 3, class Value>
+typename itk::Image<T, N>::Pointer makeImage(const std::array<int, N>& dims, const Value& value,
+                                             const Placement& placement = {}) {
+  using Image = itk::Image<T, N>;
+  typename Image::RegionType region;
+  typename Image::SpacingType spacing;
+  typename Image::PointType origin;
+  typename Image::DirectionType direction;
+  direction.SetIdentity();
+  for (unsigned a = 0; a < N; ++a) {
+    region.SetSize(a, dims[a]);
+    spacing[a] = a < 3 ? placement.spacing[a] : 1.0;
+    origin[a] = a < 3 ? placement.origin[a] : 0.0;
+    for (unsigned r = 0; r < std::min(N, 3u) && a < 3; ++r) direction[r][a] = placement.direction[a][r];
+  }
+  auto image = Image::New();
+  image->SetRegions(region);
+  image->SetSpacing(spacing);
+  image->SetOrigin(origin);
+  image->SetDirection(direction);
+  image->Allocate();
+  T* buffer = image->GetBufferPointer();
+  std::array<int, N> index{};
+  for (std::size_t n = 0; n < region.GetNumberOfPixels(); ++n) {
+    std::size_t rest = n;
+    for (unsigned a = 0; a < N; ++a) index[a] = int(rest % dims[a]), rest /= dims[a];
+    buffer[n] = T(value(index));
+  }
+  return image;
+}
+
+template <class Image>
+void writeImage(const Image* image, const fs::path& file, bool compress = true) {
+  auto writer = itk::ImageFileWriter<Image>::New();
+  writer->SetImageIO(makeImageIO(*volumeFormatOf(file)));
+  writer->SetFileName(file.string());
+  writer->SetInput(image);
+  writer->SetUseCompression(compress);
+  writer->Update();
+}
+
+// A volume with a different value at every voxel: HU = i + 10 j + 100 k - 500.
+short asymmetricHu(std::array<int, 3> i) { return short(i[0] + 10 * i[1] + 100 * i[2] - 500); }
+
+void writeText(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+}
+
+// Expects readVolume(file) to throw an InputError whose one-line message names `file` and contains
+// `problem`.
+void expectInputError(const fs::path& file, const std::string& problem,
+                      const ReadOptions& options = {}) {
+  try {
+    readVolume(file, options);
+    ADD_FAILURE() << "no InputError for " << file;
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(file.filename().string()), std::string::npos) << message;
+    EXPECT_NE(message.find(problem), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+glm::dvec3 storedPhysical(const Placement& p, glm::dvec3 index) {
+  return p.origin + p.direction * (index * p.spacing);
+}
+
+// Every stored voxel must land at the new index whose physical point is the same, with its value.
+void expectSamePhysicalVoxels(const Volume& volume, std::array<int, 3> storedDims,
+                              const Placement& stored,
+                              const std::function<short(std::array<int, 3>)>& hu) {
+  for (int k = 0; k < storedDims[2]; ++k)
+    for (int j = 0; j < storedDims[1]; ++j)
+      for (int i = 0; i < storedDims[0]; ++i) {
+        const glm::dvec3 physical = storedPhysical(stored, glm::dvec3(i, j, k));
+        const glm::dvec3 index = physicalToIndex(volume, physical);
+        const glm::ivec3 voxel(glm::round(index));
+        ASSERT_LT(glm::length(index - glm::dvec3(voxel)), 1e-6) << i << " " << j << " " << k;
+        ASSERT_TRUE(glm::all(glm::greaterThanEqual(voxel, glm::ivec3(0))) &&
+                    glm::all(glm::lessThan(voxel, volume.dims)));
+        EXPECT_EQ(volume.densityAt(voxel.x, voxel.y, voxel.z), densityOfHu(hu({i, j, k})));
+        EXPECT_LT(glm::length(indexToPhysical(volume, glm::dvec3(voxel)) - physical), 1e-6);
+      }
+}
+
+TEST_F(VolumeReaderTest, ReadsEveryFormatWithValuesAndGeometry) {
+  const Placement placement{{0.5, 0.75, 2.0}, {10.0, -20.0, 30.0}, glm::dmat3(1.0)};
+  for (const std::string name : {"v.mha", "v.mhd", "v.nrrd", "v.nhdr", "v.nii", "v.nii.gz"}) {
+    SCOPED_TRACE(name);
+    const fs::path file = dir_ / name;
+    writeImage(makeImage<short>({5, 4, 3}, asymmetricHu, placement).GetPointer(), file);
+    const LoadedVolume loaded = readVolume(file);
+    const Volume& v = loaded.volume;
+    EXPECT_EQ(v.dims, glm::ivec3(5, 4, 3));
+    EXPECT_NEAR(v.spacing.x, 0.5, 1e-6);
+    EXPECT_NEAR(v.spacing.y, 0.75, 1e-6);
+    EXPECT_NEAR(v.spacing.z, 2.0, 1e-6);
+    EXPECT_NEAR(glm::length(v.origin - placement.origin), 0.0, 1e-4);
+    EXPECT_EQ(v.direction, glm::dmat3(1.0));
+    EXPECT_NE(loaded.description.find("int16"), std::string::npos) << loaded.description;
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 5; ++i) ASSERT_EQ(v.densityAt(i, j, k), asymmetricHu({i, j, k}) + 1024);
+  }
+}
+
+TEST_F(VolumeReaderTest, ReadsFloatAndUint8AsHounsfieldUnits) {
+  const fs::path floats = dir_ / "f.nii.gz";
+  // -1000.4 rounds to -1000, 2.5 rounds away from zero to 3, 5000 clamps to 3071 (d = 4095).
+  const std::array<float, 3> values{-1000.4f, 2.5f, 5000.0f};
+  writeImage(makeImage<float>({3, 2, 2}, [&](auto i) { return values[i[0]]; }).GetPointer(), floats);
+  const Volume f = readVolume(floats).volume;
+  EXPECT_EQ(f.densityAt(0, 1, 1), 24);
+  EXPECT_EQ(f.densityAt(1, 1, 1), 1027);
+  EXPECT_EQ(f.densityAt(2, 0, 0), 4095);
+
+  const fs::path bytes = dir_ / "b.nrrd";
+  writeImage(
+      makeImage<unsigned char>({3, 2, 2}, [](auto i) { return (unsigned char)(100 * i[0] + i[2]); })
+          .GetPointer(),
+      bytes);
+  const LoadedVolume b = readVolume(bytes);
+  EXPECT_NE(b.description.find("uint8"), std::string::npos);
+  EXPECT_EQ(b.volume.densityAt(2, 1, 1), 201 + 1024);
+  EXPECT_EQ(b.volume.densityAt(0, 0, 0), 1024);
+}
+
+TEST_F(VolumeReaderTest, FlippedAxesComeOutLpsAlignedWithVoxelsMoved) {
+  // Stored i runs to -L (right), j to -P (anterior): the aorta.mha layout.
+  const Placement stored{{0.8, 0.9, 1.5},
+                         {-100.0, -20.0, 7.0},
+                         glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(0, 0, 1))};
+  const fs::path file = dir_ / "flipped.mha";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
+  const Volume v = readVolume(file).volume;
+  EXPECT_EQ(v.dims, glm::ivec3(4, 3, 2));
+  EXPECT_EQ(v.direction, glm::dmat3(1.0));
+  // New voxel (0,0,0) is the stored (3,2,0): the one furthest right and anterior.
+  EXPECT_NEAR(glm::length(v.origin - storedPhysical(stored, {3, 2, 0})), 0.0, 1e-9);
+  EXPECT_EQ(v.densityAt(0, 0, 0), asymmetricHu({3, 2, 0}) + 1024);
+  EXPECT_EQ(v.densityAt(3, 0, 1), asymmetricHu({0, 2, 1}) + 1024);
+  expectSamePhysicalVoxels(v, {4, 3, 2}, stored, asymmetricHu);
+}
+
+TEST_F(VolumeReaderTest, PermutedAxesComeOutLpsAlignedWithSpacingPermuted) {
+  // Stored i runs to +S, j to -L, k to +P (a sagittal-like stack).
+  const Placement stored{{0.5, 0.7, 2.0},
+                         {5.0, 6.0, 7.0},
+                         glm::dmat3(glm::dvec3(0, 0, 1), glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0))};
+  const fs::path file = dir_ / "permuted.nrrd";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
+  const Volume v = readVolume(file).volume;
+  EXPECT_EQ(v.dims, glm::ivec3(3, 2, 4));
+  EXPECT_NEAR(v.spacing.x, 0.7, 1e-9);
+  EXPECT_NEAR(v.spacing.y, 2.0, 1e-9);
+  EXPECT_NEAR(v.spacing.z, 0.5, 1e-9);
+  EXPECT_EQ(v.direction, glm::dmat3(1.0));
+  // New (i, j, k) = stored (k, 2 - i, j).
+  EXPECT_EQ(v.densityAt(0, 1, 3), asymmetricHu({3, 2, 1}) + 1024);
+  expectSamePhysicalVoxels(v, {4, 3, 2}, stored, asymmetricHu);
+}
+
+glm::dmat3 rotationAboutZ(double degrees) {
+  const double a = glm::radians(degrees);
+  return glm::dmat3(glm::dvec3(std::cos(a), std::sin(a), 0), glm::dvec3(-std::sin(a), std::cos(a), 0),
+                    glm::dvec3(0, 0, 1));
+}
+
+TEST_F(VolumeReaderTest, ObliqueVolumeIsSnappedWithWarningAndKeepsTrueRotation) {
+  // 10 degrees about S, and the first axis flipped: snapped to +L/+P/+S, residual kept.
+  Placement stored{{1.0, 1.2, 2.0}, {3.0, 4.0, 5.0}, rotationAboutZ(10.0)};
+  stored.direction[0] = -stored.direction[0];
+  const fs::path file = dir_ / "oblique.mha";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
+  std::vector<std::string> warnings;
+  ReadOptions options;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  const Volume v = readVolume(file, options).volume;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("10.0 degrees"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("oblique.mha"), std::string::npos) << warnings[0];
+  EXPECT_EQ(v.dims, glm::ivec3(4, 3, 2));
+  const glm::dmat3 residual = v.direction;
+  EXPECT_NEAR(residual[0][0], std::cos(glm::radians(10.0)), 1e-6);  // +L axis, rotated 10 degrees
+  EXPECT_NEAR(residual[0][1], std::sin(glm::radians(10.0)), 1e-6);
+  expectSamePhysicalVoxels(v, {4, 3, 2}, stored, asymmetricHu);
+}
+
+TEST_F(VolumeReaderTest, SlightlyObliqueVolumeKeepsRotationWithoutWarning) {
+  const Placement stored{{1.0, 1.0, 1.0}, {0.0, 0.0, 0.0}, rotationAboutZ(0.5)};
+  const fs::path file = dir_ / "slight.nii.gz";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
+  std::vector<std::string> warnings;
+  ReadOptions options;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  const Volume v = readVolume(file, options).volume;
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_NEAR(v.direction[0][1], std::sin(glm::radians(0.5)), 1e-5);
+}
+
+TEST_F(VolumeReaderTest, AortaLoadsReorientedWithValuesAsStored) {
+  const fs::path file = fs::path(ANGIORAY_SHARED_DATA) / "aorta.mha";
+  const LoadedVolume loaded = readVolume(file);
+  const Volume& v = loaded.volume;
+  EXPECT_EQ(v.dims, glm::ivec3(157, 393, 34));
+  EXPECT_NEAR(v.spacing.x, 0.878906, 1e-6);
+  EXPECT_NEAR(v.spacing.y, 0.878906, 1e-6);
+  EXPECT_NEAR(v.spacing.z, 1.50009, 1e-6);
+  EXPECT_EQ(v.direction, glm::dmat3(1.0));
+  EXPECT_NE(loaded.description.find("float32"), std::string::npos);
+  // Stored direction diag(-1,-1,1), origin (-156.445, -24.6094, 0): new voxel 0 is stored (156, 392, 0).
+  EXPECT_NEAR(v.origin.x, -156.445 - 156 * 0.878906, 1e-3);
+  EXPECT_NEAR(v.origin.y, -24.6094 - 392 * 0.878906, 1e-3);
+  EXPECT_NEAR(v.origin.z, 0.0, 1e-9);
+
+  // Compare with the file read directly: new (i, j, k) = stored (156 - i, 392 - j, k).
+  auto reader = itk::ImageFileReader<itk::Image<float, 3>>::New();
+  reader->SetImageIO(makeImageIO(VolumeFormat::MetaImage));
+  reader->SetFileName(file.string());
+  reader->Update();
+  const float* stored = reader->GetOutput()->GetBufferPointer();
+  for (int k = 0; k < 34; ++k)
+    for (int j = 0; j < 393; ++j)
+      for (int i = 0; i < 157; ++i) {
+        const float hu = stored[(std::size_t(k) * 393 + (392 - j)) * 157 + (156 - i)];
+        ASSERT_EQ(v.densityAt(i, j, k), densityOfHu(hu)) << i << " " << j << " " << k;
+      }
+  // Lumen (~1200-2400) is there, kept as is rather than recalibrated.
+  const DensityRange range = densityRange(v);
+  EXPECT_GT(range.maxDensity, 1200 + kHuOffset);
+  EXPECT_LE(range.maxDensity, 4095);
+}
+
+TEST_F(VolumeReaderTest, NanAndInfinityBecomeMinus1024WithWarning) {
+  const fs::path file = dir_ / "nan.mha";
+  const float nan = std::numeric_limits<float>::quiet_NaN(),
+              inf = std::numeric_limits<float>::infinity();
+  writeImage(makeImage<float>({3, 2, 2},
+                              [&](auto i) {
+                                if (i == std::array<int, 3>{0, 0, 0} || i == std::array<int, 3>{2, 1, 1})
+                                  return nan;
+                                if (i == std::array<int, 3>{1, 0, 1}) return -inf;
+                                return 40.0f;
+                              })
+                 .GetPointer(),
+             file);
+  std::vector<std::string> warnings;
+  ReadOptions options;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  const Volume v = readVolume(file, options).volume;
+  EXPECT_EQ(v.densityAt(0, 0, 0), 0);
+  EXPECT_EQ(v.densityAt(2, 1, 1), 0);
+  EXPECT_EQ(v.densityAt(1, 0, 1), 0);
+  EXPECT_EQ(v.densityAt(1, 1, 0), 40 + 1024);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("3 voxels"), std::string::npos) << warnings[0];
+}
+
+TEST_F(VolumeReaderTest, ReportsProgressFromStartToEnd) {
+  const fs::path file = dir_ / "p.mha";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu).GetPointer(), file);
+  std::vector<double> reports;
+  ReadOptions options;
+  options.progress = [&](double p) { reports.push_back(p); };
+  readVolume(file, options);
+  ASSERT_GE(reports.size(), 2u);
+  EXPECT_EQ(reports.front(), 0.0);
+  EXPECT_EQ(reports.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
+}
+
+TEST_F(VolumeReaderTest, LabelsOnTheSameGridGoToTheLabelBits) {
+  const Placement flipped{{1.0, 1.0, 1.0},
+                          {0.0, 0.0, 0.0},
+                          glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1))};
+  const fs::path volumeFile = dir_ / "ct.mha", labelFile = dir_ / "labels.nii.gz";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, flipped).GetPointer(), volumeFile);
+  writeImage(makeImage<unsigned char>(
+                 {4, 3, 2}, [](auto i) { return (unsigned char)(i[0] + 4 * i[2]); }, flipped)
+                 .GetPointer(),
+             labelFile);
+  ReadOptions options;
+  options.labelPath = labelFile;
+  const Volume v = readVolume(volumeFile, options).volume;
+  // New i = 3 - stored i.
+  EXPECT_EQ(labelOf(v.at(0, 2, 1)), 3 + 4);
+  EXPECT_EQ(densityOf(v.at(0, 2, 1)), asymmetricHu({3, 2, 1}) + 1024);
+  EXPECT_EQ(labelOf(v.at(3, 0, 0)), 0);
+}
+
+TEST_F(VolumeReaderTest, LabelsOnAnotherGridOrOutOfRangeAreErrors) {
+  const fs::path volumeFile = dir_ / "ct.mha";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu).GetPointer(), volumeFile);
+  const fs::path smaller = dir_ / "small-labels.mha";
+  writeImage(makeImage<unsigned char>({4, 3, 3}, [](auto) { return (unsigned char)1; }).GetPointer(),
+             smaller);
+  const fs::path shifted = dir_ / "shifted-labels.mha";
+  writeImage(makeImage<unsigned char>(
+                 {4, 3, 2}, [](auto) { return (unsigned char)1; },
+                 Placement{{1, 1, 1}, {0.5, 0, 0}, glm::dmat3(1.0)})
+                 .GetPointer(),
+             shifted);
+  const fs::path tooBig = dir_ / "big-labels.mha";
+  writeImage(
+      makeImage<unsigned char>({4, 3, 2}, [](auto i) { return (unsigned char)(i[0] * 6); }).GetPointer(),
+      tooBig);
+  for (const auto& [labels, problem] :
+       std::vector<std::pair<fs::path, std::string>>{{smaller, "not on the volume's grid"},
+                                                     {shifted, "origin"},
+                                                     {tooBig, "outside 0..15"},
+                                                     {dir_ / "missing-labels.mha", "does not exist"}}) {
+    ReadOptions options;
+    options.labelPath = labels;
+    try {
+      readVolume(volumeFile, options);
+      ADD_FAILURE() << "no error for " << labels;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(labels.filename().string()), std::string::npos)
+          << error.what();
+      EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
+    }
+  }
+}
+
+// ---- DICOM -------------------------------------------------------------------------------------
+
+struct DicomSlice {
+  std::string fileName;
+  glm::dvec3 position{0.0};  // ImagePositionPatient
+  int instanceNumber = 0;
+  std::string seriesUid = "1.2.826.0.1.3680043.2.1125.777.1";
+  std::string orientation = "1\\0\\0\\0\\1\\0";
+  std::function<short(int, int)> hu;  // real-world HU at column i, row j
+};
+
+// Writes a 16x16 CT slice with rescale slope 2, intercept -1024 (stored = (HU + 1024) / 2).
+void writeDicomSlice(const fs::path& folder, const DicomSlice& slice) {
+  using Slice = itk::Image<short, 2>;
+  auto image = Slice::New();
+  Slice::RegionType region;
+  region.SetSize(0, 16);
+  region.SetSize(1, 16);
+  image->SetRegions(region);
+  Slice::SpacingType spacing;
+  spacing[0] = spacing[1] = 0.7;
+  image->SetSpacing(spacing);
+  image->Allocate();
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 16; ++i) image->SetPixel({{i, j}}, slice.hu(i, j));
+  itk::MetaDataDictionary& tags = image->GetMetaDataDictionary();
+  const auto set = [&](const char* tag, const std::string& value) {
+    itk::EncapsulateMetaData<std::string>(tags, tag, value);
+  };
+  set("0008|0016", "1.2.840.10008.5.1.4.1.1.2");  // CT Image Storage
+  set("0008|0018", slice.seriesUid + "." + std::to_string(slice.instanceNumber));
+  set("0008|0060", "CT");
+  set("0028|0004", "MONOCHROME2");
+  set("0020|000d", "1.2.826.0.1.3680043.2.1125.777");
+  set("0020|000e", slice.seriesUid);
+  set("0020|0052", "1.2.826.0.1.3680043.2.1125.777.9");
+  set("0020|0013", std::to_string(slice.instanceNumber));
+  set("0020|0032", std::to_string(slice.position.x) + "\\" + std::to_string(slice.position.y) + "\\" +
+                       std::to_string(slice.position.z));
+  set("0020|0037", slice.orientation);
+  set("0028|1052", "-1024");
+  set("0028|1053", "2");
+  auto io = itk::GDCMImageIO::New();
+  io->KeepOriginalUIDOn();
+  auto writer = itk::ImageFileWriter<Slice>::New();
+  writer->SetImageIO(io);
+  writer->SetFileName((folder / slice.fileName).string());
+  writer->SetInput(image);
+  writer->Update();
+}
+
+// HU of slice k at (i, j): even values, so the slope-2 rescale round-trips exactly.
+short sliceHu(int k, int i, int j) { return short(100 * k - 300 + 2 * i + 40 * (j == 0)); }
+
+// Slices at z = 5 + 2.5 k for k in `positions`, with shuffled file names and instance numbers.
+void writeDicomSeries(const fs::path& folder, const std::vector<int>& positions, const std::string& uid,
+                      unsigned seed) {
+  std::vector<int> names(positions.size()), instances(positions.size());
+  std::iota(names.begin(), names.end(), 0);
+  std::iota(instances.begin(), instances.end(), 1);
+  std::mt19937 random(seed);
+  std::shuffle(names.begin(), names.end(), random);
+  std::shuffle(instances.begin(), instances.end(), random);
+  for (std::size_t n = 0; n < positions.size(); ++n) {
+    const int k = positions[n];
+    DicomSlice slice;
+    slice.fileName = "IM" + std::to_string(names[n]) + "-" + uid.substr(uid.size() - 1) + ".dcm";
+    slice.position = {-12.0, 30.5, 5.0 + 2.5 * k};
+    slice.instanceNumber = instances[n];
+    slice.seriesUid = uid;
+    slice.hu = [k](int i, int j) { return sliceHu(k, i, j); };
+    writeDicomSlice(folder, slice);
+  }
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesLoadsInPositionOrderWithRescaleApplied) {
+  writeDicomSeries(dir_, {0, 1, 2, 3, 4, 5, 6, 7}, "1.2.826.0.1.3680043.2.1125.777.1", 42);
+  const LoadedVolume loaded = readVolume(dir_);
+  const Volume& v = loaded.volume;
+  EXPECT_EQ(v.dims, glm::ivec3(16, 16, 8));
+  EXPECT_NEAR(v.spacing.x, 0.7, 1e-6);
+  EXPECT_NEAR(v.spacing.y, 0.7, 1e-6);
+  EXPECT_NEAR(v.spacing.z, 2.5, 1e-6);
+  EXPECT_NEAR(glm::length(v.origin - glm::dvec3(-12, 30.5, 5)), 0.0, 1e-6);
+  EXPECT_EQ(v.direction, glm::dmat3(1.0));
+  EXPECT_NE(loaded.description.find("8 slices"), std::string::npos) << loaded.description;
+  for (int k = 0; k < 8; ++k)
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i)
+        ASSERT_EQ(v.densityAt(i, j, k), sliceHu(k, i, j) + 1024) << i << " " << j << " " << k;
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesWithMissingSlicesNamesThePositions) {
+  writeDicomSeries(dir_, {0, 1, 2, 5, 6, 7}, "1.2.826.0.1.3680043.2.1125.777.1", 7);
+  expectInputError(dir_, "gap in slice positions: missing z = 12.5, 15.0 mm");
+}
+
+TEST_F(VolumeReaderTest, DicomFolderWithTwoSeriesLoadsTheBiggerAndWarns) {
+  writeDicomSeries(dir_, {0, 1, 2}, "1.2.826.0.1.3680043.2.1125.777.2", 1);
+  writeDicomSeries(dir_, {0, 1, 2, 3, 4, 5}, "1.2.826.0.1.3680043.2.1125.777.3", 2);
+  std::vector<std::string> warnings;
+  ReadOptions options;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  const LoadedVolume loaded = readVolume(dir_, options);
+  EXPECT_EQ(loaded.volume.dims.z, 6);
+  EXPECT_NE(loaded.description.find("777.3"), std::string::npos) << loaded.description;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("1.2.826.0.1.3680043.2.1125.777.2 (3 slices)"), std::string::npos)
+      << warnings[0];
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesWithMixedOrientationsIsAnError) {
+  writeDicomSeries(dir_, {0, 1, 2, 3}, "1.2.826.0.1.3680043.2.1125.777.1", 3);
+  DicomSlice tilted;
+  tilted.fileName = "tilted.dcm";
+  tilted.position = {-12.0, 30.5, 30.0};
+  tilted.instanceNumber = 99;
+  tilted.orientation = "1\\0\\0\\0\\0\\-1";
+  tilted.hu = [](int, int) { return short(0); };
+  writeDicomSlice(dir_, tilted);
+  expectInputError(dir_, "mixed slice orientations");
+}
+
+TEST_F(VolumeReaderTest, DicomCoronalSeriesIsReorientedToLps) {
+  // Rows along +L, columns along -S (head to foot), slices stacked along +P.
+  for (int k = 0; k < 3; ++k) {
+    DicomSlice slice;
+    slice.fileName = std::to_string(2 - k) + "-coronal.dcm";
+    slice.instanceNumber = k + 1;
+    slice.orientation = "1\\0\\0\\0\\0\\-1";
+    slice.position = {-12.0, 30.5 + 2.5 * k, 50.0};
+    slice.hu = [k](int i, int j) { return sliceHu(k, i, j); };
+    writeDicomSlice(dir_, slice);
+  }
+  const Volume v = readVolume(dir_).volume;
+  EXPECT_EQ(v.dims, glm::ivec3(16, 3, 16));
+  EXPECT_NEAR(v.spacing.y, 2.5, 1e-6);
+  EXPECT_NEAR(v.spacing.z, 0.7, 1e-6);
+  EXPECT_EQ(v.direction, glm::dmat3(1.0));
+  EXPECT_NEAR(glm::length(v.origin - glm::dvec3(-12.0, 30.5, 50.0 - 15 * 0.7)), 0.0, 1e-6);
+  for (int s = 0; s < 16; ++s)
+    for (int p = 0; p < 3; ++p)
+      for (int l = 0; l < 16; ++l) ASSERT_EQ(v.densityAt(l, p, s), sliceHu(p, l, 15 - s) + 1024);
+}
+
+TEST(DicomSlicePositions, FindsMissingSlicesAndRejectsIrregularSteps) {
+  EXPECT_TRUE(missingSlicePositions({0.0, 1.25, 2.5, 3.75}).empty());
+  EXPECT_TRUE(missingSlicePositions({0.0, 1.25, 2.501, 3.749}).empty());  // scanner jitter
+  EXPECT_EQ(missingSlicePositions({0.0, 1.25, 5.0, 6.25}), (std::vector<double>{2.5, 3.75}));
+  EXPECT_THROW(missingSlicePositions({0.0, 1.25, 1.25, 2.5}), std::invalid_argument);     // duplicate
+  EXPECT_THROW(missingSlicePositions({0.0, 1.0, 2.0, 3.5, 4.5}), std::invalid_argument);  // 1.5 steps
+}
+
+TEST_F(VolumeReaderTest, StronglyObliqueVolumeStillMapsEveryVoxel) {
+  // 44 degrees about S: each stored axis still gets its own LPS axis.
+  const Placement stored{{0.9, 1.1, 1.3}, {1.0, 2.0, 3.0}, rotationAboutZ(44.0)};
+  const fs::path file = dir_ / "steep.nrrd";
+  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
+  std::vector<std::string> warnings;
+  ReadOptions options;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  const Volume v = readVolume(file, options).volume;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("44.0 degrees"), std::string::npos) << warnings[0];
+  expectSamePhysicalVoxels(v, {4, 3, 2}, stored, asymmetricHu);
+}
+
+// ---- bad input -------------------------------------------------------------------------------
+
+TEST_F(VolumeReaderTest, MissingPathIsAnError) {
+  expectInputError(dir_ / "nowhere.nii.gz", "does not exist");
+}
+
+TEST_F(VolumeReaderTest, TruncatedFilesAreErrors) {
+  for (const std::string name :
+       {"cut.mha", "cut-raw.mha", "cut.nii.gz", "cut.nii", "cut.nrrd", "cut-raw.nrrd"}) {
+    SCOPED_TRACE(name);
+    const fs::path file = dir_ / name;
+    const bool compress = name.find("raw") == std::string::npos && name != "cut.nii";
+    writeImage(makeImage<short>({40, 30, 20}, asymmetricHu).GetPointer(), file, compress);
+    fs::resize_file(file, fs::file_size(file) * 2 / 3);
+    expectInputError(file, name.find("nrrd") == std::string::npos ? "is truncated" : "");
+  }
+  // A .mhd whose data file lost its tail.
+  writeImage(makeImage<short>({40, 30, 20}, asymmetricHu).GetPointer(), dir_ / "cut.mhd", false);
+  fs::resize_file(dir_ / "cut.raw", 1000);
+  expectInputError(dir_ / "cut.mhd", "is truncated");
+}
+
+TEST_F(VolumeReaderTest, GarbageBytesAreErrors) {
+  std::string garbage(4096, '\0');
+  std::mt19937 random(5);
+  for (char& c : garbage) c = char(random());
+  for (const std::string name :
+       {"garbage.nii", "garbage.nii.gz", "garbage.mha", "garbage.nrrd", "garbage.xyz"}) {
+    SCOPED_TRACE(name);
+    writeText(dir_ / name, garbage);
+    expectInputError(dir_ / name, name == "garbage.xyz" ? "unknown volume format" : "is not a valid");
+  }
+  writeText(dir_ / "empty.mha", "");
+  expectInputError(dir_ / "empty.mha", "is not a valid MetaImage file");
+}
+
+TEST_F(VolumeReaderTest, TwoDimensionalFourDimensionalAndRgbImagesAreErrors) {
+  const fs::path flat = dir_ / "flat.mha";
+  writeImage(makeImage<short, 2>({8, 8}, [](auto) { return short(0); }).GetPointer(), flat);
+  expectInputError(flat, "is 2-D (8 x 8 voxels); need a 3-D scalar volume");
+
+  const fs::path slab = dir_ / "slab.nrrd";
+  writeImage(makeImage<short>({8, 8, 1}, [](auto) { return short(0); }).GetPointer(), slab);
+  expectInputError(slab, "is 2-D");
+
+  const fs::path series = dir_ / "time.nii";
+  writeImage(makeImage<short, 4>({4, 4, 4, 3}, [](auto) { return short(0); }).GetPointer(), series);
+  expectInputError(series, "is 4-D");
+
+  using Rgb = itk::RGBPixel<unsigned char>;
+  const fs::path colour = dir_ / "colour.mha";
+  writeImage(makeImage<Rgb>({4, 4, 4}, [](auto) { return Rgb(); }).GetPointer(), colour);
+  expectInputError(colour, "need a 3-D scalar volume");
+}
+
+// A MetaImage header with the given fields and 16 bytes of int16 data (`extra` header lines
+// may claim they are compressed).
+void writeMetaImage(const fs::path& file, const std::string& dimSize, const std::string& spacing,
+                    const std::string& extra = "") {
+  writeText(file, "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\n" +
+                      extra + "DimSize = " + dimSize + "\nElementSpacing = " + spacing +
+                      "\nElementType = MET_SHORT\nElementDataFile = LOCAL\n" + std::string(16, '\0'));
+}
+
+TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
+  writeMetaImage(dir_ / "zero.mha", "2 2 2", "1 0 1");
+  expectInputError(dir_ / "zero.mha", "spacing");
+  writeMetaImage(dir_ / "negative.mha", "2 2 2", "1 1 -2");
+  expectInputError(dir_ / "negative.mha", "spacing");
+}
+
+TEST_F(VolumeReaderTest, DegenerateDirectionIsAnError) {
+  writeMetaImage(dir_ / "parallel.mha", "2 2 2", "1 1 1", "TransformMatrix = 1 0 0 1 0 0 0 0 1\n");
+  expectInputError(dir_ / "parallel.mha", "direction");
+}
+
+TEST_F(VolumeReaderTest, VolumeLargerThanMemoryIsRefusedBeforeAllocating) {
+  // Compressed data of the declared size, so only the memory check can object.
+  writeMetaImage(dir_ / "huge.mha", "100000 100000 100000", "1 1 1",
+                 "CompressedData = True\nCompressedDataSize = 16\n");
+  expectInputError(dir_ / "huge.mha", "of memory");
+}
+
+TEST_F(VolumeReaderTest, FolderWithoutDicomIsAnError) {
+  writeText(dir_ / "notes.txt", "not an image");
+  expectInputError(dir_, "no DICOM series");
+}
+
+}  // namespace
+}  // namespace angio
