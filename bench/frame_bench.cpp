@@ -110,7 +110,7 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
       }
     }
     if (settings.withReference)
-      report.rows.push_back(timeFrames(level.name, "reference", std::max(settings.angles / 3, 2), p,
+      report.rows.push_back(timeFrames(level.name, "reference", settings.angles, p,
                                        [&](const RenderParams& rp) {
                                          renderReference(volume, table, rp);
                                          return 0.0;

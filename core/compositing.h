@@ -21,16 +21,21 @@ float opacityAtDistance(float opacityPerVoxel, double osd);
 using SampleTable = std::array<glm::vec4, kDensityLevels>;
 SampleTable correctedTable(const TfTable& table, double osd);
 
-// Interpolated density -> table entry: the nearest of the 4096 entries.
+// Interpolated density (>= 0) -> table entry: the nearest of the 4096 entries.
 inline int tableIndex(float density) {
-  return std::clamp(int(std::lround(density)), 0, kDensityLevels - 1);
+  return std::min(int(density + 0.5f), kDensityLevels - 1);
 }
 
-// The continuous voxel coordinate of sample k on a ray starting at `origin` (mm).
-inline glm::dvec3 sampleCoordinate(const Volume& volume, const ViewGeometry& view,
-                                   const glm::dvec3& origin, long k) {
-  return (origin + (double(k) * view.sampleMm) * view.viewDir) / volume.spacing;
-}
+// Continuous voxel coordinates of the samples of one ray: q(k) = p(k delta) / spacing, written as
+// origin/spacing + k * (delta d / spacing) so a sample costs one multiply-add per axis.
+struct RaySamples {
+  glm::dvec3 originQ{0.0};
+  glm::dvec3 stepQ{0.0};
+
+  RaySamples(const Volume& volume, const ViewGeometry& view, const glm::dvec3& originMm)
+      : originQ(originMm / volume.spacing), stepQ(view.sampleMm * view.viewDir / volume.spacing) {}
+  glm::dvec3 at(long k) const { return originQ + double(k) * stepQ; }
+};
 
 inline float shadingFactor(const Shading& shading, glm::vec3 gradient, glm::vec3 viewDir) {
   if (!shading.enabled) return 1.f;

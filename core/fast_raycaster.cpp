@@ -27,16 +27,18 @@ struct Frame {
 // Per row: which tiles may hold a visible sample (DVR) or the largest density a sample can
 // take there (MIP), over the slices the row's samples read.
 struct RowTiles {
-  std::vector<std::uint8_t> visible;
-  std::vector<std::uint16_t> maxDensity;
+  std::vector<std::uint8_t> visible;         // per tile (DVR)
+  std::vector<std::uint16_t> maxDensity;     // per tile (MIP)
+  std::vector<std::uint8_t> groupVisible;    // per tile group: any tile in it visible
+  std::vector<std::uint16_t> groupMaxDensity;
 };
 
 void classifyRow(const Frame& f, double qa, RowTiles& row) {
   const SliceSpan span = slicesReadAt(f.tiles, qa);
   const std::size_t perSlice = f.tiles.tilesPerSlice();
   const bool mip = f.params.compositing == Compositing::mip;
-  if (mip) row.maxDensity.assign(perSlice, 0);
-  else row.visible.assign(perSlice, 0);
+  row.maxDensity.assign(perSlice, 0);
+  row.visible.assign(perSlice, 0);
   for (int s = span.first; s <= span.last; ++s) {
     const std::size_t base = perSlice * s;
     for (std::size_t t = 0; t < perSlice; ++t) {
@@ -44,41 +46,64 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
       else row.visible[t] |= f.visibleTiles[base + t];
     }
   }
+  const std::size_t groups = std::size_t(f.tiles.groupsB()) * f.tiles.groupsC();
+  row.groupVisible.assign(groups, 0);
+  row.groupMaxDensity.assign(groups, 0);
+  for (int t = 0; t < int(perSlice); ++t) {
+    const int g = f.tiles.groupOf(t);
+    if (mip) row.groupMaxDensity[g] = std::max(row.groupMaxDensity[g], row.maxDensity[t]);
+    else row.groupVisible[g] |= row.visible[t];
+  }
 }
 
-bool runMaySkip(const Frame& f, const RowTiles& row, const TileRun& run, float mipMaximum) {
+// A tile (or group) may be skipped when no sample in it can change the pixel: nothing visible
+// there (DVR), or nothing denser than the maximum so far (MIP).
+bool maySkip(const Frame& f, std::uint8_t visible, std::uint16_t maxDensity, float mipMaximum) {
   if (!f.options.skipEmpty) return false;
-  if (f.params.compositing == Compositing::mip) return float(row.maxDensity[run.tile]) <= mipMaximum;
-  return !row.visible[run.tile];
+  if (f.params.compositing == Compositing::mip) return float(maxDensity) <= mipMaximum;
+  return !visible;
+}
+
+// The samples of one tile run, composited into the ray (DVR) or into its maximum (MIP).
+// Returns true when the ray terminated early.
+bool sampleRun(const Frame& f, const RaySamples& positions, const TileRun& run, RayAccumulator& ray,
+               float& mipMaximum) {
+  const Filter filter = f.params.sampling.filter;
+  const bool mip = f.params.compositing == Compositing::mip;
+  for (long k = run.firstSample; k < run.firstSample + run.count; ++k) {
+    const glm::dvec3 q = positions.at(k);
+    const float density = sampleDensity(f.volume, q, filter);
+    if (mip) {
+      mipMaximum = std::max(mipMaximum, density);
+      continue;
+    }
+    const glm::vec4 rgba = f.table[tableIndex(density)];
+    if (rgba.a <= 0.f) continue;
+    ray.add(rgba, shadingFactor(f.params.shading, sampleGradient(f.volume, q, filter),
+                                glm::vec3(f.view.viewDir)));
+    if (ray.opacity >= f.params.sampling.ert) return true;
+  }
+  return false;
 }
 
 glm::vec4 castRay(const Frame& f, const RowTiles& row, const glm::dvec3& origin, int x,
                   std::uint64_t& samples) {
-  const Filter filter = f.params.sampling.filter;
-  const glm::vec3 viewDir(f.view.viewDir);
-  const bool mip = f.params.compositing == Compositing::mip;
-  const std::uint32_t firstRun = f.templates.columnBegin[x], endRun = f.templates.columnBegin[x + 1];
-  if (firstRun == endRun) return glm::vec4(0.f);  // the ray misses the volume
+  const std::uint32_t firstGroup = f.templates.columnBegin[x], endGroup = f.templates.columnBegin[x + 1];
+  if (firstGroup == endGroup) return glm::vec4(0.f);  // the ray misses the volume
+  const RaySamples positions(f.volume, f.view, origin);
   RayAccumulator ray;
   float mipMaximum = 0.f;
-  for (std::uint32_t r = firstRun; r < endRun; ++r) {
-    const TileRun& run = f.templates.runs[r];
-    if (runMaySkip(f, row, run, mipMaximum)) continue;
-    samples += run.count;
-    for (long k = run.firstSample; k < run.firstSample + run.count; ++k) {
-      const glm::dvec3 q = sampleCoordinate(f.volume, f.view, origin, k);
-      const float density = sampleDensity(f.volume, q, filter);
-      if (mip) {
-        mipMaximum = std::max(mipMaximum, density);
-        continue;
-      }
-      const glm::vec4 rgba = f.table[tableIndex(density)];
-      if (rgba.a <= 0.f) continue;
-      ray.add(rgba, shadingFactor(f.params.shading, sampleGradient(f.volume, q, filter), viewDir));
-      if (ray.opacity >= f.params.sampling.ert) return ray.pixel();
+  for (std::uint32_t g = firstGroup; g < endGroup; ++g) {
+    const GroupRun& group = f.templates.groups[g];
+    if (maySkip(f, row.groupVisible[group.group], row.groupMaxDensity[group.group], mipMaximum)) continue;
+    for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
+      const TileRun& run = f.templates.runs[r];
+      if (maySkip(f, row.visible[run.tile], row.maxDensity[run.tile], mipMaximum)) continue;
+      samples += run.count;
+      if (sampleRun(f, positions, run, ray, mipMaximum)) return ray.pixel();
     }
   }
-  return mip ? mipPixel(mipMaximum, f.params.mip) : ray.pixel();
+  return f.params.compositing == Compositing::mip ? mipPixel(mipMaximum, f.params.mip) : ray.pixel();
 }
 
 void renderRow(const Frame& f, int y, RowTiles& row, Image& image, std::uint64_t& samples) {

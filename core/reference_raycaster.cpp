@@ -16,9 +16,10 @@ glm::vec4 compositeDvr(const Volume& volume, const ViewGeometry& view, const glm
                        SampleRange samples, const SampleTable& table, const RenderParams& params) {
   const Filter filter = params.sampling.filter;
   const glm::vec3 viewDir(view.viewDir);
+  const RaySamples positions(volume, view, origin);
   RayAccumulator ray;
   for (long k = samples.first; k <= samples.last; ++k) {
-    const glm::dvec3 q = sampleCoordinate(volume, view, origin, k);
+    const glm::dvec3 q = positions.at(k);
     const glm::vec4 rgba = table[tableIndex(sampleDensity(volume, q, filter))];
     if (rgba.a <= 0.f) continue;  // transparent: contributes nothing, shading not needed
     ray.add(rgba, shadingFactor(params.shading, sampleGradient(volume, q, filter), viewDir));
@@ -30,10 +31,10 @@ glm::vec4 compositeDvr(const Volume& volume, const ViewGeometry& view, const glm
 glm::vec4 compositeMip(const Volume& volume, const ViewGeometry& view, const glm::dvec3& origin,
                        SampleRange samples, const RenderParams& params) {
   if (samples.empty()) return glm::vec4(0.f);
+  const RaySamples positions(volume, view, origin);
   float maximum = 0.f;
   for (long k = samples.first; k <= samples.last; ++k)
-    maximum = std::max(maximum, sampleDensity(volume, sampleCoordinate(volume, view, origin, k),
-                                              params.sampling.filter));
+    maximum = std::max(maximum, sampleDensity(volume, positions.at(k), params.sampling.filter));
   return mipPixel(maximum, params.mip);
 }
 

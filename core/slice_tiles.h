@@ -15,6 +15,7 @@
 namespace angio {
 
 constexpr int kTileSize = 8;
+constexpr int kGroupTiles = 4;  // a tile group is kGroupTiles^2 tiles (32^2 voxels) of a slice
 
 struct SliceTiles {
   Axis axis = Axis::k;
@@ -25,6 +26,11 @@ struct SliceTiles {
   std::vector<std::uint16_t> maxDensity;
 
   int tilesPerSlice() const { return tilesB * tilesC; }
+  int groupsB() const { return (tilesB + kGroupTiles - 1) / kGroupTiles; }
+  int groupsC() const { return (tilesC + kGroupTiles - 1) / kGroupTiles; }
+  int groupOf(int tile) const {
+    return (tile / tilesB / kGroupTiles) * groupsB() + (tile % tilesB) / kGroupTiles;
+  }
 };
 
 SliceTiles buildSliceTiles(const Volume& volume, Axis axis);

@@ -1,8 +1,11 @@
 #pragma once
 // Reconstruction of density and gradient at a continuous voxel coordinate q = p / spacing
 // (rendering model, "Sampling"). Indices are clamped to the volume, so these never read outside it.
+// Hot paths address voxels through pointer offsets; border cases take the clamped path, which
+// computes the same values (clamping changes nothing inside the volume).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include <glm/glm.hpp>
 
@@ -20,21 +23,44 @@ inline float densityAtClamped(const Volume& volume, glm::ivec3 index) {
   return float(volume.densityAt(c.x, c.y, c.z));
 }
 
+inline glm::ivec3 voxelStrides(const Volume& volume) {
+  return {1, volume.dims.x, volume.dims.x * volume.dims.y};
+}
+
 // Nearest voxel: floor(q + 0.5).
 inline glm::ivec3 nearestVoxel(const Volume& volume, glm::dvec3 q) {
   return clampIndex(volume, glm::ivec3(glm::floor(q + 0.5)));
 }
 
-// Central differences at a voxel, in density units (= HU) per mm, neighbours clamped.
+inline bool hasAllNeighbours(const Volume& volume, glm::ivec3 v, int below, int above) {
+  return glm::all(glm::greaterThanEqual(v, glm::ivec3(below))) &&
+         glm::all(glm::lessThan(v + above, volume.dims));
+}
+
+// Central difference along one axis from the two neighbour densities, in HU per mm.
+inline float centralDifference(float below, float above, double spacing) {
+  return (above - below) / float(2.0 * spacing);
+}
+
+// Central differences at a voxel, neighbours clamped.
 inline glm::vec3 voxelGradient(const Volume& volume, glm::ivec3 v) {
   glm::vec3 g;
   for (int axis = 0; axis < 3; ++axis) {
     glm::ivec3 lo = v, hi = v;
     --lo[axis];
     ++hi[axis];
-    g[axis] = (densityAtClamped(volume, hi) - densityAtClamped(volume, lo)) /
-              float(2.0 * volume.spacing[axis]);
+    g[axis] = centralDifference(densityAtClamped(volume, lo), densityAtClamped(volume, hi),
+                                volume.spacing[axis]);
   }
+  return g;
+}
+
+// The same for a voxel whose six neighbours exist, through pointer offsets.
+inline glm::vec3 voxelGradientInterior(const Voxel* voxel, glm::ivec3 strides, glm::dvec3 spacing) {
+  glm::vec3 g;
+  for (int axis = 0; axis < 3; ++axis)
+    g[axis] = centralDifference(float(densityOf(voxel[-strides[axis]])),
+                                float(densityOf(voxel[strides[axis]])), spacing[axis]);
   return g;
 }
 
@@ -55,16 +81,72 @@ inline Cell cellAt(const Volume& volume, glm::dvec3 q) {
   return cell;
 }
 
+// corner(dx, dy, dz) gives the value at base + (dx, dy, dz); the lerp order is fixed, so every
+// caller gets the same bits for the same corner values.
 template <typename CornerValue>
 auto trilinear(const Cell& cell, CornerValue&& corner) {
   const glm::vec3 f = cell.frac;
   auto lerp = [](auto a, auto b, float t) { return a + (b - a) * t; };
-  auto value = [&](int dx, int dy, int dz) { return corner(cell.base + glm::ivec3(dx, dy, dz)); };
-  const auto x00 = lerp(value(0, 0, 0), value(1, 0, 0), f.x);
-  const auto x10 = lerp(value(0, 1, 0), value(1, 1, 0), f.x);
-  const auto x01 = lerp(value(0, 0, 1), value(1, 0, 1), f.x);
-  const auto x11 = lerp(value(0, 1, 1), value(1, 1, 1), f.x);
+  const auto x00 = lerp(corner(0, 0, 0), corner(1, 0, 0), f.x);
+  const auto x10 = lerp(corner(0, 1, 0), corner(1, 1, 0), f.x);
+  const auto x01 = lerp(corner(0, 0, 1), corner(1, 0, 1), f.x);
+  const auto x11 = lerp(corner(0, 1, 1), corner(1, 1, 1), f.x);
   return lerp(lerp(x00, x10, f.y), lerp(x01, x11, f.y), f.z);
+}
+
+// Offsets to a cell's far corners; 0 along an axis of one voxel (then both corners coincide).
+inline glm::ivec3 cornerSteps(const Volume& volume) {
+  const glm::ivec3 strides = voxelStrides(volume);
+  return {volume.dims.x > 1 ? strides.x : 0, volume.dims.y > 1 ? strides.y : 0,
+          volume.dims.z > 1 ? strides.z : 0};
+}
+
+inline float trilinearDensity(const Volume& volume, const Cell& cell) {
+  const Voxel* base = volume.voxels.data() + volume.indexOf(cell.base.x, cell.base.y, cell.base.z);
+  const glm::ivec3 step = cornerSteps(volume);
+  return trilinear(cell, [&](int dx, int dy, int dz) {
+    return float(densityOf(base[dx * step.x + dy * step.y + dz * step.z]));
+  });
+}
+
+inline glm::vec3 trilinearGradient(const Volume& volume, const Cell& cell) {
+  if (hasAllNeighbours(volume, cell.base, 1, 2)) {
+    const Voxel* base = volume.voxels.data() + volume.indexOf(cell.base.x, cell.base.y, cell.base.z);
+    const glm::ivec3 strides = voxelStrides(volume);
+    return trilinear(cell, [&](int dx, int dy, int dz) {
+      return voxelGradientInterior(base + dx * strides.x + dy * strides.y + dz * strides.z, strides,
+                                   volume.spacing);
+    });
+  }
+  return trilinear(cell, [&](int dx, int dy, int dz) {
+    return voxelGradient(volume, clampIndex(volume, cell.base + glm::ivec3(dx, dy, dz)));
+  });
+}
+
+// Thesis sec. 4.4: the nearest voxel and its 6 face neighbours, equally weighted.
+inline float meanDensity(const Volume& volume, glm::ivec3 v) {
+  float sum = float(volume.densityAt(v.x, v.y, v.z));
+  if (hasAllNeighbours(volume, v, 1, 1)) {
+    const Voxel* voxel = volume.voxels.data() + volume.indexOf(v.x, v.y, v.z);
+    const glm::ivec3 strides = voxelStrides(volume);
+    for (int axis = 0; axis < 3; ++axis)
+      sum += float(densityOf(voxel[-strides[axis]])) + float(densityOf(voxel[strides[axis]]));
+    return sum / 7.f;
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::ivec3 lo = v, hi = v;
+    --lo[axis];
+    ++hi[axis];
+    sum += densityAtClamped(volume, lo) + densityAtClamped(volume, hi);
+  }
+  return sum / 7.f;
+}
+
+inline glm::vec3 nearestGradient(const Volume& volume, glm::ivec3 v) {
+  if (hasAllNeighbours(volume, v, 1, 1))
+    return voxelGradientInterior(volume.voxels.data() + volume.indexOf(v.x, v.y, v.z),
+                                 voxelStrides(volume), volume.spacing);
+  return voxelGradient(volume, v);
 }
 
 // Density (0..4095, fractional for trilinear and mean) reconstructed with the filter.
@@ -74,32 +156,16 @@ inline float sampleDensity(const Volume& volume, glm::dvec3 q, Filter filter) {
       const glm::ivec3 v = nearestVoxel(volume, q);
       return float(volume.densityAt(v.x, v.y, v.z));
     }
-    case Filter::mean: {
-      // Thesis sec. 4.4: the nearest voxel and its 6 face neighbours, equally weighted.
-      const glm::ivec3 v = nearestVoxel(volume, q);
-      float sum = densityAtClamped(volume, v);
-      for (int axis = 0; axis < 3; ++axis) {
-        glm::ivec3 lo = v, hi = v;
-        --lo[axis];
-        ++hi[axis];
-        sum += densityAtClamped(volume, lo) + densityAtClamped(volume, hi);
-      }
-      return sum / 7.f;
-    }
-    case Filter::trilinear:
-      return trilinear(cellAt(volume, q),
-                       [&](glm::ivec3 v) { return densityAtClamped(volume, v); });
+    case Filter::mean: return meanDensity(volume, nearestVoxel(volume, q));
+    case Filter::trilinear: return trilinearDensity(volume, cellAt(volume, q));
   }
   return 0.f;
 }
 
 // Gradient reconstructed with the same filter as the density (for mean: the nearest voxel's).
 inline glm::vec3 sampleGradient(const Volume& volume, glm::dvec3 q, Filter filter) {
-  if (filter == Filter::trilinear)
-    return trilinear(cellAt(volume, q), [&](glm::ivec3 v) {
-      return voxelGradient(volume, clampIndex(volume, v));
-    });
-  return voxelGradient(volume, nearestVoxel(volume, q));
+  if (filter == Filter::trilinear) return trilinearGradient(volume, cellAt(volume, q));
+  return nearestGradient(volume, nearestVoxel(volume, q));
 }
 
 }  // namespace angio
