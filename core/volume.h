@@ -3,8 +3,9 @@
 // index * spacing (mm) relative to the first voxel. `origin` and `direction` keep the physical (LPS)
 // placement so that points in mm (centerlines) map to voxels:
 //   physical = origin + direction * (index * spacing).
-// After reorientation `direction` is the identity, or a rotation within 1 degree of it when an
-// oblique acquisition was snapped (the rendering model's rule).
+// After reorientation `direction` is the identity for axis-aligned data; for an oblique
+// acquisition (snapped to the nearest LPS axes for rendering, with a warning) it keeps the true
+// residual rotation, which may be many degrees, so physicalToIndex stays exact.
 #include <array>
 #include <cstddef>
 #include <cstdint>

@@ -8,6 +8,7 @@
 #include "gui/render_job.h"
 #include "io/centerline_csv.h"
 #include "io/volume_writer.h"
+#include "vessel/centerline.h"
 
 namespace angio {
 
@@ -23,7 +24,7 @@ int runPhantom(const PhantomOptionsCli& options) {
   writeVolume(phantom.volume, options.out);
   std::printf("wrote %s\n", options.out.c_str());
   if (!options.centerlines.empty()) {
-    writeCenterlinesCsv(phantom.paths, options.centerlines);
+    writeCenterlinesCsv(centerlinesFromPhantom(phantom.paths), options.centerlines);
     std::printf("wrote %s (%zu paths)\n", options.centerlines.c_str(), phantom.paths.size());
   }
   return 0;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "io/input_error.h"
+#include "vessel/centerline.h"
 
 namespace angio {
 namespace {
@@ -31,6 +32,13 @@ class CenterlineCsvTest : public ::testing::Test {
     return text.str();
   }
 
+  // One path of one point at the origin, radius 1 mm.
+  static Centerlines onePoint() {
+    Centerlines centerlines;
+    centerlines.paths = {{"a", {{{0, 0, 0}, 1}}}};
+    return centerlines;
+  }
+
   fs::path dir_;
 };
 
@@ -39,7 +47,7 @@ TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
       {"a", {{{1.0, -2.5, 3.25}, 10.0}, {{1.0, -2.5, 2.25}, 9.5}}},
       {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
   const fs::path file = dir_ / "centerlines.csv";
-  writeCenterlinesCsv(paths, file);
+  writeCenterlinesCsv(centerlinesFromPhantom(paths), file);
   EXPECT_EQ(read(file),
             "path,x_mm,y_mm,z_mm,radius_mm\n"
             "0,1.000,-2.500,3.250,10.000\n"
@@ -59,7 +67,7 @@ TEST_F(CenterlineCsvTest, HeaderMatchesTheSharedReferenceFile) {
 TEST_F(CenterlineCsvTest, UnwritableTargetThrowsInputErrorAndLeavesNothing) {
   const fs::path file = dir_ / "missing-dir" / "centerlines.csv";
   try {
-    writeCenterlinesCsv({{"a", {{{0, 0, 0}, 1}}}}, file);
+    writeCenterlinesCsv(onePoint(), file);
     FAIL() << "no InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
@@ -70,7 +78,7 @@ TEST_F(CenterlineCsvTest, UnwritableTargetThrowsInputErrorAndLeavesNothing) {
 TEST_F(CenterlineCsvTest, ReplacesAnExistingFileWhole) {
   const fs::path file = dir_ / "centerlines.csv";
   std::ofstream(file) << "old content that is longer than the new one\n" << std::string(1000, 'x');
-  writeCenterlinesCsv({{"a", {{{0, 0, 0}, 1}}}}, file);
+  writeCenterlinesCsv(onePoint(), file);
   EXPECT_EQ(read(file), "path,x_mm,y_mm,z_mm,radius_mm\n0,0.000,0.000,0.000,1.000\n");
 }
 

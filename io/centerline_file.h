@@ -1,0 +1,38 @@
+#pragma once
+// Centerline files, chosen by extension: vmtk/VTK XML PolyData (.vtp), 3D Slicer markups curves
+// (.mrk.json, .json) and CSV (.csv). Each loader returns the model of vessel/centerline.h in the
+// physical (LPS, mm) frame, validated: an error (bad file, NaN, negative radius, empty path, no
+// paths) throws InputError naming the file and, where there is one, the path; warnings (single-point
+// paths, unknown radii) go to `warn`. Points outside a volume are checked once the volume is known:
+// checkCenterlinesInside.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "core/volume.h"
+#include "vessel/centerline.h"
+
+namespace angio {
+
+struct CenterlineLoadOptions {
+  // Called with each warning as one line "<file>: <problem>"; may be empty.
+  std::function<void(const std::string&)> warn;
+};
+
+// By extension (case-insensitive): .vtp, .mrk.json / .json, .csv; anything else is an InputError.
+Centerlines loadCenterlines(const std::filesystem::path& file,
+                            const CenterlineLoadOptions& options = {});
+
+// Validates freshly parsed centerlines (validateCenterlines): throws InputError(file, problem) for
+// the first error, passes each warning to options.warn. Used by every format's reader.
+void checkLoadedCenterlines(const Centerlines& centerlines, const std::filesystem::path& file,
+                            const CenterlineLoadOptions& options);
+
+// Passes a warning to options.warn for each path with points outside the volume.
+void checkCenterlinesInside(const Centerlines& centerlines, const Volume& volume,
+                            const CenterlineLoadOptions& options);
+
+// The whole file as bytes; throws InputError if it is missing or unreadable.
+std::string readCenterlineFileBytes(const std::filesystem::path& file);
+
+}  // namespace angio

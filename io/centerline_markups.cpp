@@ -1,0 +1,165 @@
+#include "io/centerline_markups.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/input_error.h"
+
+namespace angio {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+std::string stringOr(const Json& object, const char* key, const std::string& fallback) {
+  const auto found = object.find(key);
+  return found != object.end() && found->is_string() ? found->get<std::string>() : fallback;
+}
+
+// How one markup's coordinates map to LPS millimetres.
+struct CoordinateMapping {
+  glm::dvec3 axisSigns{1.0};  // RAS -> LPS flips x and y
+  double toMm = 1.0;
+};
+
+CoordinateMapping coordinateMapping(const Json& markup, const fs::path& source,
+                                    const std::string& where) {
+  CoordinateMapping mapping;
+  const std::string system = stringOr(markup, "coordinateSystem", "LPS");
+  if (system == "RAS") {
+    mapping.axisSigns = {-1.0, -1.0, 1.0};
+  } else if (system != "LPS") {
+    throw InputError(source, where + ": unknown coordinateSystem '" + system + "'");
+  }
+  // Units are a string ("mm") or a DICOM code triple (["mm", "UCUM", "millimeter"]).
+  std::string units = "mm";
+  if (const auto found = markup.find("coordinateUnits"); found != markup.end()) {
+    const Json& code = found->is_array() && !found->empty() ? found->front() : *found;
+    units = code.is_string() ? code.get<std::string>() : "?";
+  }
+  if (units == "um") {
+    mapping.toMm = 1e-3;
+  } else if (units != "mm") {
+    throw InputError(source, where + ": unknown coordinateUnits '" + units + "'");
+  }
+  return mapping;
+}
+
+double number(const Json& value, const fs::path& source, const std::string& what) {
+  if (!value.is_number()) throw InputError(source, what + " is not a number: " + value.dump());
+  return value.get<double>();
+}
+
+// The per-control-point values of the "Radius" measurement, if there is one.
+std::optional<std::vector<double>> radiusValues(const Json& markup, std::size_t controlPoints,
+                                                const fs::path& source, const std::string& where) {
+  const auto measurements = markup.find("measurements");
+  if (measurements == markup.end() || !measurements->is_array()) return std::nullopt;
+  for (const Json& measurement : *measurements) {
+    if (!measurement.is_object() || lowercase(stringOr(measurement, "name", "")) != "radius") continue;
+    const auto values = measurement.find("controlPointValues");
+    if (values == measurement.end() || !values->is_array()) continue;
+    if (values->size() != controlPoints) {
+      throw InputError(source, where + ": Radius measurement has " +
+                                   std::to_string(values->size()) + " values for " +
+                                   std::to_string(controlPoints) + " control points");
+    }
+    std::vector<double> radii;
+    for (std::size_t n = 0; n < values->size(); ++n) {
+      radii.push_back(number((*values)[n], source, where + ": Radius value " + std::to_string(n)));
+    }
+    return radii;
+  }
+  return std::nullopt;
+}
+
+glm::dvec3 position(const Json& controlPoint, const fs::path& source, const std::string& where) {
+  const auto found = controlPoint.find("position");
+  if (found == controlPoint.end() || !found->is_array() || found->size() != 3) {
+    throw InputError(source, where + ": position is not an array of 3 numbers");
+  }
+  return {number((*found)[0], source, where + ": x"), number((*found)[1], source, where + ": y"),
+          number((*found)[2], source, where + ": z")};
+}
+
+CenterlinePath readCurve(const Json& markup, std::size_t index, const fs::path& source,
+                         const CenterlineLoadOptions& options) {
+  CenterlinePath path{stringOr(markup, "name", ""), {}};
+  if (path.name.empty()) path.name = std::to_string(index);
+  const std::string where = "markup '" + path.name + "'";
+  const CoordinateMapping mapping = coordinateMapping(markup, source, where);
+
+  const Json noPoints = Json::array();
+  const auto found = markup.find("controlPoints");
+  const Json& controlPoints = found != markup.end() ? *found : noPoints;
+  if (!controlPoints.is_array()) throw InputError(source, where + ": controlPoints is not an array");
+  const std::optional<std::vector<double>> radii =
+      radiusValues(markup, controlPoints.size(), source, where);
+
+  std::size_t undefined = 0;
+  for (std::size_t n = 0; n < controlPoints.size(); ++n) {
+    const Json& controlPoint = controlPoints[n];
+    const std::string pointWhere = where + " control point " + std::to_string(n);
+    if (!controlPoint.is_object()) throw InputError(source, pointWhere + " is not an object");
+    if (stringOr(controlPoint, "positionStatus", "defined") == "undefined") {
+      ++undefined;
+      continue;
+    }
+    const glm::dvec3 lps = position(controlPoint, source, pointWhere) * mapping.axisSigns;
+    path.points.push_back({lps * mapping.toMm, radii ? (*radii)[n] : 0.0});
+  }
+  if (undefined > 0 && options.warn) {
+    options.warn(source.string() + ": " + where + ": skipped " + std::to_string(undefined) +
+                 " control points without a position");
+  }
+  return path;
+}
+
+}  // namespace
+
+Centerlines parseCenterlinesMarkups(const std::string& text, const fs::path& source,
+                                    const CenterlineLoadOptions& options) {
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::parse_error& error) {
+    throw InputError(source, std::string("bad JSON: ") + error.what());
+  }
+  const auto markups = json.is_object() ? json.find("markups") : json.end();
+  if (!json.is_object() || markups == json.end() || !markups->is_array()) {
+    throw InputError(source, "not a markups file (no \"markups\" array)");
+  }
+  Centerlines centerlines;
+  centerlines.source = source.string();
+  for (std::size_t index = 0; index < markups->size(); ++index) {
+    const Json& markup = (*markups)[index];
+    if (!markup.is_object()) throw InputError(source, "markup " + std::to_string(index) + " is not an object");
+    const std::string type = stringOr(markup, "type", "");
+    if (type == "Curve" || type == "Line") {
+      centerlines.paths.push_back(readCurve(markup, index, source, options));
+    } else if (options.warn) {
+      options.warn(source.string() + ": markup " + std::to_string(index) + " of type '" + type +
+                   "' is not a curve; skipped");
+    }
+  }
+  checkLoadedCenterlines(centerlines, source, options);
+  return centerlines;
+}
+
+Centerlines readCenterlinesMarkups(const fs::path& file, const CenterlineLoadOptions& options) {
+  return parseCenterlinesMarkups(readCenterlineFileBytes(file), file, options);
+}
+
+}  // namespace angio

@@ -1,0 +1,549 @@
+#include "io/centerline_vtp.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "io/input_error.h"
+
+namespace angio {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A problem inside one DataArray; readDataArray adds the array's name and the file.
+struct ArrayProblem : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// --- File-wide settings -------------------------------------------------------------------------
+
+struct Encoding {
+  std::size_t headerWordBytes = 4;  // header_type UInt32 (VTK's default) or UInt64
+  bool swapBytes = false;           // byte_order differs from this machine's
+  bool zlib = false;                // compressor="vtkZLibDataCompressor"
+};
+
+struct AppendedData {
+  bool present = false;
+  bool base64 = false;
+  std::string_view bytes;  // from the byte after '_'
+};
+
+// The XML part of a file, and its appended data, which is not XML (raw bytes may hold '<' or NUL)
+// and so is cut off before parsing, as VTK's own parser does: the <AppendedData> tag is closed
+// artificially and the document ended after it.
+struct SplitFile {
+  std::string xml;
+  std::optional<std::string_view> appended;  // from the byte after '_'
+};
+
+SplitFile splitAppendedData(const std::string& bytes, const fs::path& source) {
+  const std::size_t tag = bytes.find("<AppendedData");
+  if (tag == std::string::npos) return {bytes, std::nullopt};
+  const std::size_t tagEnd = bytes.find('>', tag);
+  if (tagEnd == std::string::npos) throw InputError(source, "bad XML: <AppendedData> tag not closed");
+  const bool selfClosing = bytes[tagEnd - 1] == '/';
+  SplitFile split{bytes.substr(0, selfClosing ? tagEnd - 1 : tagEnd) + "/>\n</VTKFile>\n", {}};
+  if (selfClosing) return split;
+  std::size_t marker = tagEnd + 1;
+  while (marker < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[marker]))) ++marker;
+  if (marker >= bytes.size() || bytes[marker] != '_') {
+    throw InputError(source, "appended data does not start with '_'");
+  }
+  const std::size_t close = bytes.rfind("</AppendedData>");
+  const std::size_t end = close == std::string::npos || close < marker ? bytes.size() : close;
+  split.appended = std::string_view(bytes).substr(marker + 1, end - marker - 1);
+  return split;
+}
+
+// Integers print as integers ("130", not "130.000000").
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+std::string attribute(const pugi::xml_node& node, const char* name, const char* fallback = "") {
+  const pugi::xml_attribute found = node.attribute(name);
+  return found ? found.value() : fallback;
+}
+
+Encoding fileEncoding(const pugi::xml_node& root, const fs::path& source) {
+  Encoding encoding;
+  const std::string byteOrder = attribute(root, "byte_order", "LittleEndian");
+  if (byteOrder != "LittleEndian" && byteOrder != "BigEndian") {
+    throw InputError(source, "unknown byte_order '" + byteOrder + "'");
+  }
+  const bool fileIsBig = byteOrder == "BigEndian";
+  encoding.swapBytes = fileIsBig != (std::endian::native == std::endian::big);
+  const std::string headerType = attribute(root, "header_type", "UInt32");
+  if (headerType == "UInt64") {
+    encoding.headerWordBytes = 8;
+  } else if (headerType != "UInt32") {
+    throw InputError(source, "unsupported header_type '" + headerType + "'");
+  }
+  const std::string compressor = attribute(root, "compressor");
+  if (compressor == "vtkZLibDataCompressor") {
+    encoding.zlib = true;
+  } else if (!compressor.empty()) {
+    throw InputError(source, "unsupported compressor '" + compressor + "' (only zlib)");
+  }
+  return encoding;
+}
+
+AppendedData appendedData(const pugi::xml_node& root, const SplitFile& split,
+                          const fs::path& source) {
+  const pugi::xml_node element = root.child("AppendedData");
+  if (!element || !split.appended) return {};
+  const std::string encoding = attribute(element, "encoding", "raw");
+  if (encoding != "raw" && encoding != "base64") {
+    throw InputError(source, "unknown AppendedData encoding '" + encoding + "'");
+  }
+  return {true, encoding == "base64", *split.appended};
+}
+
+// --- Encoded bytes ------------------------------------------------------------------------------
+
+int base64Value(char c) {
+  if (c >= 'A' && c <= 'Z') return c - 'A';
+  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+  if (c >= '0' && c <= '9') return c - '0' + 52;
+  if (c == '+') return 62;
+  if (c == '/') return 63;
+  return -1;
+}
+
+// A character for a one-line message: 'c', or its code if it is not printable.
+std::string shown(char c) {
+  if (std::isprint(static_cast<unsigned char>(c))) return std::string("'") + c + "'";
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned char>(c));
+  return code;
+}
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// Bytes read in order from raw data or from base64 text. VTK encodes a binary array's header and
+// data as one base64 stream, except with compression, where the header is a stream of its own
+// (padded) and the blocks another: endStream() drops what is left of the current 4-character group.
+class ByteStream {
+ public:
+  ByteStream(std::string_view input, bool base64) : input_(input), base64_(base64) {}
+
+  // An upper bound of the bytes left, to refuse sizes the input cannot hold before allocating.
+  std::size_t available() const {
+    const std::size_t left = input_.size() - position_;
+    return (pending_.size() - pendingUsed_) + (base64_ ? left / 4 * 3 + 3 : left);
+  }
+
+  std::string read(std::size_t count) {
+    if (count > available()) throw ArrayProblem("data ends early");
+    std::string out;
+    out.reserve(count);
+    if (!base64_) {
+      out.assign(input_.substr(position_, count));
+      position_ += count;
+      return out;
+    }
+    while (out.size() < count) {
+      if (pendingUsed_ == pending_.size()) decodeGroup();
+      const std::size_t take = std::min(count - out.size(), pending_.size() - pendingUsed_);
+      out.append(pending_, pendingUsed_, take);
+      pendingUsed_ += take;
+    }
+    return out;
+  }
+
+  // Ends the current base64 stream: what is left of its last group is padding.
+  void endStream() {
+    pending_.clear();
+    pendingUsed_ = 0;
+    ended_ = false;
+  }
+
+ private:
+  void decodeGroup() {
+    if (ended_) throw ArrayProblem("data ends early (base64 padding inside the data)");
+    char group[4];
+    for (char& c : group) {
+      while (position_ < input_.size() && isSpace(input_[position_])) ++position_;
+      if (position_ == input_.size()) throw ArrayProblem("data ends early");
+      c = input_[position_++];
+    }
+    const int padding = (group[3] == '=') + (group[2] == '=' && group[3] == '=');
+    std::uint32_t bits = 0;
+    for (int n = 0; n < 4; ++n) {
+      const int value = n >= 4 - padding ? 0 : base64Value(group[n]);
+      if (value < 0) throw ArrayProblem("invalid base64 character " + shown(group[n]));
+      bits = bits << 6 | std::uint32_t(value);
+    }
+    pending_.assign({char(bits >> 16), char(bits >> 8 & 0xFF), char(bits & 0xFF)});
+    pending_.resize(3 - padding);
+    pendingUsed_ = 0;
+    ended_ = padding > 0;  // a padded group is the last of its stream
+  }
+
+  std::string_view input_;
+  bool base64_;
+  std::size_t position_ = 0;
+  std::string pending_;
+  std::size_t pendingUsed_ = 0;
+  bool ended_ = false;
+};
+
+// Copies one word of `size` bytes (at most 8) into `word`, in this machine's byte order.
+void loadWord(const char* in, std::size_t size, bool swapBytes, unsigned char (&word)[8]) {
+  for (std::size_t b = 0; b < size && b < 8; ++b) {
+    word[b] = static_cast<unsigned char>(in[swapBytes ? size - 1 - b : b]);
+  }
+}
+
+std::uint64_t wordAt(const std::string& bytes, std::size_t index, std::size_t wordBytes,
+                     bool swapBytes) {
+  unsigned char word[8] = {};
+  loadWord(bytes.data() + index * wordBytes, wordBytes, swapBytes, word);
+  if (wordBytes == 4) {
+    std::uint32_t value;
+    std::memcpy(&value, word, 4);
+    return value;
+  }
+  std::uint64_t value;
+  std::memcpy(&value, word, 8);
+  return value;
+}
+
+std::string sizeMismatch(std::uint64_t bytes, std::size_t expectedBytes) {
+  return "holds " + std::to_string(bytes) + " bytes, expected " + std::to_string(expectedBytes);
+}
+
+// Uncompressed: one header word (the byte count), then the data.
+std::string readUncompressed(ByteStream& in, const Encoding& encoding, std::size_t expectedBytes) {
+  const std::uint64_t bytes =
+      wordAt(in.read(encoding.headerWordBytes), 0, encoding.headerWordBytes, encoding.swapBytes);
+  if (bytes != expectedBytes) throw ArrayProblem(sizeMismatch(bytes, expectedBytes));
+  return in.read(expectedBytes);
+}
+
+void inflateBlock(const std::string& compressed, char* out, std::size_t outBytes) {
+  uLongf produced = uLongf(outBytes);
+  const int status = uncompress(reinterpret_cast<Bytef*>(out), &produced,
+                                reinterpret_cast<const Bytef*>(compressed.data()),
+                                uLong(compressed.size()));
+  if (status != Z_OK || produced != outBytes) {
+    throw ArrayProblem("corrupt zlib block (" + std::string(zError(status)) + ")");
+  }
+}
+
+// vtkZLibDataCompressor: header words [nblocks, blocksize, lastblocksize, compressed size of each
+// block] (lastblocksize 0 = the last block is full), then the zlib streams one after another.
+std::string readCompressed(ByteStream& in, const Encoding& encoding, std::size_t expectedBytes) {
+  const std::size_t word = encoding.headerWordBytes;
+  const std::string head = in.read(3 * word);
+  const std::uint64_t blocks = wordAt(head, 0, word, encoding.swapBytes);
+  const std::uint64_t blockBytes = wordAt(head, 1, word, encoding.swapBytes);
+  const std::uint64_t lastBytes = wordAt(head, 2, word, encoding.swapBytes);
+  if (blocks > 0 && (blockBytes == 0 || lastBytes > blockBytes)) {
+    throw ArrayProblem("bad compression header (block size " + std::to_string(blockBytes) +
+                       ", last block " + std::to_string(lastBytes) + ")");
+  }
+  // Bounding the block count by the expected size first keeps the arithmetic from overflowing.
+  if (blocks > 0 && blocks - 1 > expectedBytes / blockBytes) {
+    throw ArrayProblem("compression header claims " + std::to_string(blocks) + " blocks");
+  }
+  const std::uint64_t total =
+      blocks == 0 ? 0 : (blocks - 1) * blockBytes + (lastBytes != 0 ? lastBytes : blockBytes);
+  if (total != expectedBytes) throw ArrayProblem(sizeMismatch(total, expectedBytes));
+  const std::string sizes = in.read(std::size_t(blocks) * word);
+  in.endStream();
+
+  std::string data(expectedBytes, '\0');
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::uint64_t compressedBytes = wordAt(sizes, b, word, encoding.swapBytes);
+    if (compressedBytes > in.available()) throw ArrayProblem("data ends early");
+    const std::size_t outBytes = b + 1 == blocks && lastBytes != 0 ? lastBytes : blockBytes;
+    inflateBlock(in.read(std::size_t(compressedBytes)), data.data() + b * blockBytes, outBytes);
+  }
+  return data;
+}
+
+// --- Data arrays --------------------------------------------------------------------------------
+
+struct WordType {
+  std::size_t bytes = 0;
+  bool isFloat = false;
+  bool isSigned = false;
+};
+
+std::optional<WordType> wordTypeNamed(const std::string& name) {
+  if (name == "Float32") return WordType{4, true, true};
+  if (name == "Float64") return WordType{8, true, true};
+  if (name == "Int8") return WordType{1, false, true};
+  if (name == "UInt8") return WordType{1, false, false};
+  if (name == "Int16") return WordType{2, false, true};
+  if (name == "UInt16") return WordType{2, false, false};
+  if (name == "Int32") return WordType{4, false, true};
+  if (name == "UInt32") return WordType{4, false, false};
+  if (name == "Int64") return WordType{8, false, true};
+  if (name == "UInt64") return WordType{8, false, false};
+  return std::nullopt;
+}
+
+template <class T>
+double loadAs(const unsigned char* word) {
+  T value;
+  std::memcpy(&value, word, sizeof value);
+  return double(value);
+}
+
+double wordValue(const unsigned char* word, const WordType& type) {
+  if (type.isFloat) return type.bytes == 4 ? loadAs<float>(word) : loadAs<double>(word);
+  switch (type.bytes) {
+    case 1: return type.isSigned ? loadAs<std::int8_t>(word) : loadAs<std::uint8_t>(word);
+    case 2: return type.isSigned ? loadAs<std::int16_t>(word) : loadAs<std::uint16_t>(word);
+    case 4: return type.isSigned ? loadAs<std::int32_t>(word) : loadAs<std::uint32_t>(word);
+    default: return type.isSigned ? loadAs<std::int64_t>(word) : loadAs<std::uint64_t>(word);
+  }
+}
+
+std::vector<double> wordsToValues(const std::string& bytes, const WordType& type, bool swapBytes) {
+  std::vector<double> values(bytes.size() / type.bytes);
+  unsigned char word[8] = {};
+  for (std::size_t n = 0; n < values.size(); ++n) {
+    loadWord(bytes.data() + n * type.bytes, type.bytes, swapBytes, word);
+    values[n] = wordValue(word, type);
+  }
+  return values;
+}
+
+// The element's character data (its first text child; vmtk files put <InformationKey>s after it).
+std::string_view elementText(const pugi::xml_node& node) {
+  for (const pugi::xml_node child : node.children()) {
+    if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) return child.value();
+  }
+  return {};
+}
+
+// from_chars accepts "nan" and "inf"; the model's validation reports those with the path.
+std::vector<double> parseAscii(std::string_view text, std::size_t expectedValues) {
+  std::vector<double> values;
+  values.reserve(std::min(expectedValues, text.size() / 2 + 1));
+  std::size_t position = 0;
+  while (true) {
+    while (position < text.size() && isSpace(text[position])) ++position;
+    if (position == text.size()) break;
+    std::size_t end = position;
+    while (end < text.size() && !isSpace(text[end])) ++end;
+    const std::string_view token = text.substr(position, end - position);
+    double value = 0;
+    const auto [stop, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (error != std::errc() || stop != token.data() + token.size()) {
+      throw ArrayProblem("'" + std::string(token) + "' is not a number");
+    }
+    values.push_back(value);
+    position = end;
+  }
+  if (values.size() != expectedValues) {
+    throw ArrayProblem("has " + std::to_string(values.size()) + " values, expected " +
+                       std::to_string(expectedValues));
+  }
+  return values;
+}
+
+std::size_t parseCount(const std::string& text, const std::string& what) {
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    throw ArrayProblem(what + " '" + text + "' is not a count");
+  }
+  return value;
+}
+
+struct ArrayContext {
+  const Encoding& encoding;
+  const AppendedData& appended;
+  const fs::path& source;
+};
+
+std::vector<double> decodeArray(const pugi::xml_node& array, std::size_t expectedValues,
+                                const ArrayContext& context) {
+  const std::string typeName = attribute(array, "type");
+  const std::optional<WordType> type = wordTypeNamed(typeName);
+  if (!type) throw ArrayProblem("unsupported type '" + typeName + "'");
+  const std::string format = attribute(array, "format", "ascii");
+  if (format == "ascii") return parseAscii(elementText(array), expectedValues);
+  std::optional<ByteStream> in;
+  if (format == "binary") {
+    in.emplace(elementText(array), true);
+  } else if (format == "appended") {
+    if (!context.appended.present) throw ArrayProblem("is appended but the file has no AppendedData");
+    const std::size_t offset = parseCount(attribute(array, "offset"), "offset");
+    if (offset > context.appended.bytes.size()) throw ArrayProblem("offset beyond the appended data");
+    in.emplace(context.appended.bytes.substr(offset), context.appended.base64);
+  } else {
+    throw ArrayProblem("unknown format '" + format + "'");
+  }
+  const std::size_t expectedBytes = expectedValues * type->bytes;
+  const std::string bytes = context.encoding.zlib
+                                ? readCompressed(*in, context.encoding, expectedBytes)
+                                : readUncompressed(*in, context.encoding, expectedBytes);
+  return wordsToValues(bytes, *type, context.encoding.swapBytes);
+}
+
+// A DataArray's values (any type, as double), checked to be `tuples` x NumberOfComponents.
+std::vector<double> readDataArray(const pugi::xml_node& array, std::size_t tuples,
+                                  std::size_t components, const ArrayContext& context) {
+  const std::string name = attribute(array, "Name", "(unnamed)");
+  try {
+    const std::size_t declared =
+        parseCount(attribute(array, "NumberOfComponents", "1"), "NumberOfComponents");
+    if (tuples > (std::size_t(1) << 56)) {
+      throw ArrayProblem("impossibly large (" + std::to_string(tuples) + " tuples)");
+    }
+    if (declared != components) {
+      throw ArrayProblem("has " + std::to_string(declared) + " components, expected " +
+                         std::to_string(components));
+    }
+    return decodeArray(array, tuples * components, context);
+  } catch (const ArrayProblem& problem) {
+    throw InputError(context.source, "DataArray '" + name + "': " + problem.what());
+  }
+}
+
+pugi::xml_node namedArray(const pugi::xml_node& parent, const char* name) {
+  for (const pugi::xml_node array : parent.children("DataArray")) {
+    if (attribute(array, "Name") == name) return array;
+  }
+  return {};
+}
+
+// --- Pieces -------------------------------------------------------------------------------------
+
+std::size_t pieceCount(const pugi::xml_node& piece, const char* name, const fs::path& source) {
+  try {
+    return parseCount(attribute(piece, name, "0"), name);
+  } catch (const ArrayProblem& problem) {
+    throw InputError(source, std::string("Piece: ") + problem.what());
+  }
+}
+
+std::vector<glm::dvec3> readPoints(const pugi::xml_node& piece, std::size_t count,
+                                   const ArrayContext& context) {
+  if (count == 0) return {};
+  const pugi::xml_node array = piece.child("Points").child("DataArray");
+  if (!array) throw InputError(context.source, "Piece has no <Points> DataArray");
+  const std::vector<double> xyz = readDataArray(array, count, 3, context);
+  std::vector<glm::dvec3> points(count);
+  for (std::size_t n = 0; n < count; ++n) points[n] = {xyz[3 * n], xyz[3 * n + 1], xyz[3 * n + 2]};
+  return points;
+}
+
+// vmtk's MaximumInscribedSphereRadius, else a "Radius" array; zeros (unknown) without either.
+std::vector<double> readRadii(const pugi::xml_node& piece, std::size_t count,
+                              const ArrayContext& context) {
+  const pugi::xml_node pointData = piece.child("PointData");
+  pugi::xml_node array = namedArray(pointData, "MaximumInscribedSphereRadius");
+  if (!array) array = namedArray(pointData, "Radius");
+  if (!array || count == 0) return std::vector<double>(count, 0.0);
+  return readDataArray(array, count, 1, context);
+}
+
+// Line cells as ranges [begin, end) of connectivity; checks the end offsets.
+std::vector<std::size_t> readLineEnds(const pugi::xml_node& lines, std::size_t cells,
+                                      const ArrayContext& context) {
+  const pugi::xml_node array = namedArray(lines, "offsets");
+  if (!array) throw InputError(context.source, "<Lines> has no \"offsets\" DataArray");
+  const std::vector<double> offsets = readDataArray(array, cells, 1, context);
+  std::vector<std::size_t> ends(cells);
+  double previous = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (!(offsets[c] >= previous) || offsets[c] != std::floor(offsets[c]) || offsets[c] > 1e15) {
+      throw InputError(context.source, "Lines offsets: bad offset " +
+                                           formatNumber(offsets[c]) + " of cell " +
+                                           std::to_string(c));
+    }
+    ends[c] = std::size_t(offsets[c]);
+    previous = offsets[c];
+  }
+  return ends;
+}
+
+void readPiece(const pugi::xml_node& piece, const ArrayContext& context, Centerlines& centerlines) {
+  const std::size_t pointCount = pieceCount(piece, "NumberOfPoints", context.source);
+  const std::size_t cells = pieceCount(piece, "NumberOfLines", context.source);
+  const std::vector<glm::dvec3> points = readPoints(piece, pointCount, context);
+  const std::vector<double> radii = readRadii(piece, pointCount, context);
+  if (cells == 0) return;
+
+  const pugi::xml_node lines = piece.child("Lines");
+  if (!lines) throw InputError(context.source, "Piece has NumberOfLines but no <Lines>");
+  const std::vector<std::size_t> ends = readLineEnds(lines, cells, context);
+  const pugi::xml_node connectivityArray = namedArray(lines, "connectivity");
+  if (!connectivityArray) throw InputError(context.source, "<Lines> has no \"connectivity\" DataArray");
+  const std::vector<double> connectivity =
+      readDataArray(connectivityArray, ends.back(), 1, context);
+
+  std::size_t begin = 0;
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    CenterlinePath& path = centerlines.paths.emplace_back();
+    path.name = std::to_string(centerlines.paths.size() - 1);
+    for (std::size_t n = begin; n < ends[cell]; ++n) {
+      const double index = connectivity[n];
+      if (!(index >= 0 && index < double(pointCount)) || index != std::floor(index)) {
+        throw InputError(context.source, "Lines connectivity: point index " +
+                                             formatNumber(index) + " out of range (" +
+                                             std::to_string(pointCount) + " points)");
+      }
+      path.points.push_back({points[std::size_t(index)], radii[std::size_t(index)]});
+    }
+    begin = ends[cell];
+  }
+}
+
+}  // namespace
+
+Centerlines parseCenterlinesVtp(const std::string& bytes, const fs::path& source,
+                                const CenterlineLoadOptions& options) {
+  const SplitFile split = splitAppendedData(bytes, source);
+  pugi::xml_document document;
+  const pugi::xml_parse_result parsed = document.load_buffer(split.xml.data(), split.xml.size());
+  if (!parsed) {
+    throw InputError(source, std::string("bad XML: ") + parsed.description() + " at byte " +
+                                 std::to_string(parsed.offset));
+  }
+  const pugi::xml_node root = document.child("VTKFile");
+  if (!root) throw InputError(source, "not a VTK XML file (no <VTKFile> element)");
+  const std::string type = attribute(root, "type");
+  if (type != "PolyData") throw InputError(source, "VTK file of type '" + type + "', not PolyData");
+  const pugi::xml_node polyData = root.child("PolyData");
+  if (!polyData) throw InputError(source, "no <PolyData> element");
+
+  const Encoding encoding = fileEncoding(root, source);
+  const AppendedData appended = appendedData(root, split, source);
+  const ArrayContext context{encoding, appended, source};
+  Centerlines centerlines;
+  centerlines.source = source.string();
+  for (const pugi::xml_node piece : polyData.children("Piece")) readPiece(piece, context, centerlines);
+  checkLoadedCenterlines(centerlines, source, options);
+  return centerlines;
+}
+
+Centerlines readCenterlinesVtp(const fs::path& file, const CenterlineLoadOptions& options) {
+  return parseCenterlinesVtp(readCenterlineFileBytes(file), file, options);
+}
+
+}  // namespace angio
