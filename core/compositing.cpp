@@ -15,6 +15,15 @@ SampleTable correctedTable(const TfTable& table, double osd) {
   return corrected;
 }
 
+FrameTables frameTables(const RegionTables& tables, double osd) {
+  FrameTables frame;
+  if (tables.regions && tables.focus) frame.focus = correctedTable(*tables.focus, osd), frame.hasFocus = true;
+  if (tables.regions && tables.context)
+    frame.context = correctedTable(*tables.context, osd), frame.hasContext = true;
+  if (tables.outside) frame.outside = correctedTable(*tables.outside, osd), frame.hasOutside = true;
+  return frame;
+}
+
 glm::vec4 mipPixel(float maximumDensity, const MipWindow& window) {
   const double low = window.level - window.window / 2;
   const float grey = float(std::clamp((huOfDensity(maximumDensity) - low) / window.window, 0.0, 1.0));

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/region_intervals.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "core/view_geometry.h"
@@ -20,6 +21,54 @@ float opacityAtDistance(float opacityPerVoxel, double osd);
 // The TF table with opacities corrected for the sample distance, computed once per frame.
 using SampleTable = std::array<glm::vec4, kDensityLevels>;
 SampleTable correctedTable(const TfTable& table, double osd);
+
+// The TFs of a frame by region (VesselGlyph, thesis ch. 5): focus and context of each ray from
+// RayRegions, everything else "outside". Plain DVR is the case without regions, where every sample
+// is outside and the outside TF is the TF: VG-DVR generalises DVR.
+struct RegionTables {
+  const RayRegions* regions = nullptr;  // none: every sample is outside
+  const TfTable* focus = nullptr;
+  const TfTable* context = nullptr;
+  const TfTable* outside = nullptr;     // none: the outside is clipped (not rendered)
+};
+
+inline RegionTables singleTable(const TfTable& table) { return {nullptr, nullptr, nullptr, &table}; }
+
+// The region TFs with opacities corrected for the sample distance, once per frame.
+struct FrameTables {
+  SampleTable focus{}, context{}, outside{};
+  bool hasFocus = false, hasContext = false, hasOutside = false;
+
+  // The table for a region, or nullptr where the region is not rendered.
+  const SampleTable* of(Region region) const {
+    switch (region) {
+      case Region::focus: return hasFocus ? &focus : nullptr;
+      case Region::context: return hasContext ? &context : nullptr;
+      case Region::outside: return hasOutside ? &outside : nullptr;
+    }
+    return nullptr;
+  }
+};
+FrameTables frameTables(const RegionTables& tables, double osd);
+
+// Walks one ray's sorted intervals as the sample depth grows: amortised O(1) per sample.
+class RegionCursor {
+ public:
+  RegionCursor(const RayRegions* regions, int x, int y) {
+    if (!regions || regions->rayBegin.empty()) return;
+    const std::size_t n = std::size_t(y) * regions->width + x;
+    next_ = regions->intervals.data() + regions->rayBegin[n];
+    end_ = regions->intervals.data() + regions->rayBegin[n + 1];
+  }
+  Region at(double t) {
+    while (next_ != end_ && t >= double(next_->end)) ++next_;
+    return next_ != end_ && t >= double(next_->begin) ? next_->region : Region::outside;
+  }
+
+ private:
+  const RegionInterval* next_ = nullptr;
+  const RegionInterval* end_ = nullptr;
+};
 
 // Interpolated density (>= 0) -> table entry: the nearest of the 4096 entries.
 inline int tableIndex(float density) {

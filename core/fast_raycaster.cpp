@@ -19,8 +19,9 @@ struct Frame {
   const std::vector<std::uint8_t>& visibleTiles;
   const RenderParams& params;
   const FastRenderOptions& options;
+  const RayRegions* regions;
   ViewGeometry view;
-  SampleTable table;
+  FrameTables tables;
   RayTemplates templates;
 };
 
@@ -66,18 +67,20 @@ bool maySkip(const Frame& f, std::uint8_t visible, std::uint16_t maxDensity, flo
 
 // The samples of one tile run, composited into the ray (DVR) or into its maximum (MIP).
 // Returns true when the ray terminated early.
-bool sampleRun(const Frame& f, const RaySamples& positions, const TileRun& run, RayAccumulator& ray,
-               float& mipMaximum) {
+bool sampleRun(const Frame& f, const RaySamples& positions, const TileRun& run, RegionCursor& regions,
+               RayAccumulator& ray, float& mipMaximum) {
   const Filter filter = f.params.sampling.filter;
   const bool mip = f.params.compositing == Compositing::mip;
   for (long k = run.firstSample; k < run.firstSample + run.count; ++k) {
+    const SampleTable* table = f.tables.of(regions.at(double(k) * f.view.sampleMm));
+    if (!table) continue;  // a clipped region
     const glm::dvec3 q = positions.at(k);
     const float density = sampleDensity(f.volume, q, filter);
     if (mip) {
       mipMaximum = std::max(mipMaximum, density);
       continue;
     }
-    const glm::vec4 rgba = f.table[tableIndex(density)];
+    const glm::vec4 rgba = (*table)[tableIndex(density)];
     if (rgba.a <= 0.f) continue;
     ray.add(rgba, shadingFactor(f.params.shading, sampleGradient(f.volume, q, filter),
                                 glm::vec3(f.view.viewDir)));
@@ -86,11 +89,12 @@ bool sampleRun(const Frame& f, const RaySamples& positions, const TileRun& run, 
   return false;
 }
 
-glm::vec4 castRay(const Frame& f, const RowTiles& row, const glm::dvec3& origin, int x,
+glm::vec4 castRay(const Frame& f, const RowTiles& row, const glm::dvec3& origin, int x, int y,
                   std::uint64_t& samples) {
   const std::uint32_t firstGroup = f.templates.columnBegin[x], endGroup = f.templates.columnBegin[x + 1];
   if (firstGroup == endGroup) return glm::vec4(0.f);  // the ray misses the volume
   const RaySamples positions(f.volume, f.view, origin);
+  RegionCursor regions(f.regions, x, y);
   RayAccumulator ray;
   float mipMaximum = 0.f;
   for (std::uint32_t g = firstGroup; g < endGroup; ++g) {
@@ -100,7 +104,7 @@ glm::vec4 castRay(const Frame& f, const RowTiles& row, const glm::dvec3& origin,
       const TileRun& run = f.templates.runs[r];
       if (maySkip(f, row.visible[run.tile], row.maxDensity[run.tile], mipMaximum)) continue;
       samples += run.count;
-      if (sampleRun(f, positions, run, ray, mipMaximum)) return ray.pixel();
+      if (sampleRun(f, positions, run, regions, ray, mipMaximum)) return ray.pixel();
     }
   }
   return f.params.compositing == Compositing::mip ? mipPixel(mipMaximum, f.params.mip) : ray.pixel();
@@ -112,7 +116,7 @@ void renderRow(const Frame& f, int y, RowTiles& row, Image& image, std::uint64_t
   if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) return;
   classifyRow(f, axisMm / f.volume.spacing[f.view.axis], row);
   for (int x = 0; x < f.view.width; ++x)
-    image.at(x, y) = castRay(f, row, f.view.rayOrigin(x, y), x, samples);
+    image.at(x, y) = castRay(f, row, f.view.rayOrigin(x, y), x, y, samples);
 }
 
 }  // namespace
@@ -121,9 +125,27 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
                  const std::vector<std::uint8_t>& visibleTiles, const TfTable& table,
                  const RenderParams& params, const FastRenderOptions& options,
                  FastRenderStats* stats) {
+  return renderFast(volume, tiles, visibleTiles, singleTable(table), params, options, stats);
+}
+
+std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const RegionTables& tables) {
+  std::vector<std::uint8_t> visible(tiles.minDensity.size(), 0);
+  for (const TfTable* table : {tables.regions ? tables.focus : nullptr,
+                               tables.regions ? tables.context : nullptr, tables.outside}) {
+    if (!table) continue;
+    const std::vector<std::uint8_t> byTable = classifyTiles(tiles, *table);
+    for (std::size_t n = 0; n < visible.size(); ++n) visible[n] |= byTable[n];
+  }
+  return visible;
+}
+
+Image renderFast(const Volume& volume, const SliceTiles& tiles,
+                 const std::vector<std::uint8_t>& visibleTiles, const RegionTables& tables,
+                 const RenderParams& params, const FastRenderOptions& options,
+                 FastRenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  Frame f{volume, tiles, visibleTiles, params, options, makeViewGeometry(volume, params),
-          correctedTable(table, params.sampling.osd), {}};
+  Frame f{volume, tiles, visibleTiles, params, options, tables.regions, makeViewGeometry(volume, params),
+          frameTables(tables, params.sampling.osd), {}};
   f.templates = buildRayTemplates(volume, f.view, tiles);
   const double templateMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/compositing.h"
 #include "core/image.h"
 #include "core/render_params.h"
 #include "core/slice_tiles.h"
@@ -22,7 +23,7 @@ struct FastRenderOptions {
 };
 
 struct FastRenderStats {
-  std::uint64_t samples = 0;     // density reconstructions evaluated
+  std::uint64_t samples = 0;     // samples in tiles not skipped (clipped regions included)
   double templateMs = 0;         // building the ray templates for this view
   bool cancelled = false;
 };
@@ -32,5 +33,13 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
                  const std::vector<std::uint8_t>& visibleTiles, const TfTable& table,
                  const RenderParams& params, const FastRenderOptions& options = {},
                  FastRenderStats* stats = nullptr);
+
+// VesselGlyph: a TF per region of each ray (core/compositing.h). `visibleTiles` must be
+// classifyTiles(tiles, tables): a tile is visible if any region's TF shows a density in it.
+Image renderFast(const Volume& volume, const SliceTiles& tiles,
+                 const std::vector<std::uint8_t>& visibleTiles, const RegionTables& tables,
+                 const RenderParams& params, const FastRenderOptions& options = {},
+                 FastRenderStats* stats = nullptr);
+std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const RegionTables& tables);
 
 }  // namespace angio

@@ -13,14 +13,17 @@ namespace angio {
 namespace {
 
 glm::vec4 compositeDvr(const Volume& volume, const ViewGeometry& view, const glm::dvec3& origin,
-                       SampleRange samples, const SampleTable& table, const RenderParams& params) {
+                       SampleRange samples, const FrameTables& tables, RegionCursor regions,
+                       const RenderParams& params) {
   const Filter filter = params.sampling.filter;
   const glm::vec3 viewDir(view.viewDir);
   const RaySamples positions(volume, view, origin);
   RayAccumulator ray;
   for (long k = samples.first; k <= samples.last; ++k) {
+    const SampleTable* table = tables.of(regions.at(double(k) * view.sampleMm));
+    if (!table) continue;  // a clipped region
     const glm::dvec3 q = positions.at(k);
-    const glm::vec4 rgba = table[tableIndex(sampleDensity(volume, q, filter))];
+    const glm::vec4 rgba = (*table)[tableIndex(sampleDensity(volume, q, filter))];
     if (rgba.a <= 0.f) continue;  // transparent: contributes nothing, shading not needed
     ray.add(rgba, shadingFactor(params.shading, sampleGradient(volume, q, filter), viewDir));
     if (ray.opacity >= params.sampling.ert) break;
@@ -28,13 +31,16 @@ glm::vec4 compositeDvr(const Volume& volume, const ViewGeometry& view, const glm
   return ray.pixel();
 }
 
+// MIP ignores the TFs but not the clipping: a clipped region contributes no maximum.
 glm::vec4 compositeMip(const Volume& volume, const ViewGeometry& view, const glm::dvec3& origin,
-                       SampleRange samples, const RenderParams& params) {
+                       SampleRange samples, const FrameTables& tables, RegionCursor regions,
+                       const RenderParams& params) {
   if (samples.empty()) return glm::vec4(0.f);
   const RaySamples positions(volume, view, origin);
   float maximum = 0.f;
   for (long k = samples.first; k <= samples.last; ++k)
-    maximum = std::max(maximum, sampleDensity(volume, positions.at(k), params.sampling.filter));
+    if (tables.of(regions.at(double(k) * view.sampleMm)))
+      maximum = std::max(maximum, sampleDensity(volume, positions.at(k), params.sampling.filter));
   return mipPixel(maximum, params.mip);
 }
 
@@ -42,18 +48,24 @@ glm::vec4 compositeMip(const Volume& volume, const ViewGeometry& view, const glm
 
 Image renderReference(const Volume& volume, const TfTable& table, const RenderParams& params,
                       const std::function<void(double)>& progress) {
+  return renderReference(volume, singleTable(table), params, progress);
+}
+
+Image renderReference(const Volume& volume, const RegionTables& regionTables, const RenderParams& params,
+                      const std::function<void(double)>& progress) {
   const ViewGeometry view = makeViewGeometry(volume, params);
   Image image = makeImage(view.width, view.height);
-  const SampleTable corrected = correctedTable(table, params.sampling.osd);
+  const FrameTables tables = frameTables(regionTables, params.sampling.osd);
   std::atomic<int> rowsDone{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < view.width; ++x) {
         const glm::dvec3 origin = view.rayOrigin(x, y);
         const SampleRange samples = sampleRange(view, origin);
+        const RegionCursor regions(regionTables.regions, x, y);
         image.at(x, y) = params.compositing == Compositing::mip
-                             ? compositeMip(volume, view, origin, samples, params)
-                             : compositeDvr(volume, view, origin, samples, corrected, params);
+                             ? compositeMip(volume, view, origin, samples, tables, regions, params)
+                             : compositeDvr(volume, view, origin, samples, tables, regions, params);
       }
     const int done = rowsDone += int(rows.size());
     if (progress) progress(double(done) / view.height);

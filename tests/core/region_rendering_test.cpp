@@ -1,0 +1,131 @@
+// Rendering with a TF per ray region (VesselGlyph's focus / context / outside): analytic cases
+// and the fast raycaster against the reference with regions.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/fast_raycaster.h"
+#include "core/phantom.h"
+#include "core/reference_raycaster.h"
+#include "core/view_geometry.h"
+
+namespace angio {
+namespace {
+
+TfTable constantTable(double opacity, glm::vec3 colour) {
+  TransferFunction tf;
+  tf.points = {{-1024, colour, 0}, {-901, colour, 0}, {-900, colour, opacity}, {3071, colour, opacity}};
+  return buildTable(tf);
+}
+
+RenderParams plain() {
+  RenderParams p;
+  p.sampling = {1.0, 1.0, Filter::nearest, 1.0};
+  p.shading.enabled = false;
+  return p;
+}
+
+// Every ray gets the same intervals.
+RayRegions sameForEveryRay(const ViewGeometry& view, std::vector<RegionInterval> intervals) {
+  RayRegions regions;
+  regions.width = view.width;
+  regions.height = view.height;
+  for (int n = 0; n < view.width * view.height; ++n) {
+    regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+    regions.intervals.insert(regions.intervals.end(), intervals.begin(), intervals.end());
+  }
+  regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+  return regions;
+}
+
+TEST(RegionRendering, OnlyTheFocusIntervalIsRenderedWhenTheOutsideIsClipped) {
+  // 17^3 voxels of 1 mm, all 0 HU (visible under the constant TFs). Theta = 0: rays along +j
+  // through the centre, samples at t = -8 .. 8 mm. Focus [-2, 2) holds 4 samples: t = -2..1.
+  const Volume volume = makeVolume({17, 17, 17}, {1, 1, 1}, encodeVoxel(0));
+  const RenderParams p = plain();
+  const ViewGeometry view = makeViewGeometry(volume, p);
+  const RayRegions regions = sameForEveryRay(view, {{-2.f, 2.f, Region::focus}});
+  const TfTable focus = constantTable(0.1, {1, 0, 0});
+  const Image image = renderReference(volume, RegionTables{&regions, &focus, nullptr, nullptr}, p);
+  const glm::vec4 centre = image.at(view.width / 2, view.height / 2);
+  EXPECT_NEAR(centre.a, 1 - std::pow(0.9, 4), 1e-5);
+  EXPECT_NEAR(centre.r, centre.a, 1e-6);
+  EXPECT_EQ(centre.g, 0.f);
+}
+
+TEST(RegionRendering, EachRegionUsesItsOwnTf) {
+  // Context [-6, -2) (4 samples, green, a = 0.2) in front of focus [-2, 2) (4 samples, red,
+  // a = 0.1); the rest outside (blue, a = 0.05: 9 samples: -8, -7 and 2..8).
+  const Volume volume = makeVolume({17, 17, 17}, {1, 1, 1}, encodeVoxel(0));
+  const RenderParams p = plain();
+  const ViewGeometry view = makeViewGeometry(volume, p);
+  const RayRegions regions =
+      sameForEveryRay(view, {{-6.f, -2.f, Region::context}, {-2.f, 2.f, Region::focus}});
+  const TfTable focus = constantTable(0.1, {1, 0, 0});
+  const TfTable context = constantTable(0.2, {0, 1, 0});
+  const TfTable outside = constantTable(0.05, {0, 0, 1});
+  const Image image = renderReference(volume, RegionTables{&regions, &focus, &context, &outside}, p);
+  const glm::vec4 c = image.at(view.width / 2, view.height / 2);
+  // Front to back: 2 outside, 4 context, 4 focus, 7 outside.
+  double T = 1, r = 0, g = 0, b = 0;
+  auto add = [&](int count, double alpha, double& channel) {
+    for (int n = 0; n < count; ++n) channel += T * alpha, T *= 1 - alpha;
+  };
+  add(2, 0.05, b);
+  add(4, 0.2, g);
+  add(4, 0.1, r);
+  add(7, 0.05, b);
+  EXPECT_NEAR(c.r, r, 1e-5);
+  EXPECT_NEAR(c.g, g, 1e-5);
+  EXPECT_NEAR(c.b, b, 1e-5);
+  EXPECT_NEAR(c.a, 1 - T, 1e-5);
+}
+
+TEST(RegionRendering, FastMatchesReferenceWithRegions) {
+  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  TransferFunction vessels;
+  vessels.points = {{-1024, {0, 0, 0}, 0}, {150, {1, 0.2f, 0.1f}, 0}, {300, {1, 0.4f, 0.3f}, 0.6},
+                    {3071, {1, 1, 1}, 0.8}};
+  TransferFunction context = vessels;
+  context.points[2].opacity = 0.05;
+  context.points[3].opacity = 0.1;
+  const TfTable focusTable = buildTable(vessels), contextTable = buildTable(context);
+  for (Axis axis : {Axis::k, Axis::j})
+    for (double angle : {20.0, 110.0}) {
+      RenderParams p;
+      p.axis = axis;
+      p.angleDeg = angle;
+      p.sampling = qualitySampling(Quality::medium);
+      p.sampling.ert = 1.0;
+      const ViewGeometry view = makeViewGeometry(volume, p);
+      // Per-pixel intervals that vary across the image: focus around depth 0 with a width that
+      // depends on x, context behind it.
+      RayRegions regions;
+      regions.width = view.width;
+      regions.height = view.height;
+      for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x) {
+          regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+          const float half = 5.f + float((x * 7 + y * 3) % 40);
+          regions.intervals.push_back({-half, half, Region::focus});
+          regions.intervals.push_back({half, half + 60.f, Region::context});
+        }
+      regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+      const RegionTables tables{&regions, &focusTable, &contextTable, nullptr};
+      const SliceTiles tiles = buildSliceTiles(volume, axis);
+      const Image reference = renderReference(volume, tables, p);
+      const Image fast = renderFast(volume, tiles, classifyTiles(tiles, tables), tables, p);
+      ASSERT_EQ(reference.pixels.size(), fast.pixels.size());
+      float worst = 0.f, brightest = 0.f;
+      for (std::size_t n = 0; n < fast.pixels.size(); ++n)
+        for (int c = 0; c < 4; ++c) {
+          worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
+          brightest = std::max(brightest, reference.pixels[n][c]);
+        }
+      EXPECT_LE(worst, 1.f / 255.f) << "axis " << toString(axis) << " angle " << angle;
+      EXPECT_GT(brightest, 0.2f);  // the regions render something
+    }
+}
+
+}  // namespace
+}  // namespace angio
