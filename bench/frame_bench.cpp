@@ -80,7 +80,7 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
   start = Clock::now();
   const std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
   report.classifyMs = msSince(start);
-  report.accelerationMiB = (tiles.minDensity.size() * 4 + visible.size()) / 1048576.0;
+  report.accelerationMiB = (tiles.minDensity.size() * 8 + visible.size()) / 1048576.0;  // 4 uint16 ranges + bits
 
   auto fastFrame = [&](FastRenderOptions options) {
     return [&, options](const RenderParams& p) {

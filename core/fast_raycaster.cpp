@@ -35,16 +35,19 @@ struct RowTiles {
 };
 
 void classifyRow(const Frame& f, double qa, RowTiles& row) {
-  const SliceSpan span = slicesReadAt(f.tiles, qa);
+  const SliceSpan span = slicesReadAt(f.tiles, qa, f.params.sampling.filter);
   const std::size_t perSlice = f.tiles.tilesPerSlice();
   const bool mip = f.params.compositing == Compositing::mip;
   row.maxDensity.assign(perSlice, 0);
   row.visible.assign(perSlice, 0);
+  const bool wide = f.params.sampling.filter == Filter::mean;
+  const auto& sliceMax = wide ? f.tiles.wideMaxDensity : f.tiles.maxDensity;
+  const std::uint8_t bit = visibilityBit(f.params.sampling.filter);
   for (int s = span.first; s <= span.last; ++s) {
     const std::size_t base = perSlice * s;
     for (std::size_t t = 0; t < perSlice; ++t) {
-      if (mip) row.maxDensity[t] = std::max(row.maxDensity[t], f.tiles.maxDensity[base + t]);
-      else row.visible[t] |= f.visibleTiles[base + t];
+      if (mip) row.maxDensity[t] = std::max(row.maxDensity[t], sliceMax[base + t]);
+      else row.visible[t] |= f.visibleTiles[base + t] & bit;
     }
   }
   const std::size_t groups = std::size_t(f.tiles.groupsB()) * f.tiles.groupsC();

@@ -11,9 +11,7 @@ namespace angio {
 
 namespace {
 
-int tileOf(double q, int n) {
-  return int(std::floor(std::clamp(q, 0.0, double(n - 1)))) / kTileSize;
-}
+int tileOf(double q, int n) { return cellBase(q, n) / kTileSize; }
 
 std::vector<TileRun> columnRuns(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles,
                                 int x) {

@@ -3,8 +3,10 @@
 // with parallel projection every ray stays in the plane of one image row, perpendicular to the
 // rotation axis a, so a row only ever reads the few slices around its own. Each slice is cut into
 // kTileSize^2 tiles with the min/max density of every voxel a sample attributed to the tile can
-// read: a sample whose floor(q) lies in the tile reads voxels floor(q) - 1 .. floor(q) + 2 (the
-// mean filter's reach), so the range is taken over the tile grown by 1 voxel before, 2 after.
+// read. A sample belongs to the tile of its cell base f = min(floor(q), n - 2) (core/
+// volume_sampling.h cellAt); nearest and trilinear read voxels f .. f + 1, so a tile's range is
+// taken over the tile grown by one voxel after. The mean filter reads f - 1 .. f + 2, so a
+// second range is kept over the tile grown by one more voxel on each side.
 #include <cstdint>
 #include <vector>
 
@@ -22,8 +24,10 @@ struct SliceTiles {
   int axisB = 0, axisC = 1;  // the in-plane axes (b, c) of the rendering model
   int slices = 0;            // n_a
   int tilesB = 0, tilesC = 0;
-  std::vector<std::uint16_t> minDensity;  // [slice][tileC][tileB]
+  std::vector<std::uint16_t> minDensity;  // [slice][tileC][tileB], voxels the tile's cells read
   std::vector<std::uint16_t> maxDensity;
+  std::vector<std::uint16_t> wideMinDensity;  // the same grown by one voxel (mean filter)
+  std::vector<std::uint16_t> wideMaxDensity;
 
   int tilesPerSlice() const { return tilesB * tilesC; }
   int groupsB() const { return (tilesB + kGroupTiles - 1) / kGroupTiles; }
@@ -35,15 +39,26 @@ struct SliceTiles {
 
 SliceTiles buildSliceTiles(const Volume& volume, Axis axis);
 
-// The slices a row at axis coordinate qa (voxel units) reads: floor(qa) - 1 .. floor(qa) + 2.
+// The cell base along one axis of n voxels: min(floor(clamp(q)), n - 2), as cellAt computes it.
+int cellBase(double q, int n);
+
+// The slices a row at axis coordinate qa (voxel units) reads with the filter: f .. f + 1 for
+// nearest and trilinear, f - 1 .. f + 2 for mean (f = cellBase(qa)).
 struct SliceSpan {
   int first = 0;
   int last = -1;
 };
-SliceSpan slicesReadAt(const SliceTiles& tiles, double qa);
+SliceSpan slicesReadAt(const SliceTiles& tiles, double qa, Filter filter);
 
-// Per TF: which tiles of which slices hold a visible density (one byte per tile). Re-classifying
-// is a table lookup per tile, no voxel is read again.
+// Per TF: which tiles of which slices hold a visible density, one byte per tile with two bits:
+// kCellsVisible for the tile's own range, kWideVisible for the grown one. Re-classifying is a table
+// lookup per tile, no voxel is read again.
+constexpr std::uint8_t kCellsVisible = 1;
+constexpr std::uint8_t kWideVisible = 2;
+// The bit that matters for a filter's reach.
+constexpr std::uint8_t visibilityBit(Filter filter) {
+  return filter == Filter::mean ? kWideVisible : kCellsVisible;
+}
 std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const TfTable& table);
 
 }  // namespace angio
