@@ -1,0 +1,42 @@
+#pragma once
+// Showing a CPR (issue 6, item 4): grey through a window/level, or coloured through a transfer
+// function so it harmonises with the DVR (thesis sec. 5.2.2), with the centerline marked and an
+// arc-length ruler. Pixels the CPR does not sample are transparent black (A = 0), sampled ones
+// opaque, so a projected CPR can be laid over the DVR image it registers with.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/transfer_function.h"
+#include "vessel/cpr_layout.h"
+
+namespace angio {
+
+struct WindowLevel {
+  double window = 800;  // HU
+  double level = 250;   // HU
+};
+
+// Presets (calibrated HU). "cta-lumen": contrast-filled lumen (~250-500 HU) mid-grey to white
+// against soft tissue; "calcium": wide enough to tell calcified plaque (~700-1500+ HU) from the
+// lumen beside it.
+constexpr WindowLevel kCtaLumenWindow{800, 250};
+constexpr WindowLevel kCalciumWindow{1800, 700};
+std::optional<WindowLevel> windowPreset(const std::string& name);  // "cta-lumen", "calcium"
+
+struct CprDisplay {
+  WindowLevel windowLevel = kCtaLumenWindow;
+  std::optional<TransferFunction> tf;  // if set: TF colour (rgb at the pixel's HU) instead of grey
+  bool centerlineMarker = true;
+  bool ruler = true;
+  double rulerStepMm = 10;  // a tick every step, a label every 5 steps
+};
+
+// Grey value of a HU under a window/level: clamp((HU - (level - window / 2)) / window, 0, 1).
+float windowGrey(float hu, WindowLevel windowLevel);
+
+// hu: row-major layout.width x layout.height, NaN = not sampled (resampleCpr's output).
+Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const CprDisplay& display);
+
+}  // namespace angio
