@@ -1,4 +1,5 @@
 #include "bench/frame_bench.h"
+#include "bench/timing.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,17 +20,7 @@ namespace angio {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
+using Clock = BenchClock;
 
 struct Level {
   std::string name;
