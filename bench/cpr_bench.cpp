@@ -11,12 +11,6 @@
 
 namespace angio {
 
-namespace {
-
-using Clock = BenchClock;
-
-}  // namespace
-
 CenterlinePath truncatePath(const CenterlinePath& path, double lengthMm) {
   const std::vector<double> arc = arcLengthsMm(path);
   if (lengthMm <= 0 || arc.empty() || arc.back() <= lengthMm) return path;
@@ -45,7 +39,7 @@ CprBenchReport runCprBench(const Volume& volume, const CenterlinePath& path,
   std::vector<double> total, layoutOnly;
   CprLayout layout;
   for (int run = 0; run < std::max(settings.runs, 1); ++run) {
-    const auto start = Clock::now();
+    const auto start = BenchClock::now();
     layout = layoutCpr(paths, view, cprSettings);
     layoutOnly.push_back(msSince(start));
     const std::vector<float> hu = resampleCpr(volume, layout, settings.resampler);
