@@ -32,6 +32,27 @@ struct RenderOptions {
 };
 int runRender(const RenderOptions& options);
 
+// `angioray cpr`: curved planar reformation of centerline paths (vessel/cpr.h).
+struct CprOptions {
+  std::string volume;
+  std::string centerlines;
+  std::string out;
+  std::string path = "all";  // "all" or one path index
+  std::string mode = "straightened";
+  std::string axis = "k";
+  double angleDeg = 0;
+  std::optional<double> widthMm;
+  std::optional<double> pixelMm;  // default: the voxel unit (isd 1)
+  std::optional<double> window, level;
+  std::string windowPreset;  // "cta-lumen" | "calcium"
+  std::string tf;            // colour through this TF instead of grey
+  bool overlay = true;       // centerline marker and arc-length ruler
+  std::string resampler = "trilinear";
+  int benchRuns = 0;              // > 0: also time the CPR this many times
+  double benchLengthMm = 400;     // ... of each path cut to this length
+};
+int runCpr(const CprOptions& options);
+
 struct PhantomOptionsCli {
   std::string out;
   std::string size = "512x512x1200";
@@ -61,5 +82,26 @@ struct DemoOptions {
   std::string size = "512x512x1200";
 };
 int runDemo(const DemoOptions& options);
+
+// `angioray gui`: the workstation window, or its headless twin (OSMesa, scripted input,
+// screenshots). No volume = the phantom at phantomSize.
+struct GuiOptions {
+  std::string volume;
+  std::string phantomSize = "256x256x600";
+  std::string tf = "cta-vessels-bone";
+  std::string axis = "k";
+  double angleDeg = 0;
+  bool mip = false;
+  std::string size = "1280x800";  // window pixels
+  bool headless = false;
+  std::string script;      // headless: JSON list of input steps (gui/app_script.h)
+  std::string screenshot;  // written at the end (window: when it closes)
+  std::string stateOut;    // the app's state and runtime numbers as JSON, at the end
+  double timeoutSeconds = 300;   // headless: for each wait for a quality level
+  double quitAfterSeconds = 0;   // window: close by itself after this long (smoke tests)
+};
+int runGui(const GuiOptions& options);
+// A display is there and GLFW can open windows on it.
+bool canOpenWindow();
 
 }  // namespace angio

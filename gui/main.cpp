@@ -40,6 +40,43 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
   cmd->add_flag("--reference", o.reference, "Use the plain reference raycaster (same image, slower)");
 }
 
+void addCpr(CLI::App& app, angio::CprOptions& o) {
+  auto* cmd = app.add_subcommand("cpr", "Curved planar reformation of centerline paths to an image");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder")->required();
+  cmd->add_option("--centerlines", o.centerlines, "Centerlines (.vtp, .mrk.json, .csv)")->required();
+  cmd->add_option("--out,-o", o.out, "Output image (.png 8-bit, .tif 16-bit, .exr float)")->required();
+  cmd->add_option("--path", o.path, "Path index, or all (side by side, sharing the trunk)")
+      ->capture_default_str();
+  cmd->add_option("--mode", o.mode, "CPR projection")
+      ->check(CLI::IsMember({"projected", "stretched", "straightened"}))->capture_default_str();
+  cmd->add_option("--axis", o.axis, "View rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o.angleDeg, "View angle in degrees (turns the vector of interest)")
+      ->capture_default_str();
+  cmd->add_option("--width", o.widthMm, "Lateral extent in mm (default 60): straightened: width per "
+                                        "path; stretched: width / 2 beside the centerline; projected: "
+                                        "band around it (default: whole rows)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--pixel", o.pixelMm, "Pixel size in mm (default: the voxel unit)")
+      ->check(CLI::PositiveNumber);
+  auto* window = cmd->add_option("--window", o.window, "Grey window width (HU)")
+                     ->check(CLI::PositiveNumber);
+  auto* level = cmd->add_option("--level", o.level, "Grey window centre (HU)");
+  window->needs(level);
+  level->needs(window);
+  auto* preset = cmd->add_option("--window-preset", o.windowPreset, "Grey window preset")
+                     ->check(CLI::IsMember({"cta-lumen", "calcium"}));
+  auto* tf = cmd->add_option("--tf", o.tf, "Colour through this TF preset or file instead of grey");
+  tf->excludes(window)->excludes(level)->excludes(preset);
+  cmd->add_flag("!--no-overlay", o.overlay, "Leave out the centerline marker and the ruler");
+  cmd->add_option("--resampler", o.resampler, "trilinear (exact) or opencv-remap (comparison)")
+      ->check(CLI::IsMember({"trilinear", "opencv-remap"}))->capture_default_str();
+  cmd->add_option("--bench", o.benchRuns, "Also time the CPR this many times (median, min, max)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--bench-length", o.benchLengthMm, "Cut each path to this length for --bench (mm)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+}
+
 void addPhantom(CLI::App& app, angio::PhantomOptionsCli& o) {
   auto* cmd = app.add_subcommand("phantom", "Generate the peripheral run-off CTA phantom");
   cmd->add_option("OUT", o.out, "Output volume (.mha, .nrrd, .nii.gz)")->required();
@@ -70,6 +107,31 @@ void addDemo(CLI::App& app, angio::DemoOptions& o) {
   cmd->add_option("--size", o.size, "Phantom voxels as IxJxK")->capture_default_str();
 }
 
+void addGui(CLI::App& app, angio::GuiOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "gui", "The workstation: rotate, tune the transfer function, progressive quality");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder (default: the phantom)");
+  cmd->add_option("--phantom-size", o.phantomSize,
+                  "Phantom voxels as IxJxK when no VOLUME (modest by default, for a quick start)")
+      ->capture_default_str();
+  cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
+  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o.angleDeg, "Start angle in degrees")->capture_default_str();
+  cmd->add_flag("--mip", o.mip, "Start in MIP mode");
+  cmd->add_option("--size", o.size, "Window size WxH in pixels")->capture_default_str();
+  cmd->add_flag("--headless", o.headless, "No window: OSMesa software rendering of the same UI");
+  cmd->add_option("--script", o.script, "Headless: JSON list of input steps (move, click, drag, "
+                                         "wheel, key, wait_ms, wait_level, screenshot, state)");
+  cmd->add_option("--screenshot", o.screenshot,
+                  "Screenshot at the end (headless without --script: once the high image is shown)");
+  cmd->add_option("--state-out", o.stateOut, "Write the app's state and timings as JSON at the end");
+  cmd->add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for a quality level")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--quit-after", o.quitAfterSeconds, "Window: close after this many seconds")
+      ->check(CLI::NonNegativeNumber);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,23 +139,31 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", ANGIORAY_VERSION);
   angio::InfoOptions info;
   angio::RenderOptions render;
+  angio::CprOptions cpr;
   angio::PhantomOptionsCli phantom;
   angio::DemoOptions demo;
   angio::BenchOptionsCli bench;
+  angio::GuiOptions gui;
   addInfo(app, info);
   addRender(app, render);
+  addCpr(app, cpr);
   addPhantom(app, phantom);
   addDemo(app, demo);
   addBench(app, bench);
+  addGui(app, gui);
   app.require_subcommand(0, 1);
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (app.got_subcommand("info")) return angio::runInfo(info);
     if (app.got_subcommand("render")) return angio::runRender(render);
+    if (app.got_subcommand("cpr")) return angio::runCpr(cpr);
     if (app.got_subcommand("phantom")) return angio::runPhantom(phantom);
     if (app.got_subcommand("bench")) return angio::runBench(bench);
-    // No subcommand: the main job. Until the GUI lands it is always the headless demo.
+    if (app.got_subcommand("gui")) return angio::runGui(gui);
+    if (app.got_subcommand("demo")) return angio::runDemo(demo);
+    // No subcommand: the workstation when there is a display, else the headless demo.
+    if (angio::canOpenWindow()) return angio::runGui(gui);
     return angio::runDemo(demo);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "angioray: error: %s\n", error.what());

@@ -1,0 +1,166 @@
+#pragma once
+// Progressive rendering (thesis sec. 4.4, "Interactive Mode"): every request is rendered at the
+// fast, then the medium, then the high quality level by one background thread, and each finished
+// level is handed to the UI. A newer request interrupts the running render through renderFast's
+// cancel flag (checked before each image row, so the render returns within one row's time) and
+// the worker starts over at fast. Interactive requests (dragging, spinning) render only fast.
+//
+// Rendering is background work: the worker and the oneTBB threads rendering for it run at a lower
+// scheduling priority (nice +10), so the UI thread gets a core when it needs one even while both
+// cores render.
+//
+// Hand-off: the UI thread polls latestFrame() (a shared pointer swapped under a mutex) and never
+// waits for the worker. waitForLevel() is for tests and scripts only.
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/image.h"
+#include "core/render_params.h"
+#include "core/slice_tiles.h"
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace angio {
+
+constexpr int kQualityLevels = 3;  // fast, medium, high, in rendering order
+
+using LevelSamplings = std::array<Sampling, kQualityLevels>;
+LevelSamplings defaultLevelSamplings();  // the rendering model's table
+
+struct ProgressiveRequest {
+  RenderParams params;                   // sampling is replaced by each level's
+  std::shared_ptr<const TfTable> table;  // a different table object = a TF change
+  bool interactive = false;              // dragging or spinning: fast only
+  LevelSamplings levels = defaultLevelSamplings();
+};
+
+// 8-bit RGB pixels, rows top to bottom, no padding.
+struct Rgb8Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+};
+
+// The image halved again and again (2x2 box filter, sizes floor(n / 2), at least 1) down to 1x1,
+// starting with the first half: the mipmap levels above level 0 of a texture.
+std::vector<Rgb8Image> halvedLevels(const std::vector<std::uint8_t>& rgb8, int width, int height);
+
+// One finished level of one request.
+struct ProgressiveFrame {
+  std::uint64_t request = 0;  // the id request() returned
+  std::uint64_t serial = 0;   // grows with every published frame
+  Quality level = Quality::fast;
+  RenderParams params;                 // as rendered, with the level's sampling
+  std::shared_ptr<const TfTable> table;
+  std::shared_ptr<const Image> image;  // linear RGBA
+  std::vector<std::uint8_t> rgb8;      // toRgb8(*image), ready for a texture upload
+  std::vector<Rgb8Image> mipmaps;      // halvedLevels(rgb8): made here, off the UI thread
+  double renderMs = 0;
+  std::uint64_t samples = 0;
+};
+
+struct LevelTiming {
+  bool done = false;
+  double ms = 0;
+  std::uint64_t samples = 0;
+  double samplesPerSecond() const { return ms > 0 ? double(samples) / (ms * 1e-3) : 0; }
+};
+
+struct ProgressiveStatus {
+  std::uint64_t request = 0;          // the newest request's id
+  bool busy = false;                  // the worker has something to do for it
+  std::optional<Quality> rendering;   // the level being rendered right now
+  double renderingMs = 0;             // how long that level has been running
+  double expectedMs = 0;              // that level's last duration (0 = not known yet)
+  std::array<LevelTiming, kQualityLevels> levels;  // of the newest request
+  double lastInterruptMs = -1;        // request() -> interrupted render returned, last time
+  std::string error;                  // a render that threw (e.g. out of memory), else empty
+
+  // Rough progress of the running level from its last duration; renderFast reports no rows.
+  double estimatedProgress() const;
+};
+
+// Optional hooks, called on the worker thread; they must be quick.
+struct ProgressiveCallbacks {
+  // With each frame just before it is published (so a waiter never sees a frame this has not).
+  std::function<void(const ProgressiveFrame&)> beforePublish;
+  // After each frame is published and when the worker goes idle: e.g. wake the UI thread.
+  std::function<void()> afterPublish;
+};
+
+class ProgressiveRenderer {
+ public:
+  // `volume` must outlive the renderer.
+  explicit ProgressiveRenderer(const Volume& volume, ProgressiveCallbacks callbacks = {});
+  ~ProgressiveRenderer();  // interrupts and joins the worker
+  ProgressiveRenderer(const ProgressiveRenderer&) = delete;
+  ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
+
+  // Starts rendering `request` and returns its id. Interrupts the running render, except that an
+  // interactive request lets a running fast render finish (otherwise a drag faster than the fast
+  // level would never show a frame); the worker then takes only the newest pending request.
+  // A request identical to the one in progress returns that one's id and changes nothing; one
+  // identical to the newest finished frame's view and TF continues above that frame's level.
+  std::uint64_t request(ProgressiveRequest request);
+
+  // The newest request's best finished frame, or the previous request's until the new one has
+  // one; null before the first frame.
+  std::shared_ptr<const ProgressiveFrame> latestFrame() const;
+  ProgressiveStatus status() const;
+
+  // Blocks until request `id` has a frame at `level` or better (true), or it can no longer get
+  // one: superseded, finished lower (interactive), or timed out (false). Not for the UI thread.
+  bool waitForLevel(std::uint64_t id, Quality level, std::chrono::milliseconds timeout) const;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  struct Job {
+    std::uint64_t id = 0;
+    ProgressiveRequest request;
+  };
+
+  void workerLoop();
+  void runJob(const Job& job);
+  void prepare(const Job& job);
+  int firstLevelToRender(const Job& job);
+  bool beginLevel(Quality level);
+  void publish(const Job& job, Quality level, Image image, double ms, std::uint64_t samples);
+  bool isInProgress(const ProgressiveRequest& request) const;
+  bool runningLevelStaysUseful(const ProgressiveRequest& request) const;
+
+  const Volume& volume_;
+  ProgressiveCallbacks callbacks_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;                // worker: a request or quit
+  mutable std::condition_variable published_;   // waiters: a frame, or the worker went idle
+  std::optional<Job> pending_;
+  std::optional<Job> current_;                  // the job the worker is running
+  std::uint64_t nextId_ = 0;
+  std::uint64_t nextSerial_ = 0;
+  bool quit_ = false;
+  Clock::time_point levelStart_{};
+  Clock::time_point cancelRequestedAt_{};
+  std::array<double, kQualityLevels> lastLevelMs_{};
+  std::shared_ptr<const ProgressiveFrame> latest_;
+  ProgressiveStatus status_;
+  std::atomic<bool> cancel_{false};
+
+  // Worker-only state: the empty-space structure for the current axis and TF.
+  std::optional<SliceTiles> tiles_;
+  std::shared_ptr<const TfTable> classifiedTable_;
+  std::vector<std::uint8_t> visibleTiles_;
+
+  std::thread worker_;  // last: starts after everything above is constructed
+};
+
+}  // namespace angio

@@ -1,0 +1,143 @@
+#pragma once
+// The workstation app: one ImGui frame at a time, shared by the GLFW window and the OSMesa twin.
+// The platform calls its backend's NewFrame, then App::frame() (ImGui::NewFrame .. ImGui::Render),
+// then renders ImGui's draw data. Rendering happens in the ProgressiveRenderer's thread; the UI
+// thread only swaps in finished frames and uploads them as a texture, so it never waits.
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/progressive_renderer.h"
+#include "core/volume.h"
+#include "gui/app_gl.h"
+#include "gui/app_state.h"
+#include "gui/tf_editor.h"
+#include "gui/viewport.h"
+#include "io/tf_file.h"
+
+namespace angio {
+
+struct LoadedDataset {
+  Volume volume;
+  std::string name;         // file or folder, or "phantom IxJxK"
+  std::string description;  // e.g. "MetaImage float32"
+};
+
+// UI frame times (ms, as the platform measured them: the window's exclude the buffer swap, the
+// headless twin's include software rasterisation), overall and while high renders.
+struct FrameTimes {
+  struct Stats {
+    int frames = 0;
+    double sumMs = 0, maxMs = 0;
+    void add(double ms);
+    double meanMs() const { return frames ? sumMs / frames : 0; }
+  };
+  Stats all, whileHigh;
+};
+
+// How soon the platform should draw the next frame.
+enum class FramePacing {
+  continuous,  // input, animation or an upload in progress: every display frame
+  progress,    // a render is running: now and then for the progress bar (a frame wakes it)
+  idle,        // nothing changes without input
+};
+
+class App {
+ public:
+  // `wakeUi` (optional, any thread) makes the platform's event wait return: called when the
+  // renderer publishes a frame or goes idle.
+  App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<void()> wakeUi = {});
+  ~App();
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  // One UI frame: ImGui::NewFrame() .. ImGui::Render(). `previousFrameMs` is how long the platform
+  // took for the previous frame in all (app, ImGui rendering, buffer swap).
+  void frame(double previousFrameMs);
+
+  // True once the newest request's frame at `level` (or better) is on screen, or the renderer has
+  // finished that request without reaching it (interactive requests stop at fast).
+  bool settled(Quality level) const;
+  bool wantsToQuit() const { return quit_; }
+  FramePacing pacing() const;
+
+  // State and runtime numbers for --state-out and the tests.
+  nlohmann::json report() const;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  static constexpr float kPanelWidth = 430;   // the side panel on the right (screen pixels)
+  static constexpr float kStatusHeight = 28;  // the status bar at the bottom
+
+  void pollHistogram();
+  void pollRenderer();
+  void requestRender(bool interactive);
+  void handleKeys();
+  void drawViewportWindow();
+  void drawSidePanel();
+  void drawStatusBar();
+  void drawDataSection();
+  void drawViewSection();
+  void drawTfSection();
+  void drawRenderingSection();
+  void drawExportSection();
+  void pollExport();
+  void noteRect(const std::string& name);  // the last widget's rectangle, for report()
+  void applyTf(const TransferFunction& tf, const std::string& preset);
+  void undoTf();
+  void redoTf();
+
+  LoadedDataset data_;  // before renderer_: the worker reads data_.volume
+  AppState state_;
+  StreamedTexture texture_;
+  ProgressiveRenderer renderer_;
+
+  // Rendering hand-off.
+  std::shared_ptr<const TfTable> table_;
+  TransferFunction tableTf_;            // the TF table_ was built from
+  std::optional<ProgressiveRequest> lastRequest_;
+  std::uint64_t lastRequestId_ = 0;
+  std::shared_ptr<const ProgressiveFrame> shown_;     // the frame the texture shows
+  std::shared_ptr<const ProgressiveFrame> incoming_;  // the frame being uploaded
+  std::deque<std::pair<std::uint64_t, Clock::time_point>> requestTimes_;
+  // Request -> its first image on screen: the start-up request (slice tiles built first) apart.
+  double startupImageMs_ = -1, lastFirstImageMs_ = -1, lastUploadMs_ = 0, maxUploadMs_ = 0;
+  FrameTimes::Stats firstImage_;
+  FrameTimes frameTimes_;
+  double lastFrameMs_ = 0;
+  ProgressiveStatus status_;  // this frame's snapshot
+
+  // Panels.
+  TfEditorView tfView_;
+  TfHistory tfHistory_;
+  std::vector<Preset> presets_;
+  std::string tfPath_ = "transfer-function.json";
+  std::string message_;  // the last error or notice, shown in the status bar
+  std::future<DensityHistogram> histogramJob_;
+  std::vector<float> histogram_;  // log counts per density, empty until counted
+  std::optional<DensityRange> huRange_;
+  ViewportInteraction viewport_;
+  std::map<std::string, std::pair<ImVec2, ImVec2>> widgetRects_;
+  bool quit_ = false;
+
+  struct ExportPanel {
+    std::string path = "angioray-export.png";
+    double isd = 0.5;
+    std::future<std::string> job;
+    std::shared_ptr<std::atomic<bool>> cancel;
+    Clock::time_point started;
+  };
+  ExportPanel export_;  // last: its job reads data_ and is waited for first on destruction
+};
+
+}  // namespace angio

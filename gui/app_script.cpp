@@ -1,0 +1,128 @@
+#include "gui/app_script.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/input_error.h"
+
+namespace angio {
+
+namespace {
+
+using Json = nlohmann::json;
+
+struct StepParser {
+  const std::filesystem::path& source;
+  std::string where;  // "step 3"
+
+  [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, where + ": " + problem); }
+
+  glm::vec2 point(const Json& value, const char* what) const {
+    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
+      fail(std::string(what) + " must be [x, y] in window pixels");
+    return {value[0].get<float>(), value[1].get<float>()};
+  }
+  double number(const Json& value, const char* what, double lo, double hi) const {
+    if (!value.is_number()) fail(std::string(what) + " must be a number");
+    const double n = value.get<double>();
+    if (!(n >= lo && n <= hi)) fail(std::string(what) + " out of range");
+    return n;
+  }
+  std::string string(const Json& value, const char* what) const {
+    if (!value.is_string() || value.get<std::string>().empty()) fail(std::string(what) + " must be a non-empty string");
+    return value.get<std::string>();
+  }
+  int button(const Json& object) const {
+    return object.contains("button") ? int(number(object["button"], "button", 0, 2)) : 0;
+  }
+
+  ScriptStep parse(const Json& object) const {
+    if (!object.is_object() || object.empty()) fail("not an object with one action");
+    ScriptStep step;
+    if (object.contains("move")) {
+      step.kind = ScriptStep::Kind::move;
+      step.at = point(object["move"], "move");
+    } else if (object.contains("click")) {
+      step.kind = ScriptStep::Kind::click;
+      step.at = point(object["click"], "click");
+      step.button = button(object);
+    } else if (object.contains("double_click")) {
+      step.kind = ScriptStep::Kind::doubleClick;
+      step.at = point(object["double_click"], "double_click");
+    } else if (object.contains("drag")) {
+      const Json& drag = object["drag"];
+      if (!drag.is_object() || !drag.contains("from") || !drag.contains("to"))
+        fail("drag needs \"from\" and \"to\"");
+      step.kind = ScriptStep::Kind::drag;
+      step.at = point(drag["from"], "drag from");
+      step.to = point(drag["to"], "drag to");
+      step.button = button(drag);
+      if (drag.contains("steps")) step.steps = int(number(drag["steps"], "drag steps", 1, 1000));
+    } else if (object.contains("press")) {
+      step.kind = ScriptStep::Kind::press;
+      step.at = point(object["press"], "press");
+      step.button = button(object);
+    } else if (object.contains("release")) {
+      step.kind = ScriptStep::Kind::release;
+      step.at = point(object["release"], "release");
+      step.button = button(object);
+    } else if (object.contains("wheel")) {
+      const Json& wheel = object["wheel"];
+      if (!wheel.is_object() || !wheel.contains("at")) fail("wheel needs \"at\"");
+      step.kind = ScriptStep::Kind::wheel;
+      step.at = point(wheel["at"], "wheel at");
+      step.value = wheel.contains("delta") ? number(wheel["delta"], "wheel delta", -100, 100) : 1;
+    } else if (object.contains("key")) {
+      step.kind = ScriptStep::Kind::key;
+      step.text = string(object["key"], "key");
+    } else if (object.contains("text")) {
+      step.kind = ScriptStep::Kind::text;
+      step.text = string(object["text"], "text");
+    } else if (object.contains("wait_ms")) {
+      step.kind = ScriptStep::Kind::waitMs;
+      step.value = number(object["wait_ms"], "wait_ms", 0, 600000);
+    } else if (object.contains("wait_level")) {
+      step.kind = ScriptStep::Kind::waitLevel;
+      const auto level = parseQuality(string(object["wait_level"], "wait_level"));
+      if (!level) fail("wait_level must be fast, medium or high");
+      step.level = *level;
+    } else if (object.contains("screenshot")) {
+      step.kind = ScriptStep::Kind::screenshot;
+      step.text = string(object["screenshot"], "screenshot");
+    } else if (object.contains("state")) {
+      step.kind = ScriptStep::Kind::state;
+      step.text = string(object["state"], "state");
+    } else {
+      fail("unknown action " + object.begin().key());
+    }
+    return step;
+  }
+};
+
+}  // namespace
+
+std::vector<ScriptStep> parseScript(const std::string& text, const std::filesystem::path& source) {
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::exception& error) {
+    throw InputError(source, std::string("not valid JSON: ") + error.what());
+  }
+  if (!json.is_array()) throw InputError(source, "a script is a JSON list of steps");
+  std::vector<ScriptStep> steps;
+  for (std::size_t n = 0; n < json.size(); ++n)
+    steps.push_back(StepParser{source, "step " + std::to_string(n + 1)}.parse(json[n]));
+  return steps;
+}
+
+std::vector<ScriptStep> loadScript(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseScript(text.str(), path);
+}
+
+}  // namespace angio

@@ -1,0 +1,142 @@
+#include "gui/app_window.h"
+
+#include <GLFW/glfw3.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "io/atomic_write.h"
+#include "io/image_export.h"
+
+namespace angio {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Ms = std::chrono::duration<double, std::milli>;
+constexpr double kFrameMs = 1000.0 / 60;
+
+void reportGlfwError(int code, const char* description) {
+  std::fprintf(stderr, "angioray: GLFW error %d: %s\n", code, description);
+}
+
+// Owns GLFW, the window and the ImGui context, in that order of construction.
+class Window {
+ public:
+  explicit Window(const WindowOptions& options) {
+    glfwSetErrorCallback(reportGlfwError);
+    if (!glfwInit()) throw std::runtime_error("cannot open a window: GLFW failed to initialise");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 2);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    window_ = glfwCreateWindow(options.width, options.height, "angioray", nullptr, nullptr);
+    if (!window_) {
+      glfwTerminate();
+      throw std::runtime_error("cannot open a window: no OpenGL 3.2 context");
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(1);
+    gl_ = GlApi::load([](const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); });
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    ImGui_ImplOpenGL3_Init("#version 150");
+  }
+
+  ~Window() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
+
+  GLFWwindow* handle() const { return window_; }
+  const GlApi& gl() const { return gl_; }
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  GlApi gl_;
+};
+
+std::atomic<bool> closeRequested{false};
+
+void requestClose(int) { closeRequested.store(true); }
+
+void writeScreenshot(const std::filesystem::path& path, const GlApi& gl, int width, int height) {
+  const std::vector<std::uint8_t> rgb = gl.readFrameRgb(width, height);
+  Image image = makeImage(width, height);
+  for (std::size_t n = 0; n < image.pixels.size(); ++n)
+    image.pixels[n] = glm::vec4(rgb[3 * n] / 255.f, rgb[3 * n + 1] / 255.f, rgb[3 * n + 2] / 255.f, 1.f);
+  exportImage(image, path);
+}
+
+void writeReport(const std::filesystem::path& path, const App& app) {
+  writeAtomically(path, [&](const std::filesystem::path& temp) {
+    std::ofstream out(temp);
+    out << app.report().dump(2) << '\n';
+    if (!out) throw std::runtime_error(path.string() + ": cannot be written");
+  });
+}
+
+}  // namespace
+
+bool windowSystemAvailable() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if (!(x11 && *x11) && !(wayland && *wayland)) return false;
+  if (!glfwInit()) return false;
+  glfwTerminate();
+  return true;
+}
+
+int runWindow(LoadedDataset dataset, AppState state, const WindowOptions& options) {
+  Window window(options);
+  std::signal(SIGINT, requestClose);
+  std::signal(SIGTERM, requestClose);
+  App app(std::move(dataset), std::move(state), window.gl(), [] { glfwPostEmptyEvent(); });
+  const auto opened = Clock::now();
+  double previousFrameMs = 0;
+  bool closing = false;
+  while (!closing) {
+    closing = glfwWindowShouldClose(window.handle()) || app.wantsToQuit() || closeRequested.load() ||
+              (options.quitAfterSeconds > 0 &&
+               Ms(Clock::now() - opened).count() > options.quitAfterSeconds * 1000);
+    // Draw at display rate only while something moves; otherwise sleep until input or a new
+    // frame from the renderer (it wakes us), with a slow tick for the progress bar.
+    switch (app.pacing()) {
+      case FramePacing::continuous: glfwPollEvents(); break;
+      case FramePacing::progress: glfwWaitEventsTimeout(0.1); break;
+      case FramePacing::idle: glfwWaitEventsTimeout(0.5); break;
+    }
+    const auto start = Clock::now();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    app.frame(previousFrameMs);
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window.handle(), &width, &height);
+    window.gl().clearFrame(width, height);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    previousFrameMs = Ms(Clock::now() - start).count();
+    if (closing && !options.screenshot.empty()) writeScreenshot(options.screenshot, window.gl(), width, height);
+    glfwSwapBuffers(window.handle());
+    // Without vsync (e.g. Xvfb) keep to about 60 frames per second.
+    const double rest = kFrameMs - Ms(Clock::now() - start).count();
+    if (rest > 0) std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(rest));
+  }
+  if (!options.stateOut.empty()) writeReport(options.stateOut, app);
+  return 0;
+}
+
+}  // namespace angio

@@ -1,0 +1,49 @@
+#pragma once
+// The viewport: the rendered image as a texture, aspect-correct, zoomed with the wheel about the
+// cursor, panned with the right or middle button, rotated with a left drag; double-click resets
+// zoom and pan. Overlays: orientation letters on the image edges, a scale bar in mm, the angle.
+#include <string>
+
+#include <glm/glm.hpp>
+#include <imgui.h>
+
+#include "core/render_params.h"
+#include "gui/app_state.h"
+
+namespace angio {
+
+// The image on screen. Pixels are square in mm: D = isd * u both ways (rendering model).
+struct ViewportImage {
+  ImTextureID texture = nullptr;
+  int width = 0, height = 0;  // pixels
+  double pixelMm = 0;          // D
+};
+
+// What to draw around the image.
+struct ViewportOverlay {
+  glm::dvec2 fitMm{1.0};   // the size that fits the viewport at zoom 1: (hypot(E_b, E_c), E_a) mm
+  std::string caption;     // top-left, e.g. "23.0 deg about k"
+  std::string levelLabel;  // top-right, e.g. "high  isd 0.5  osd 0.3  trilinear"
+};
+
+struct ViewportInteraction {
+  double rotateDegrees = 0;  // from a left drag this frame
+  bool reset = false;        // double-click: zoom and pan were reset
+  ImVec2 min, max;           // the viewport's screen rectangle
+};
+
+// The letters (L/R/A/P/S/I) of the dominant LPS axis of +r, -r, +up and -up for a view about
+// `axis` at `angleDeg` (rendering model, View: r = cos(t) e_b + sin(t) e_c, up = e_a).
+struct OrientationLetters {
+  char right = '?', left = '?', top = '?', bottom = '?';
+};
+OrientationLetters orientationLetters(Axis axis, double angleDeg);
+
+// A scale bar length (mm) of 1, 2 or 5 times a power of ten, about `targetPx` long on screen.
+double scaleBarMm(double pixelsPerMm, double targetPx);
+
+// Draws into the current window's remaining content region; `image` may be null (nothing yet).
+ViewportInteraction drawViewport(const ViewportImage* image, ViewState& view,
+                                 const ViewportOverlay& overlay);
+
+}  // namespace angio

@@ -1,0 +1,249 @@
+// The progressive renderer (thesis sec. 4.4): levels in order, interruption, interactive mode,
+// and images identical to renderFast's for the same parameters.
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/fast_raycaster.h"
+#include "core/phantom.h"
+#include "core/progressive_renderer.h"
+#include "io/tf_file.h"
+
+namespace angio {
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kInterruptBudgetMs = 40;  // sanitizers slow each row down several times
+#else
+constexpr double kInterruptBudgetMs = 10;  // the target
+#endif
+
+const Volume& testVolume() {
+  static const Volume volume = [] {
+    PhantomOptions options;
+    options.dims = {96, 96, 200};
+    return generatePhantom(options).volume;
+  }();
+  return volume;
+}
+
+std::shared_ptr<const TfTable> tableFor(const std::string& preset, double opacityScale = 1.0) {
+  TransferFunction tf = loadPresetOrFile(preset);
+  tf.modulators.opacityScale = opacityScale;
+  return std::make_shared<const TfTable>(buildTable(tf));
+}
+
+// Every published frame, in publication order (the callback runs on the worker thread).
+struct FrameLog {
+  std::mutex mutex;
+  std::vector<ProgressiveFrame> frames;
+
+  ProgressiveCallbacks callbacks() {
+    ProgressiveCallbacks callbacks;
+    callbacks.beforePublish = [this](const ProgressiveFrame& frame) {
+      std::lock_guard lock(mutex);
+      frames.push_back(frame);
+    };
+    return callbacks;
+  }
+  std::vector<ProgressiveFrame> copy() {
+    std::lock_guard lock(mutex);
+    return frames;
+  }
+};
+
+ProgressiveRequest requestAt(double angleDeg, std::shared_ptr<const TfTable> table,
+                             Axis axis = Axis::k) {
+  ProgressiveRequest request;
+  request.params.axis = axis;
+  request.params.angleDeg = angleDeg;
+  request.table = std::move(table);
+  return request;
+}
+
+Image renderDirectly(const Volume& volume, const TfTable& table, const RenderParams& params) {
+  const SliceTiles tiles = buildSliceTiles(volume, params.axis);
+  return renderFast(volume, tiles, classifyTiles(tiles, table), table, params);
+}
+
+bool sameImage(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) return false;
+  for (std::size_t n = 0; n < a.pixels.size(); ++n)
+    if (a.pixels[n] != b.pixels[n]) return false;
+  return true;
+}
+
+bool hasVisiblePixel(const Image& image) {
+  for (const glm::vec4& p : image.pixels)
+    if (p.a > 0.f) return true;
+  return false;
+}
+
+TEST(ProgressiveRenderer, LevelsArriveInOrderAndEqualRenderFast) {
+  FrameLog log;
+  ProgressiveRenderer renderer(testVolume(), log.callbacks());
+  const auto table = tableFor("cta-vessels-bone");
+  const ProgressiveRequest request = requestAt(20, table);
+  const std::uint64_t id = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(id, Quality::high, 120s));
+
+  const std::vector<ProgressiveFrame> frames = log.copy();
+  ASSERT_EQ(frames.size(), 3u);
+  for (int q = 0; q < kQualityLevels; ++q) {
+    SCOPED_TRACE(toString(Quality(q)));
+    EXPECT_EQ(frames[q].request, id);
+    EXPECT_EQ(frames[q].level, Quality(q));
+    if (q > 0) {
+      EXPECT_GT(frames[q].serial, frames[q - 1].serial);
+    }
+    RenderParams params = request.params;
+    params.sampling = qualitySampling(Quality(q));
+    const Image direct = renderDirectly(testVolume(), *table, params);
+    EXPECT_TRUE(sameImage(*frames[q].image, direct));
+    EXPECT_TRUE(hasVisiblePixel(direct));
+    EXPECT_EQ(frames[q].rgb8, toRgb8(direct));
+    EXPECT_GT(frames[q].samples, 0u);
+  }
+  const ProgressiveStatus status = renderer.status();
+  EXPECT_FALSE(status.busy);
+  for (const LevelTiming& level : status.levels) {
+    EXPECT_TRUE(level.done);
+    EXPECT_GT(level.samplesPerSecond(), 0);
+  }
+  EXPECT_EQ(renderer.latestFrame()->level, Quality::high);
+}
+
+TEST(ProgressiveRenderer, AfterPublishRunsForEveryFrameAndWhenIdle) {
+  std::atomic<int> calls{0};
+  ProgressiveCallbacks callbacks;
+  callbacks.afterPublish = [&] { ++calls; };
+  auto renderer = std::make_unique<ProgressiveRenderer>(testVolume(), callbacks);
+  const std::uint64_t id = renderer->request(requestAt(0, tableFor("cta-vessels")));
+  ASSERT_TRUE(renderer->waitForLevel(id, Quality::high, 120s));
+  renderer.reset();  // joins: every callback has run
+  EXPECT_EQ(calls.load(), 4);  // fast, medium, high, idle
+}
+
+TEST(ProgressiveRenderer, InteractiveRequestRendersOnlyFast) {
+  FrameLog log;
+  ProgressiveRenderer renderer(testVolume(), log.callbacks());
+  ProgressiveRequest request = requestAt(45, tableFor("cta-vessels"));
+  request.interactive = true;
+  const std::uint64_t id = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(id, Quality::fast, 60s));
+  EXPECT_FALSE(renderer.waitForLevel(id, Quality::medium, 2s));
+  const std::vector<ProgressiveFrame> frames = log.copy();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].level, Quality::fast);
+  EXPECT_FALSE(renderer.status().busy);
+}
+
+TEST(ProgressiveRenderer, ReleaseAfterDragContinuesAboveTheShownLevel) {
+  FrameLog log;
+  ProgressiveRenderer renderer(testVolume(), log.callbacks());
+  ProgressiveRequest request = requestAt(30, tableFor("cta-vessels"));
+  request.interactive = true;
+  const std::uint64_t dragId = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(dragId, Quality::fast, 60s));
+  request.interactive = false;
+  const std::uint64_t releaseId = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(releaseId, Quality::high, 120s));
+  const std::vector<ProgressiveFrame> frames = log.copy();
+  ASSERT_EQ(frames.size(), 3u);  // the fast image is not rendered twice
+  EXPECT_EQ(frames[1].level, Quality::medium);
+  EXPECT_EQ(frames[1].request, releaseId);
+  EXPECT_EQ(frames[2].level, Quality::high);
+}
+
+TEST(ProgressiveRenderer, NewRequestInterruptsHighAndRestartsAtFast) {
+  FrameLog log;
+  ProgressiveRenderer renderer(testVolume(), log.callbacks());
+  const auto table = tableFor("soft-tissue-context");
+  ProgressiveRequest slow = requestAt(0, table);
+  // A high level slow enough to be caught running (many rows, no ERT) whose rows are short
+  // (coarse depth sampling): the interruption latency is one row's time, and on a loaded machine
+  // a row takes several times longer than on an idle one.
+  slow.levels[int(Quality::high)] = {0.2, 2.0, Filter::trilinear, 1.0};
+  const std::uint64_t first = renderer.request(slow);
+  const auto deadline = Clock::now() + 120s;
+  while (renderer.status().rendering != Quality::high && Clock::now() < deadline)
+    std::this_thread::sleep_for(1ms);
+  ASSERT_EQ(renderer.status().rendering, Quality::high);
+  std::this_thread::sleep_for(20ms);  // well inside the render
+
+  ProgressiveRequest next = slow;
+  next.params.angleDeg = 90;
+  const auto asked = Clock::now();
+  const std::uint64_t second = renderer.request(next);
+  ASSERT_TRUE(renderer.waitForLevel(second, Quality::fast, 60s));
+  const double toFastMs = std::chrono::duration<double, std::milli>(Clock::now() - asked).count();
+
+  const ProgressiveStatus status = renderer.status();
+  EXPECT_GE(status.lastInterruptMs, 0);
+  EXPECT_LE(status.lastInterruptMs, kInterruptBudgetMs);
+  const std::vector<ProgressiveFrame> frames = log.copy();
+  std::vector<Quality> firstLevels;
+  for (const ProgressiveFrame& frame : frames)
+    if (frame.request == first) firstLevels.push_back(frame.level);
+  EXPECT_EQ(firstLevels, (std::vector<Quality>{Quality::fast, Quality::medium}));  // high dropped
+  ASSERT_GE(frames.size(), 3u);
+  EXPECT_EQ(frames[2].request, second);
+  EXPECT_EQ(frames[2].level, Quality::fast);
+  EXPECT_EQ(frames[2].params.angleDeg, 90);
+  std::printf("interrupt %.2f ms, request -> fast frame %.1f ms\n", status.lastInterruptMs, toFastMs);
+}
+
+TEST(ProgressiveRenderer, IdenticalRequestKeepsTheRenderRunning) {
+  ProgressiveRenderer renderer(testVolume());
+  const ProgressiveRequest request = requestAt(10, tableFor("cta-vessels"));
+  const std::uint64_t id = renderer.request(request);
+  EXPECT_EQ(renderer.request(request), id);
+  ASSERT_TRUE(renderer.waitForLevel(id, Quality::high, 120s));
+}
+
+TEST(ProgressiveRenderer, TfChangeAndAxisChangeRenderTheirOwnImages) {
+  ProgressiveRenderer renderer(testVolume());
+  const auto visible = tableFor("cta-vessels-bone");
+  const auto invisible = tableFor("cta-vessels-bone", 0.0);
+  const std::uint64_t a = renderer.request(requestAt(0, visible));
+  ASSERT_TRUE(renderer.waitForLevel(a, Quality::medium, 60s));
+  EXPECT_TRUE(hasVisiblePixel(*renderer.latestFrame()->image));
+
+  const std::uint64_t b = renderer.request(requestAt(0, invisible));
+  ASSERT_TRUE(renderer.waitForLevel(b, Quality::medium, 60s));
+  EXPECT_FALSE(hasVisiblePixel(*renderer.latestFrame()->image));
+
+  const ProgressiveRequest sideways = requestAt(30, visible, Axis::i);
+  const std::uint64_t c = renderer.request(sideways);
+  ASSERT_TRUE(renderer.waitForLevel(c, Quality::medium, 60s));
+  const auto frame = renderer.latestFrame();
+  ASSERT_EQ(frame->request, c);
+  RenderParams params = sideways.params;
+  params.sampling = qualitySampling(frame->level);
+  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(testVolume(), *visible, params)));
+}
+
+TEST(ProgressiveRenderer, DestructionInterruptsARunningRender) {
+  const auto table = tableFor("soft-tissue-context");
+  ProgressiveRequest slow = requestAt(0, table);
+  slow.levels[int(Quality::fast)] = {0.2, 2.0, Filter::trilinear, 1.0};
+  auto renderer = std::make_unique<ProgressiveRenderer>(testVolume());
+  renderer->request(slow);
+  const auto deadline = Clock::now() + 60s;
+  while (!renderer->status().rendering && Clock::now() < deadline) std::this_thread::sleep_for(1ms);
+  std::this_thread::sleep_for(10ms);
+  const auto start = Clock::now();
+  renderer.reset();
+  const double joinMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  EXPECT_LT(joinMs, 500);
+}
+
+}  // namespace
+}  // namespace angio

@@ -1,0 +1,325 @@
+// The workstation UI through its headless twin (`angioray gui --headless`): scripted input goes
+// through the same ImGui code as the window, and the app's state dump and screenshots show what
+// happened. Small phantom, small window, waits on quality levels rather than fixed sleeps.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <OpenImageIO/imagebuf.h>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+// Tall enough for the whole side panel (export section included) without scrolling.
+const std::string kSmall = " --phantom-size 96x96x200 --size 1000x900 --timeout 120";
+
+struct GuiRun {
+  int exitCode = -1;
+  std::string output;
+};
+
+GuiRun runAngioray(const std::string& arguments) {
+  const std::string command = std::string(ANGIORAY_BINARY) + " " + arguments + " 2>&1";
+  GuiRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
+  const int status = pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+Json readJson(const fs::path& path) {
+  std::ifstream in(path);
+  return Json::parse(in);
+}
+
+struct Rect {
+  float x0, y0, x1, y1;
+  float midX() const { return (x0 + x1) / 2; }
+  float midY() const { return (y0 + y1) / 2; }
+};
+
+Rect rectOf(const Json& layout) {
+  return {layout[0].get<float>(), layout[1].get<float>(), layout[2].get<float>(), layout[3].get<float>()};
+}
+
+// Mean absolute RGB difference (0..255) over a rectangle of two same-size screenshots.
+double meanDifference(const fs::path& a, const fs::path& b, const Rect& r) {
+  OIIO::ImageBuf imageA(a.string()), imageB(b.string());
+  EXPECT_TRUE(imageA.read() && imageB.read());
+  double sum = 0;
+  long count = 0;
+  for (int y = int(r.y0); y < int(r.y1); ++y) {
+    for (int x = int(r.x0); x < int(r.x1); ++x) {
+      float pa[3], pb[3];
+      imageA.getpixel(x, y, pa, 3);
+      imageB.getpixel(x, y, pb, 3);
+      for (int c = 0; c < 3; ++c) sum += std::abs(pa[c] - pb[c]) * 255;
+      ++count;
+    }
+  }
+  return count ? sum / double(count) : 0;
+}
+
+std::string point(float x, float y) {
+  char text[64];
+  std::snprintf(text, sizeof text, "[%.1f, %.1f]", x, y);
+  return text;
+}
+
+class Gui : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() /
+          ("angioray-gui-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir);
+  }
+
+  // Runs the headless app with `steps` (a JSON list) and returns its run; files land in dir.
+  GuiRun runScript(const std::string& steps, const std::string& extra = "") {
+    const fs::path script = dir / "script.json";
+    std::ofstream(script) << steps;
+    return runAngioray("gui --headless" + kSmall + " --script " + script.string() + " --state-out " +
+                       (dir / "end.json").string() + extra);
+  }
+
+  std::string file(const std::string& name) const { return (dir / name).string(); }
+
+  // The layout of the default start-up screen (the same for every run at this size).
+  Json startupState() {
+    const GuiRun run = runAngioray("gui --headless" + kSmall + " --state-out " + file("startup.json"));
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    return readJson(dir / "startup.json");
+  }
+
+  fs::path dir;
+};
+
+TEST_F(Gui, HeadlessWithoutScriptShowsTheHighImageWithOrientation) {
+  const GuiRun run = runAngioray("gui --headless" + kSmall + " --screenshot " + file("start.png") +
+                              " --state-out " + file("state.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  OIIO::ImageBuf shot(file("start.png"));
+  ASSERT_TRUE(shot.read());
+  EXPECT_EQ(shot.spec().width, 1000);
+  EXPECT_EQ(shot.spec().height, 900);
+
+  const Json state = readJson(dir / "state.json");
+  const Json& runtime = state["runtime"];
+  EXPECT_EQ(runtime["shown"]["level"], "high");
+  EXPECT_EQ(runtime["shown"]["request"], runtime["newest_request"]);
+  for (const char* level : {"fast", "medium", "high"}) EXPECT_TRUE(runtime["levels"].contains(level)) << level;
+  // Axis k, angle 0: the anterior view (rendering model).
+  EXPECT_EQ(runtime["orientation"]["right"], "L");
+  EXPECT_EQ(runtime["orientation"]["left"], "R");
+  EXPECT_EQ(runtime["orientation"]["top"], "S");
+  EXPECT_EQ(runtime["orientation"]["bottom"], "I");
+
+  // The viewport shows the image: its centre column is not all background.
+  const Rect viewport = rectOf(runtime["layout"]["viewport"]);
+  float brightest = 0;
+  for (int y = int(viewport.y0); y < int(viewport.y1); ++y) {
+    float pixel[3];
+    shot.getpixel(int(viewport.midX()), y, pixel, 3);
+    brightest = std::max({brightest, pixel[0], pixel[1], pixel[2]});
+  }
+  EXPECT_GT(brightest, 0.3f);
+}
+
+TEST_F(Gui, LeftDragRotatesAndChangesTheImage) {
+  const std::string steps = R"([
+    {"wait_level": "high"}, {"state": ")" + file("before.json") + R"("},
+    {"screenshot": ")" + file("before.png") + R"("},
+    {"press": [300, 300]}, {"move": [320, 300]}, {"move": [340, 300]}, {"move": [360, 300]},
+    {"wait_ms": 400}, {"state": ")" + file("held.json") + R"("},
+    {"release": [360, 300]},
+    {"wait_level": "high"},
+    {"screenshot": ")" + file("after.png") + R"("}])";
+  const GuiRun run = runScript(steps);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json before = readJson(dir / "before.json"), held = readJson(dir / "held.json"),
+             after = readJson(dir / "end.json");
+  EXPECT_DOUBLE_EQ(before["state"]["view"]["angle_deg"].get<double>(), 0);
+  // 60 px at 0.5 deg per pixel, grab semantics: dragging right turns theta negative.
+  EXPECT_DOUBLE_EQ(held["state"]["view"]["angle_deg"].get<double>(), 330);
+  // While the button is held only the fast level is rendered, however long it is held.
+  EXPECT_EQ(held["runtime"]["shown"]["level"], "fast");
+  EXPECT_NEAR(held["runtime"]["shown"]["angle_deg"].get<double>(), 330, 1e-9);
+  EXPECT_FALSE(held["runtime"]["busy"].get<bool>());
+  // Letting go continues to high.
+  EXPECT_DOUBLE_EQ(after["state"]["view"]["angle_deg"].get<double>(), 330);
+  EXPECT_EQ(after["runtime"]["shown"]["level"], "high");
+  EXPECT_NEAR(after["runtime"]["shown"]["angle_deg"].get<double>(), 330, 1e-9);
+  EXPECT_NE(after["runtime"]["shown"]["checksum"], before["runtime"]["shown"]["checksum"]);
+  const Rect viewport = rectOf(after["runtime"]["layout"]["viewport"]);
+  EXPECT_GT(meanDifference(dir / "before.png", dir / "after.png", viewport), 1.0);
+}
+
+TEST_F(Gui, ArrowKeysTurnByOneAndShiftByTenDegrees) {
+  const GuiRun run = runScript(R"([{"key": "Left"}, {"key": "Left"}, {"key": "Shift+Right"},
+                                {"wait_level": "medium"}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json end = readJson(dir / "end.json");
+  EXPECT_DOUBLE_EQ(end["state"]["view"]["angle_deg"].get<double>(), 352);
+  EXPECT_NEAR(end["runtime"]["shown"]["angle_deg"].get<double>(), 352, 1e-9);
+}
+
+TEST_F(Gui, WheelZoomsRightDragPansDoubleClickResets) {
+  const std::string steps = R"([
+    {"wheel": {"at": [200, 200], "delta": 2}},
+    {"drag": {"from": [300, 300], "to": [340, 320], "button": 1, "steps": 4}},
+    {"state": ")" + file("zoomed.json") + R"("},
+    {"double_click": [300, 300]}])";
+  const GuiRun run = runScript(steps);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json zoomed = readJson(dir / "zoomed.json")["state"]["view"];
+  EXPECT_NEAR(zoomed["zoom"].get<double>(), 1.44, 1e-9);
+  // Zooming about (200, 200) moved the image centre away from the cursor, then the pan added (40, 20).
+  const Json reset = readJson(dir / "end.json")["state"]["view"];
+  EXPECT_DOUBLE_EQ(reset["zoom"].get<double>(), 1);
+  EXPECT_DOUBLE_EQ(reset["pan_px"][0].get<double>(), 0);
+  EXPECT_NE(zoomed["pan_px"][0].get<double>(), 0);
+  EXPECT_DOUBLE_EQ(reset["angle_deg"].get<double>(), 0);  // panning and zooming do not rotate
+}
+
+TEST_F(Gui, TfEditChangesTheImageAndUndoRestoresIt) {
+  const Json startup = startupState();
+  const Rect plot = rectOf(startup["runtime"]["layout"]["tf_plot"]);
+  const std::size_t points = startup["state"]["transfer_function"]["points"].size();
+  // A point at about -400 HU, opacity 0.9: fat and soft tissue turn opaque.
+  const float x = plot.x0 + (plot.x1 - plot.x0) * float((-400.0 + 1024) / 4095);
+  const float y = plot.y0 + (plot.y1 - plot.y0) * 0.1f;
+  const std::string steps = R"([
+    {"double_click": )" + point(x, y) + R"(},
+    {"wait_level": "high"}, {"state": ")" + file("edited.json") + R"("},
+    {"key": "Ctrl+Z"},
+    {"wait_level": "high"}])";
+  const GuiRun run = runScript(steps);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json edited = readJson(dir / "edited.json"), undone = readJson(dir / "end.json");
+  EXPECT_EQ(edited["state"]["transfer_function"]["points"].size(), points + 1);
+  EXPECT_TRUE(edited["runtime"]["tf_undo_available"].get<bool>());
+  EXPECT_NE(edited["runtime"]["shown"]["checksum"], startup["runtime"]["shown"]["checksum"]);
+  EXPECT_EQ(undone["state"]["transfer_function"]["points"].size(), points);
+  // Rendering is deterministic: the undone TF gives the start-up image back, bit for bit.
+  EXPECT_EQ(undone["runtime"]["shown"]["checksum"], startup["runtime"]["shown"]["checksum"]);
+}
+
+TEST_F(Gui, RightClickDeletesAControlPoint) {
+  const Json startup = startupState();
+  const Rect plot = rectOf(startup["runtime"]["layout"]["tf_plot"]);
+  const Json& tf = startup["state"]["transfer_function"];
+  const std::size_t points = tf["points"].size();
+  // The third point of the start-up preset, where the plot draws it.
+  const Json& third = tf["points"][2];
+  const float x = plot.x0 + (plot.x1 - plot.x0) * float((third["hu"].get<double>() + 1024) / 4095);
+  const float y = plot.y1 - (plot.y1 - plot.y0) * third["opacity"].get<float>();
+  const GuiRun run = runScript(R"([{"click": )" + point(x, y) + R"(, "button": 1}, {"wait_level": "fast"}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json end = readJson(dir / "end.json");
+  EXPECT_EQ(end["state"]["transfer_function"]["points"].size(), points - 1);
+}
+
+TEST_F(Gui, BadScriptIsAOneLineErrorNamingTheFile) {
+  const GuiRun run = runScript(R"([{"wait_level": "high"}, {"teleport": [1, 2]}])");
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("script.json"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("step 2"), std::string::npos) << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+}
+
+// FNV-1a of 8-bit RGB pixels, as the app's report computes it for the shown image.
+std::string checksumOfRgb8(const fs::path& png) {
+  OIIO::ImageBuf image(png.string());
+  EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::UINT8));
+  const OIIO::ImageSpec& spec = image.spec();
+  std::vector<std::uint8_t> pixels(std::size_t(spec.width) * spec.height * 3);
+  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, pixels.data());
+  std::uint64_t hash = 1469598103934665603ull;
+  for (std::uint8_t byte : pixels) hash = (hash ^ byte) * 1099511628211ull;
+  return std::to_string(hash);
+}
+
+TEST_F(Gui, ExportWritesTheShownHighImageAndASidecar) {
+  const Json startup = startupState();
+  const Json& layout = startup["runtime"]["layout"];
+  const Rect path = rectOf(layout["export_path"]), button = rectOf(layout["export_button"]);
+  const std::string steps = R"([
+    {"click": )" + point(path.midX(), path.midY()) + R"(}, {"key": "Ctrl+A"},
+    {"text": ")" + file("view.png") + R"("}, {"key": "Enter"},
+    {"click": )" + point(button.midX(), button.midY()) + R"(},
+    {"wait_level": "high"}])";
+  const GuiRun run = runScript(steps);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json end = readJson(dir / "end.json");
+  EXPECT_NE(end["runtime"]["message"].get<std::string>().find("exported"), std::string::npos);
+  ASSERT_TRUE(fs::exists(dir / "view.png"));
+  // isd 0.5 with the high level's other settings: the very image the viewport shows at high.
+  EXPECT_EQ(checksumOfRgb8(dir / "view.png"), end["runtime"]["shown"]["checksum"]);
+  const Json sidecar = readJson(dir / "view.png.json");
+  EXPECT_EQ(sidecar["image"], "view.png");
+  EXPECT_DOUBLE_EQ(sidecar["sampling"]["isd"].get<double>(), 0.5);
+  EXPECT_EQ(sidecar["sampling"]["filter"], "trilinear");
+  EXPECT_EQ(sidecar["axis"], "k");
+  EXPECT_EQ(sidecar["transfer_function"]["points"].size(), end["state"]["transfer_function"]["points"].size());
+  EXPECT_EQ(sidecar["width"], end["runtime"]["shown"]["width"]);
+}
+
+TEST_F(Gui, MissingVolumeIsAOneLineErrorNamingIt) {
+  const GuiRun run = runAngioray("gui --headless " + file("nothing.mha"));
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("nothing.mha"), std::string::npos) << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+}
+
+bool installed(const char* program) {
+  return std::system(("command -v " + std::string(program) + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+// The real window (GLFW + OpenGL 3) under Xvfb: xdotool drags on the image, SIGTERM closes the
+// window cleanly, and the state it writes on closing shows the angle the drag set.
+TEST_F(Gui, WindowUnderXvfbRotatesWithARealMouseDrag) {
+  if (!installed("xvfb-run")) GTEST_SKIP() << "xvfb-run not installed (apt package xvfb)";
+  if (!installed("xdotool")) GTEST_SKIP() << "xdotool not installed (apt package xdotool)";
+  const fs::path session = dir / "session.sh";
+  std::ofstream(session) << std::string(ANGIORAY_BINARY) +
+      " gui --phantom-size 96x96x200 --size 800x600 --quit-after 60 --state-out " + file("window.json") +
+      " --screenshot " + file("window.png") + R"( &
+app=$!
+window=$(xdotool search --sync --onlyvisible --name '^angioray$' | head -1)
+sleep 1.5
+xdotool mousemove --window "$window" 200 300 sleep 0.3 mousedown 1 sleep 0.2   mousemove --window "$window" 230 300 sleep 0.2 mousemove --window "$window" 260 300 sleep 0.2   mousemove --window "$window" 280 300 sleep 0.3 mouseup 1
+sleep 1.5
+kill -TERM $app
+wait $app
+)";
+  const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1024x768x24' sh " + session.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "exit status " << status;
+  const Json state = readJson(dir / "window.json");
+  // 80 px at 0.5 deg per pixel, dragging right: theta 0 -> 320.
+  EXPECT_DOUBLE_EQ(state["state"]["view"]["angle_deg"].get<double>(), 320);
+  ASSERT_FALSE(state["runtime"]["shown"].is_null());  // the renderer's images reached the window
+  EXPECT_NEAR(state["runtime"]["shown"]["angle_deg"].get<double>(), 320, 1e-9);
+  OIIO::ImageBuf shot(file("window.png"));
+  ASSERT_TRUE(shot.read());
+  EXPECT_EQ(shot.spec().width, 800);
+}
+
+}  // namespace
