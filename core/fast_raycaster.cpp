@@ -113,13 +113,22 @@ glm::vec4 castRay(const Frame& f, const RowTiles& row, const glm::dvec3& origin,
   return f.params.compositing == Compositing::mip ? mipPixel(mipMaximum, f.params.mip) : ray.pixel();
 }
 
-void renderRow(const Frame& f, int y, RowTiles& row, Image& image, std::uint64_t& samples) {
+bool cancelRequested(const FastRenderOptions& options) {
+  return options.cancel && options.cancel->load(std::memory_order_relaxed);
+}
+
+// Renders one row; returns false if cancelled part-way. The flag is read every 64 pixels, so a
+// high-quality row of a large volume (~20 ms) still stops within a few milliseconds.
+bool renderRow(const Frame& f, int y, RowTiles& row, Image& image, std::uint64_t& samples) {
   const double axisMm = f.view.rayOrigin(0, y)[f.view.axis];
   // Rows above or below the domain see nothing (the reference's slab test, see sampleRange).
-  if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) return;
+  if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) return true;
   classifyRow(f, axisMm / f.volume.spacing[f.view.axis], row);
-  for (int x = 0; x < f.view.width; ++x)
+  for (int x = 0; x < f.view.width; ++x) {
+    if (x % 64 == 0 && cancelRequested(f.options)) return false;
     image.at(x, y) = castRay(f, row, f.view.rayOrigin(x, y), x, y, samples);
+  }
+  return true;
 }
 
 }  // namespace
@@ -159,13 +168,11 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
   tbb::parallel_for(tbb::blocked_range<int>(0, f.view.height), [&](const tbb::blocked_range<int>& rows) {
     RowTiles row;
     std::uint64_t local = 0;
-    for (int y = rows.begin(); y != rows.end(); ++y) {
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      if (!renderRow(f, y, row, image, local)) {
         cancelled = true;
         break;
       }
-      renderRow(f, y, row, image, local);
-    }
     samples += local;
   });
   if (stats) *stats = {samples.load(), templateMs, cancelled.load()};

@@ -19,7 +19,7 @@ namespace angio {
 
 struct FastRenderOptions {
   bool skipEmpty = true;                      // off: every sample evaluated (for measuring)
-  const std::atomic<bool>* cancel = nullptr;  // checked before each row; set -> returns early
+  const std::atomic<bool>* cancel = nullptr;  // checked every 64 pixels; set -> returns early
 };
 
 struct FastRenderStats {
