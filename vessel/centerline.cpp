@@ -87,7 +87,7 @@ glm::dvec3 volumeFrameMm(const Volume& volume, glm::dvec3 physicalMm) {
   return physicalToIndex(volume, physicalMm) * volume.spacing;
 }
 
-glm::ivec3 nearestVoxel(const Volume& volume, glm::dvec3 physicalMm) {
+glm::ivec3 nearestVoxelToPoint(const Volume& volume, glm::dvec3 physicalMm) {
   return glm::ivec3(glm::floor(physicalToIndex(volume, physicalMm) + 0.5));
 }
 

@@ -48,7 +48,7 @@ Centerlines centerlinesFromPhantom(const std::vector<PhantomPath>& paths);
 glm::dvec3 volumeFrameMm(const Volume& volume, glm::dvec3 physicalMm);
 
 // The voxel whose centre is nearest to a physical point (may lie outside the volume).
-glm::ivec3 nearestVoxel(const Volume& volume, glm::dvec3 physicalMm);
+glm::ivec3 nearestVoxelToPoint(const Volume& volume, glm::dvec3 physicalMm);
 
 // All points mapped into the volume frame; radii unchanged. Throws std::logic_error if
 // `centerlines` is already in the volume frame.

@@ -29,7 +29,7 @@ double huAt(const Volume& volume, glm::ivec3 index) {
   return huOfDensity(volume.densityAt(index.x, index.y, index.z));
 }
 
-glm::ivec3 nearestVoxel(const Volume& volume, glm::dvec3 physical) {
+glm::ivec3 voxelAtPoint(const Volume& volume, glm::dvec3 physical) {
   return glm::ivec3(glm::floor(physicalToIndex(volume, physical) + 0.5));
 }
 
@@ -146,7 +146,7 @@ TEST(Phantom, CenterlinesLieInsideTheContrastFilledLumen) {
   for (const PhantomPath& path : phantom.paths) {
     std::size_t inLumen = 0;
     for (const PhantomCenterlinePoint& point : path.points) {
-      const glm::ivec3 voxel = nearestVoxel(phantom.volume, point.positionMm);
+      const glm::ivec3 voxel = voxelAtPoint(phantom.volume, point.positionMm);
       ASSERT_TRUE(inside(phantom.volume, voxel)) << path.name;
       const double hu = huAt(phantom.volume, voxel);
       inLumen += hu >= 150 && hu <= 700;  // lumen 330..430 HU plus noise and partial volume
@@ -160,7 +160,7 @@ TEST(Phantom, TheAortaIsFullyOpacified) {
   const Phantom& phantom = mediumPhantom();
   for (const PhantomCenterlinePoint& point : phantom.paths.front().points) {
     if (point.radiusMm < 8) break;
-    const double hu = huAt(phantom.volume, nearestVoxel(phantom.volume, point.positionMm));
+    const double hu = huAt(phantom.volume, voxelAtPoint(phantom.volume, point.positionMm));
     EXPECT_GT(hu, 330);
     EXPECT_LT(hu, 500);
   }
@@ -235,10 +235,10 @@ TEST(Phantom, AirSurroundsTheBody) {
     }
   }
   // Between the knees, and in front of the shins.
-  EXPECT_LT(huAt(volume, nearestVoxel(volume, {0, 40, 500 - 1200})), -900);
-  EXPECT_LT(huAt(volume, nearestVoxel(volume, {90, -60, 300 - 1200})), -900);
+  EXPECT_LT(huAt(volume, voxelAtPoint(volume, {0, 40, 500 - 1200})), -900);
+  EXPECT_LT(huAt(volume, voxelAtPoint(volume, {90, -60, 300 - 1200})), -900);
   // Soft tissue inside: the middle of the left calf.
-  const double calf = huAt(volume, nearestVoxel(volume, {95, 70, 330 - 1200}));
+  const double calf = huAt(volume, voxelAtPoint(volume, {95, 70, 330 - 1200}));
   EXPECT_GT(calf, 0);
   EXPECT_LT(calf, 120);
 }

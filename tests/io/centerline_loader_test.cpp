@@ -677,7 +677,7 @@ TEST(CenterlineSharedData, VtpAndCsvGiveTheSameModel) {
 // The stored value (uncalibrated, read as HU) at the voxel nearest to a physical point, or
 // nullopt outside the volume.
 std::optional<double> valueAt(const Volume& volume, glm::dvec3 physicalMm) {
-  const glm::ivec3 voxel = nearestVoxel(volume, physicalMm);
+  const glm::ivec3 voxel = nearestVoxelToPoint(volume, physicalMm);
   if (!glm::all(glm::greaterThanEqual(voxel, glm::ivec3(0))) ||
       !glm::all(glm::lessThan(voxel, volume.dims))) {
     return std::nullopt;

@@ -74,7 +74,7 @@ TEST(CenterlineFrames, VolumeFrameIsVoxelIndexTimesSpacing) {
   EXPECT_NEAR(frame.x, 1.5, 1e-12);
   EXPECT_NEAR(frame.y, 5.625, 1e-12);
   EXPECT_NEAR(frame.z, 4.5, 1e-12);
-  EXPECT_EQ(nearestVoxel(volume, physical), glm::ivec3(3, 8, 2));
+  EXPECT_EQ(nearestVoxelToPoint(volume, physical), glm::ivec3(3, 8, 2));
 }
 
 // An oblique acquisition keeps its residual rotation in `direction` (core/volume.h): 20 degrees
