@@ -5,27 +5,16 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "tests/gui/run_angioray.h"
 #include <sys/wait.h>
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun runAngioray(const std::string& arguments) {
-  const std::string command = std::string(ANGIORAY_BINARY) + " " + arguments + " 2>&1";
-  CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer;
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using angio::testing::runAngioray;
+using CliRun = angio::testing::ProgramRun;
 
 int lineCount(const std::string& text) {
   int lines = 0;

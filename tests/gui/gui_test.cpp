@@ -12,6 +12,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "tests/gui/run_angioray.h"
 #include <nlohmann/json.hpp>
 #include <OpenImageIO/imagebuf.h>
 #include <sys/wait.h>
@@ -24,21 +26,8 @@ using Json = nlohmann::json;
 // Tall enough for the whole side panel (export section included) without scrolling.
 const std::string kSmall = " --phantom-size 96x96x200 --size 1000x900 --timeout 120";
 
-struct GuiRun {
-  int exitCode = -1;
-  std::string output;
-};
-
-GuiRun runAngioray(const std::string& arguments) {
-  const std::string command = std::string(ANGIORAY_BINARY) + " " + arguments + " 2>&1";
-  GuiRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer;
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using angio::testing::runAngioray;
+using GuiRun = angio::testing::ProgramRun;
 
 Json readJson(const fs::path& path) {
   std::ifstream in(path);
