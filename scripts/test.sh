@@ -9,6 +9,8 @@ jobs=$(nproc)
 ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
 
 "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DANGIORAY_SANITIZE=ON
+# The real-window test is left out here: Mesa's X11 GL driver is dlopen'ed and unloaded, so its
+# leaks show up from an "<unknown module>" that no suppression can name. It runs in Release above.
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
 LSAN_OPTIONS=suppressions="$root/tests/lsan.supp" \
-  ctest --test-dir "$root/build-asan" --output-on-failure -j"$jobs"
+  ctest --test-dir "$root/build-asan" --output-on-failure -j"$jobs" -E 'WindowUnderXvfb'
