@@ -1,19 +1,9 @@
 #include "io/render_metadata.h"
 
-#include <sstream>
+#include "core/number_text.h"
+
 
 namespace angio {
-
-namespace {
-
-std::string number(double value) {
-  std::ostringstream out;
-  out.precision(10);
-  out << value;
-  return out.str();
-}
-
-}  // namespace
 
 ImageMetadata renderMetadata(const RenderDescription& description) {
   const RenderParams& p = description.params;
@@ -21,22 +11,22 @@ ImageMetadata renderMetadata(const RenderDescription& description) {
       {"version", ANGIORAY_VERSION},
       {"dataset", description.dataset},
       {"axis", toString(p.axis)},
-      {"angle_deg", number(p.angleDeg)},
+      {"angle_deg", numberText(p.angleDeg)},
       {"mode", p.compositing == Compositing::mip ? "mip" : "dvr"},
-      {"isd", number(p.sampling.isd)},
-      {"osd", number(p.sampling.osd)},
+      {"isd", numberText(p.sampling.isd)},
+      {"osd", numberText(p.sampling.osd)},
       {"filter", toString(p.sampling.filter)},
-      {"ert", number(p.sampling.ert)},
+      {"ert", numberText(p.sampling.ert)},
   };
   if (description.quality) metadata["quality"] = toString(*description.quality);
   if (p.compositing == Compositing::mip) {
-    metadata["mip_window"] = number(p.mip.window);
-    metadata["mip_level"] = number(p.mip.level);
+    metadata["mip_window"] = numberText(p.mip.window);
+    metadata["mip_level"] = numberText(p.mip.level);
   } else {
     metadata["transfer_function"] = description.transferFunction;
     metadata["shading"] = p.shading.enabled ? "on" : "off";
-    metadata["ka"] = number(p.shading.ka);
-    metadata["kd"] = number(p.shading.kd);
+    metadata["ka"] = numberText(p.shading.ka);
+    metadata["kd"] = numberText(p.shading.kd);
   }
   return metadata;
 }

@@ -1,20 +1,14 @@
 #include "vessel/cpr.h"
 
+#include "core/number_text.h"
+
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace angio {
 
 namespace {
-
-std::string number(double value) {
-  std::ostringstream out;
-  out.precision(10);
-  out << value;
-  return out.str();
-}
 
 std::string rowMeaning(CprMode mode) {
   switch (mode) {
@@ -36,7 +30,7 @@ std::string columnMeaning(const CprLayout& layout) {
       return "the DVR image's columns shifted: column + " + std::to_string(layout.columnOffset);
     case CprMode::straightened:
       return "distance from the centerline along the vector of interest, panels of " +
-             number(layout.widthMm) + " mm per path";
+             numberText(layout.widthMm) + " mm per path";
   }
   return "";
 }
@@ -50,7 +44,7 @@ ViewGeometry cprView(const Volume& volume, Axis axis, double angleDeg, double pi
   // The view's image size is an int; keep it far from overflowing (the CPR checks its own size).
   const glm::dvec3 extent = domainExtent(volume);
   if (glm::length(extent) / pixelMm > 1e8) {
-    throw std::invalid_argument("CPR pixel size " + number(pixelMm) +
+    throw std::invalid_argument("CPR pixel size " + numberText(pixelMm) +
                                 " mm is too small for this volume");
   }
   RenderParams params;
@@ -91,11 +85,11 @@ std::map<std::string, std::string> cprMetadata(const CprLayout& layout,
       {"cpr_paths", paths},
       {"cpr_mode", toString(layout.mode)},
       {"axis", toString(description.axis)},
-      {"angle_deg", number(description.angleDeg)},
-      {"mm_per_pixel", number(layout.pixelMm)},
+      {"angle_deg", numberText(description.angleDeg)},
+      {"mm_per_pixel", numberText(layout.pixelMm)},
       {"cpr_rows", rowMeaning(layout.mode)},
       {"cpr_columns", columnMeaning(layout)},
-      {"cpr_width_mm", number(layout.widthMm)},
+      {"cpr_width_mm", numberText(layout.widthMm)},
       {"cpr_display", description.display},
       {"cpr_resampler", toString(description.resampler)},
   };

@@ -13,8 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using angio::testing::runAngioray;
-using CliRun = angio::testing::ProgramRun;
+using angio::test_support::runAngioray;
+using CliRun = angio::test_support::ProgramRun;
 
 int lineCount(const std::string& text) {
   int lines = 0;

@@ -26,8 +26,8 @@ using Json = nlohmann::json;
 // Tall enough for the whole side panel (export section included) without scrolling.
 const std::string kSmall = " --phantom-size 96x96x200 --size 1000x900 --timeout 120";
 
-using angio::testing::runAngioray;
-using GuiRun = angio::testing::ProgramRun;
+using angio::test_support::runAngioray;
+using GuiRun = angio::test_support::ProgramRun;
 
 Json readJson(const fs::path& path) {
   std::ifstream in(path);

@@ -6,7 +6,7 @@
 
 #include <sys/wait.h>
 
-namespace angio::testing {
+namespace angio::test_support {
 
 struct ProgramRun {
   int exitCode = -1;
@@ -24,4 +24,4 @@ inline ProgramRun runAngioray(const std::string& arguments) {
   return run;
 }
 
-}  // namespace angio::testing
+}  // namespace angio::test_support

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/vessel/tube_distance.h"
+
 #include <cmath>
 #include <random>
 
@@ -12,20 +14,7 @@ namespace angio {
 namespace {
 
 double signedDistance(const RoundCone& cone, glm::dvec3 p) {
-  const auto f = [&](double s) {
-    return glm::distance(p, glm::mix(cone.centre0, cone.centre1, s)) -
-           (cone.radius0 + s * (cone.radius1 - cone.radius0));
-  };
-  double lo = 0, hi = 1;
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (f(m1) < f(m2)) {
-      hi = m2;
-    } else {
-      lo = m1;
-    }
-  }
-  return std::min({f(0), f(1), f((lo + hi) / 2)});
+  return test_support::taperedSegmentSignedDistance(cone.centre0, cone.radius0, cone.centre1, cone.radius1, p);
 }
 
 // Every sample along the ray is inside the span exactly when it is inside the cone (samples

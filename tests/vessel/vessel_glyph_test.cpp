@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/vessel/tube_distance.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -129,20 +131,7 @@ void expectWellFormed(const RayRegions& regions, const ViewGeometry& view) {
 // Signed distance to a tube with radius interpolated along each segment:
 // min over segments and s of |p - c(s)| - r(s) (convex in s: ternary search).
 double segmentSignedDistance(const CenterlinePoint& a, const CenterlinePoint& b, glm::dvec3 p) {
-  const auto f = [&](double s) {
-    return glm::distance(p, glm::mix(a.positionMm, b.positionMm, s)) -
-           (a.radiusMm + s * (b.radiusMm - a.radiusMm));
-  };
-  double lo = 0, hi = 1;
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-    if (f(m1) < f(m2)) {
-      hi = m2;
-    } else {
-      lo = m1;
-    }
-  }
-  return std::min({f(0), f(1), f((lo + hi) / 2)});
+  return test_support::taperedSegmentSignedDistance(a.positionMm, a.radiusMm, b.positionMm, b.radiusMm, p);
 }
 
 double pointSegmentDistance(glm::dvec3 a, glm::dvec3 b, glm::dvec3 p) {
