@@ -15,6 +15,7 @@
 #include "core/fast_raycaster.h"
 #include "core/reference_raycaster.h"
 #include "core/slice_tiles.h"
+#include "vessel/vessel_glyph.h"
 
 namespace angio {
 
@@ -41,17 +42,49 @@ using FrameFunction = std::function<double(const RenderParams&)>;
 
 FrameTimes timeFrames(const std::string& level, const std::string& variant, int angles,
                       const RenderParams& base, const FrameFunction& frame) {
-  std::vector<double> ms, samples;
+  std::vector<double> ms, cpuMs, samples;
   for (int n = 0; n < angles; ++n) {
     RenderParams p = base;
     p.angleDeg = 360.0 * n / angles;
     const auto start = Clock::now();
+    const double cpuStart = processCpuMs();
     samples.push_back(frame(p));
     ms.push_back(msSince(start));
+    cpuMs.push_back(processCpuMs() - cpuStart);
   }
   return {level, variant, median(ms), *std::min_element(ms.begin(), ms.end()),
-          *std::max_element(ms.begin(), ms.end()), median(samples), angles};
+          *std::max_element(ms.begin(), ms.end()), median(cpuMs), median(samples), angles};
 }
+
+// The "vessel glyph" rows' renderer: intervals built per frame, then the fast raycaster.
+class GlyphFrames {
+ public:
+  GlyphFrames(const Volume& volume, const TransferFunction& tf, const SliceTiles& tiles,
+              const Centerlines& inVolumeFrame)
+      : volume_(volume), tiles_(tiles), builder_(inVolumeFrame, VesselGlyphSettings{}),
+        focus_(buildTable(tf)), context_(buildTable(translucent(tf))),
+        visible_(classifyTiles(tiles, RegionTables{&regions_, &focus_, &context_, nullptr})) {}
+
+  double operator()(const RenderParams& p) {
+    builder_.build(makeViewGeometry(volume_, p), regions_);
+    FastRenderStats stats;
+    renderFast(volume_, tiles_, visible_, RegionTables{&regions_, &focus_, &context_, nullptr}, p, {},
+               &stats);
+    return double(stats.samples);
+  }
+
+ private:
+  static TransferFunction translucent(TransferFunction tf) {
+    tf.modulators.opacityScale *= 0.3;
+    return tf;
+  }
+  const Volume& volume_;
+  const SliceTiles& tiles_;
+  RayRegionBuilder builder_;
+  RayRegions regions_;
+  TfTable focus_, context_;
+  std::vector<std::uint8_t> visible_;
+};
 
 }  // namespace
 
@@ -81,6 +114,8 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
     };
   };
   for (const Level& level : levels()) {
+    const auto& wanted = settings.levels;
+    if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), level.name) == wanted.end()) continue;
     RenderParams p;
     p.axis = settings.axis;
     p.sampling = level.sampling;
@@ -99,6 +134,12 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
         report.rows.push_back(timeFrames(level.name, "one thread", std::max(settings.angles / 6, 2), p,
                                          fastFrame({})));
       }
+    }
+    if (settings.vesselTree) {
+      GlyphFrames glyph(volume, tf, tiles, *settings.vesselTree);
+      report.rows.push_back(timeFrames(level.name, "vessel glyph", settings.angles, p, std::ref(glyph)));
+      std::fprintf(stderr, "bench: %s vessel glyph %.1f ms\n", level.name.c_str(),
+                   report.rows.back().medianMs);
     }
     if (settings.withReference)
       report.rows.push_back(timeFrames(level.name, "reference", settings.angles, p,
@@ -120,12 +161,13 @@ std::string formatTable(const BenchReport& r) {
                 "preprocessing (slice tiles) %.0f ms, TF classification %.1f ms, structures %.1f MiB\n",
                 r.preprocessMs, r.classifyMs, r.accelerationMiB);
   out << line;
-  std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %14s %7s\n", "level", "variant",
-                "median ms", "min ms", "max ms", "samples/frame", "frames");
+  std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %10s %14s %7s\n", "level", "variant",
+                "median ms", "min ms", "max ms", "cpu ms", "samples/frame", "frames");
   out << line;
   for (const FrameTimes& t : r.rows) {
-    std::snprintf(line, sizeof line, "%-17s %-24s %10.1f %10.1f %10.1f %14.3g %7d\n", t.level.c_str(),
-                  t.variant.c_str(), t.medianMs, t.minMs, t.maxMs, t.medianSamples, t.frames);
+    std::snprintf(line, sizeof line, "%-17s %-24s %10.1f %10.1f %10.1f %10.1f %14.3g %7d\n",
+                  t.level.c_str(), t.variant.c_str(), t.medianMs, t.minMs, t.maxMs, t.medianCpuMs,
+                  t.medianSamples, t.frames);
     out << line;
   }
   return out.str();
@@ -135,7 +177,8 @@ std::string toJson(const BenchReport& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const FrameTimes& t : r.rows)
     rows.push_back({{"level", t.level}, {"variant", t.variant}, {"median_ms", t.medianMs},
-                    {"min_ms", t.minMs}, {"max_ms", t.maxMs}, {"median_samples", t.medianSamples},
+                    {"min_ms", t.minMs}, {"max_ms", t.maxMs}, {"median_cpu_ms", t.medianCpuMs},
+                    {"median_samples", t.medianSamples},
                     {"frames", t.frames}});
   nlohmann::json j{{"dataset", r.dataset},
                    {"transfer_function", r.transferFunction},

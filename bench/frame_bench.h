@@ -2,12 +2,14 @@
 // Frame-time benchmark of the raycasters: for each quality level, render N angles about one axis
 // and report median, min and max ms per frame and samples per frame; then the same with one
 // technique switched off at a time ("contribution", thesis fig. 4.9 ff.).
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
+#include "vessel/centerline.h"
 
 namespace angio {
 
@@ -17,12 +19,18 @@ struct BenchSettings {
   bool withReference = false;  // also time the reference raycaster (slow)
   bool withContributions = true;
   int threads = 0;             // 0 = all cores
+  std::vector<std::string> levels;  // names of the levels to time; empty = all
+  // With centerlines (volume frame): also a "vessel glyph" row per level (thesis ch. 5): focus =
+  // the TF within 2x the vessel radius, context = the TF at 30 % opacity in a slab 20 mm in front
+  // of and behind the centerline, outside clipped; each frame builds its ray intervals.
+  std::optional<Centerlines> vesselTree;
 };
 
 struct FrameTimes {
   std::string level;        // "fast", "medium", "high", "medium-trilinear"
   std::string variant;      // "all", "reference", "no empty-space skipping", ...
   double medianMs = 0, minMs = 0, maxMs = 0;
+  double medianCpuMs = 0;    // CPU time of all threads per frame
   double medianSamples = 0;  // density reconstructions per frame
   int frames = 0;
 };

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <glm/glm.hpp>
 
@@ -63,6 +64,12 @@ class RegionCursor {
   Region at(double t) {
     while (next_ != end_ && t >= double(next_->end)) ++next_;
     return next_ != end_ && t >= double(next_->begin) ? next_->region : Region::outside;
+  }
+  // After at(t): the depth where the region next changes (the end of the interval holding t, or
+  // the begin of the next one), infinity when t is beyond every interval.
+  double nextChange(double t) const {
+    if (next_ == end_) return std::numeric_limits<double>::infinity();
+    return t >= double(next_->begin) ? double(next_->end) : double(next_->begin);
   }
 
  private:

@@ -1,11 +1,14 @@
 #include "core/fast_raycaster.h"
 
 #include <chrono>
+#include <limits>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "core/compositing.h"
+#include "core/ray_samplers.h"
 #include "core/ray_templates.h"
 #include "core/volume_sampling.h"
 
@@ -19,15 +22,31 @@ struct Frame {
   const std::vector<std::uint8_t>& visibleTiles;
   const RenderParams& params;
   const FastRenderOptions& options;
-  const RayRegions* regions;
+  const RegionTables& regionTables;
   ViewGeometry view;
   FrameTables tables;
   RayTemplates templates;
+  std::vector<std::int32_t> groupOfTile;
+
+  glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
+  // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
+  const TfTable* anyRegionTf = nullptr;
+
+  // The uncorrected TF of a region, for visibility queries (nullptr: clipped).
+  const TfTable* tfOf(Region region) const {
+    switch (region) {
+      case Region::focus: return regionTables.regions ? regionTables.focus : nullptr;
+      case Region::context: return regionTables.regions ? regionTables.context : nullptr;
+      case Region::outside: return regionTables.outside;
+    }
+    return nullptr;
+  }
 };
 
 // Per row: which tiles may hold a visible sample (DVR) or the largest density a sample can
-// take there (MIP), over the slices the row's samples read.
+// take there (MIP), over the slices the row's samples read. Rows reading the same slices share it.
 struct RowTiles {
+  SliceSpan span{0, -1};
   std::vector<std::uint8_t> visible;         // per tile (DVR)
   std::vector<std::uint16_t> maxDensity;     // per tile (MIP)
   std::vector<std::uint8_t> groupVisible;    // per tile group: any tile in it visible
@@ -36,6 +55,8 @@ struct RowTiles {
 
 void classifyRow(const Frame& f, double qa, RowTiles& row) {
   const SliceSpan span = slicesReadAt(f.tiles, qa, f.params.sampling.filter);
+  if (span.first == row.span.first && span.last == row.span.last) return;
+  row.span = span;
   const std::size_t perSlice = f.tiles.tilesPerSlice();
   const bool mip = f.params.compositing == Compositing::mip;
   row.maxDensity.assign(perSlice, 0);
@@ -45,16 +66,21 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
   const std::uint8_t bit = visibilityBit(f.params.sampling.filter);
   for (int s = span.first; s <= span.last; ++s) {
     const std::size_t base = perSlice * s;
-    for (std::size_t t = 0; t < perSlice; ++t) {
-      if (mip) row.maxDensity[t] = std::max(row.maxDensity[t], sliceMax[base + t]);
-      else row.visible[t] |= f.visibleTiles[base + t] & bit;
+    if (mip) {
+      std::uint16_t* __restrict out = row.maxDensity.data();
+      const std::uint16_t* __restrict in = sliceMax.data() + base;
+      for (std::size_t t = 0; t < perSlice; ++t) out[t] = std::max(out[t], in[t]);
+    } else {
+      std::uint8_t* __restrict out = row.visible.data();
+      const std::uint8_t* __restrict in = f.visibleTiles.data() + base;
+      for (std::size_t t = 0; t < perSlice; ++t) out[t] |= in[t] & bit;
     }
   }
   const std::size_t groups = std::size_t(f.tiles.groupsB()) * f.tiles.groupsC();
   row.groupVisible.assign(groups, 0);
   row.groupMaxDensity.assign(groups, 0);
-  for (int t = 0; t < int(perSlice); ++t) {
-    const int g = f.tiles.groupOf(t);
+  for (std::size_t t = 0; t < perSlice; ++t) {
+    const int g = f.groupOfTile[t];
     if (mip) row.groupMaxDensity[g] = std::max(row.groupMaxDensity[g], row.maxDensity[t]);
     else row.groupVisible[g] |= row.visible[t];
   }
@@ -68,67 +94,173 @@ bool maySkip(const Frame& f, std::uint8_t visible, std::uint16_t maxDensity, flo
   return !visible;
 }
 
-// The samples of one tile run, composited into the ray (DVR) or into its maximum (MIP).
-// Returns true when the ray terminated early.
-bool sampleRun(const Frame& f, const RaySamples& positions, const TileRun& run, RegionCursor& regions,
-               RayAccumulator& ray, float& mipMaximum) {
-  const Filter filter = f.params.sampling.filter;
-  const bool mip = f.params.compositing == Compositing::mip;
-  for (long k = run.firstSample; k < run.firstSample + run.count; ++k) {
-    const SampleTable* table = f.tables.of(regions.at(double(k) * f.view.sampleMm));
-    if (!table) continue;  // a clipped region
-    const glm::dvec3 q = positions.at(k);
-    const float density = sampleDensity(f.volume, q, filter);
-    if (mip) {
-      mipMaximum = std::max(mipMaximum, density);
-      continue;
-    }
-    const glm::vec4 rgba = (*table)[tableIndex(density)];
-    if (rgba.a <= 0.f) continue;
-    ray.add(rgba, shadingFactor(f.params.shading, sampleGradient(f.volume, q, filter),
-                                glm::vec3(f.view.viewDir)));
-    if (ray.opacity >= f.params.sampling.ert) return true;
-  }
-  return false;
-}
-
-glm::vec4 castRay(const Frame& f, const RowTiles& row, const glm::dvec3& origin, int x, int y,
-                  std::uint64_t& samples) {
-  const std::uint32_t firstGroup = f.templates.columnBegin[x], endGroup = f.templates.columnBegin[x + 1];
-  if (firstGroup == endGroup) return glm::vec4(0.f);  // the ray misses the volume
-  const RaySamples positions(f.volume, f.view, origin);
-  RegionCursor regions(f.regions, x, y);
+// What a ray carries from one tile group to the next.
+template <class Sampler>
+struct RayState {
+  RaySamples positions;
+  RegionCursor regions;
+  Sampler sampler;
   RayAccumulator ray;
   float mipMaximum = 0.f;
-  for (std::uint32_t g = firstGroup; g < endGroup; ++g) {
-    const GroupRun& group = f.templates.groups[g];
-    if (maySkip(f, row.groupVisible[group.group], row.groupMaxDensity[group.group], mipMaximum)) continue;
-    for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
-      const TileRun& run = f.templates.runs[r];
-      if (maySkip(f, row.visible[run.tile], row.maxDensity[run.tile], mipMaximum)) continue;
-      samples += run.count;
-      if (sampleRun(f, positions, run, regions, ray, mipMaximum)) return ray.pixel();
+  long resumeAt = std::numeric_limits<long>::min();  // samples before it are in a clipped region
+  bool terminated = false;
+};
+
+// The samples of one tile run, composited into the ray (DVR) or into its maximum (MIP).
+// Returns true when the ray terminated early. Samples the sampler proves invisible (or, in MIP,
+// not above the maximum) are skipped without interpolation; they could not change the pixel.
+template <bool Mip, class Sampler>
+bool sampleRun(const Frame& f, const TileRun& run, RayState<Sampler>& state) {
+  const bool skip = f.options.skipEmpty;
+  const glm::vec3 viewDir(f.view.viewDir);
+  Sampler& sampler = state.sampler;
+  for (long k = std::max(run.firstSample, state.resumeAt); k < run.firstSample + run.count; ++k) {
+    const double t = double(k) * f.view.sampleMm;
+    const Region region = state.regions.at(t);
+    const SampleTable* table = f.tables.of(region);
+    if (!table) {
+      // A clipped region (VesselGlyph): leap to just before its end. The sample there is
+      // classified as every other one, so the leap needs no exact division.
+      const double change = state.regions.nextChange(t);
+      if (change == std::numeric_limits<double>::infinity()) return true;  // nothing more shown
+      state.resumeAt = std::max(k + 1, long(change / f.view.sampleMm) - 1);
+      k = state.resumeAt - 1;
+      continue;
+    }
+    sampler.moveTo(state.positions.at(k));
+    if constexpr (Mip) {
+      if (skip && sampler.maxDensity() <= state.mipMaximum) {
+        k += sampler.samplesLeftInCell();
+        continue;
+      }
+      state.mipMaximum = std::max(state.mipMaximum, sampler.density());
+    } else {
+      if (skip && !sampler.mayBeVisible(*f.tfOf(region))) {
+        if (!sampler.mayBeVisible(*f.anyRegionTf)) k += sampler.samplesLeftInCell();
+        continue;
+      }
+      const glm::vec4 rgba = (*table)[tableIndex(sampler.density())];
+      if (rgba.a <= 0.f) continue;
+      const float shade = f.params.shading.enabled
+                              ? shadingFactor(f.params.shading, sampler.gradient(), viewDir)
+                              : 1.f;
+      state.ray.add(rgba, shade);
+      if (state.ray.opacity >= f.params.sampling.ert) return true;
     }
   }
-  return f.params.compositing == Compositing::mip ? mipPixel(mipMaximum, f.params.mip) : ray.pixel();
+  return false;
 }
 
 bool cancelRequested(const FastRenderOptions& options) {
   return options.cancel && options.cancel->load(std::memory_order_relaxed);
 }
 
-// Renders one row; returns false if cancelled part-way. The flag is read every 64 pixels, so a
-// high-quality row of a large volume (~20 ms) still stops within a few milliseconds.
-bool renderRow(const Frame& f, int y, RowTiles& row, Image& image, std::uint64_t& samples) {
+// Scratch of one worker, reused from row to row. A ray's state is made when a visible group
+// first needs it, so rays through empty space cost nothing.
+template <class Sampler>
+struct RowScratch {
+  RowTiles tiles;
+  std::vector<std::optional<RayState<Sampler>>> rays;
+};
+
+// The samples of one column's passage through a tile group. Returns true if the ray terminated.
+template <bool Mip, class Sampler>
+bool visitGroup(const Frame& f, const RowTiles& row, const GroupRun& group, RayState<Sampler>& state,
+                std::uint64_t& samples) {
+  if (maySkip(f, row.groupVisible[group.group], row.groupMaxDensity[group.group], state.mipMaximum))
+    return false;
+  for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
+    const TileRun& run = f.templates.runs[r];
+    const long end = run.firstSample + run.count;
+    if (end <= state.resumeAt) continue;
+    if (maySkip(f, row.visible[run.tile], row.maxDensity[run.tile], state.mipMaximum)) continue;
+    samples += end - std::max(run.firstSample, state.resumeAt);
+    if (sampleRun<Mip>(f, run, state)) return true;
+  }
+  return false;
+}
+
+// Renders one row group by group in front-to-back order (RayTemplates::visits), each ray keeping
+// its state in between; returns false if cancelled part-way (checked every 16 groups).
+template <bool Mip, class Sampler>
+bool renderRow(const Frame& f, int y, RowScratch<Sampler>& scratch, Image& image, std::uint64_t& samples) {
   const double axisMm = f.view.rayOrigin(0, y)[f.view.axis];
   // Rows above or below the domain see nothing (the reference's slab test, see sampleRange).
   if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) return true;
-  classifyRow(f, axisMm / f.volume.spacing[f.view.axis], row);
+  if (cancelRequested(f.options)) return false;
+  classifyRow(f, axisMm / f.volume.spacing[f.view.axis], scratch.tiles);
+  auto& rays = scratch.rays;
+  rays.resize(f.view.width);
+  for (auto& ray : rays) ray.reset();
+  const RayTemplates& templates = f.templates;
+  const bool mip = f.params.compositing == Compositing::mip;
+  for (std::size_t rank = 0; rank + 1 < templates.rankBegin.size(); ++rank) {
+    if (rank % 16 == 15 && cancelRequested(f.options)) return false;
+    const std::int32_t group = templates.rankGroup[rank];
+    if (!mip && maySkip(f, scratch.tiles.groupVisible[group], 0, 0.f)) continue;
+    for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
+      const GroupVisit visit = templates.visits[v];
+      auto& state = rays[visit.column];
+      if (!state)
+        state.emplace(RayState<Sampler>{RaySamples(f.volume, f.view, f.view.rayOrigin(int(visit.column), y)),
+                                        RegionCursor(f.regionTables.regions, int(visit.column), y),
+                                        Sampler(f.volume, f.rayStepQ)});
+      else if (state->terminated) continue;
+      state->terminated = visitGroup<Mip>(f, scratch.tiles, templates.groups[visit.groupRun], *state, samples);
+    }
+  }
   for (int x = 0; x < f.view.width; ++x) {
-    if (x % 64 == 0 && cancelRequested(f.options)) return false;
-    image.at(x, y) = castRay(f, row, f.view.rayOrigin(x, y), x, y, samples);
+    if (!rays[x]) image.at(x, y) = Mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
+                                       ? mipPixel(0.f, f.params.mip) : glm::vec4(0.f);
+    else image.at(x, y) = Mip ? mipPixel(rays[x]->mipMaximum, f.params.mip) : rays[x]->ray.pixel();
   }
   return true;
+}
+
+// Renders rows [first, end); returns false if cancelled.
+template <bool Mip, class Sampler>
+bool renderRows(const Frame& f, int first, int end, Image& image, std::uint64_t& samples) {
+  RowScratch<Sampler> scratch;
+  for (int y = first; y != end; ++y)
+    if (!renderRow<Mip>(f, y, scratch, image, samples)) return false;
+  return true;
+}
+
+using RowFunction = bool (*)(const Frame&, int, int, Image&, std::uint64_t&);
+
+template <bool Mip>
+RowFunction rowFunctionFor(Filter filter) {
+  switch (filter) {
+    case Filter::nearest: return renderRows<Mip, NearestRaySampler>;
+    case Filter::mean: return renderRows<Mip, MeanRaySampler>;
+    case Filter::trilinear: return renderRows<Mip, TrilinearRaySampler>;
+  }
+  return renderRows<Mip, NearestRaySampler>;
+}
+
+// The row renderer compiled for the frame's filter and compositing.
+RowFunction rowFunctionFor(const RenderParams& params) {
+  return params.compositing == Compositing::mip ? rowFunctionFor<true>(params.sampling.filter)
+                                                 : rowFunctionFor<false>(params.sampling.filter);
+}
+
+// A table whose visibility query answers "visible in any region's TF" (only integratedVisible set).
+TfTable unionVisibility(const RegionTables& tables) {
+  TfTable any;
+  for (int d = 0; d < kDensityLevels; ++d) {
+    bool visible = false;
+    for (const TfTable* table : {tables.regions ? tables.focus : nullptr,
+                                 tables.regions ? tables.context : nullptr, tables.outside})
+      visible = visible || (table && table->rgba[d].a > 0.f);
+    any.integratedVisible[d + 1] = any.integratedVisible[d] + (visible ? 1 : 0);
+  }
+  return any;
+}
+
+std::vector<std::int32_t> groupsOfTiles(const SliceTiles& tiles) {
+  std::vector<std::int32_t> groups(tiles.tilesPerSlice());
+  for (int t = 0; t < tiles.tilesPerSlice(); ++t) groups[t] = tiles.groupOf(t);
+  return groups;
 }
 
 }  // namespace
@@ -156,23 +288,22 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
                  const RenderParams& params, const FastRenderOptions& options,
                  FastRenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  Frame f{volume, tiles, visibleTiles, params, options, tables.regions, makeViewGeometry(volume, params),
-          frameTables(tables, params.sampling.osd), {}};
+  Frame f{volume, tiles, visibleTiles, params, options, tables, makeViewGeometry(volume, params),
+          frameTables(tables, params.sampling.osd), {}, groupsOfTiles(tiles)};
+  const TfTable anyRegion = unionVisibility(tables);
+  f.anyRegionTf = &anyRegion;
+  f.rayStepQ = RaySamples(volume, f.view, glm::dvec3(0.0)).stepQ;
   f.templates = buildRayTemplates(volume, f.view, tiles);
   const double templateMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   Image image = makeImage(f.view.width, f.view.height);
+  const RowFunction renderRowsFn = rowFunctionFor(params);
   std::atomic<std::uint64_t> samples{0};
   std::atomic<bool> cancelled{false};
   tbb::parallel_for(tbb::blocked_range<int>(0, f.view.height), [&](const tbb::blocked_range<int>& rows) {
-    RowTiles row;
     std::uint64_t local = 0;
-    for (int y = rows.begin(); y != rows.end(); ++y)
-      if (!renderRow(f, y, row, image, local)) {
-        cancelled = true;
-        break;
-      }
+    if (!renderRowsFn(f, rows.begin(), rows.end(), image, local)) cancelled = true;
     samples += local;
   });
   if (stats) *stats = {samples.load(), templateMs, cancelled.load()};

@@ -47,6 +47,34 @@ void appendColumn(const SliceTiles& tiles, const std::vector<TileRun>& runs, Ray
   }
 }
 
+// The position of a group in front-to-back order for rays with this in-plane direction.
+std::vector<std::uint32_t> groupRanks(const SliceTiles& tiles, const ViewGeometry& view) {
+  const bool backwardB = view.viewDir[tiles.axisB] < 0, backwardC = view.viewDir[tiles.axisC] < 0;
+  const int nb = tiles.groupsB(), nc = tiles.groupsC();
+  std::vector<std::uint32_t> rank(std::size_t(nb) * nc);
+  for (int gc = 0; gc < nc; ++gc)
+    for (int gb = 0; gb < nb; ++gb)
+      rank[std::size_t(gc) * nb + gb] =
+          std::uint32_t((backwardC ? nc - 1 - gc : gc) * nb + (backwardB ? nb - 1 - gb : gb));
+  return rank;
+}
+
+// Counting sort of every column's group runs by group rank, columns ascending within a rank.
+void sortVisitsFrontToBack(const SliceTiles& tiles, const ViewGeometry& view, RayTemplates& templates) {
+  const std::vector<std::uint32_t> rank = groupRanks(tiles, view);
+  templates.rankGroup.assign(rank.size(), 0);
+  for (std::size_t g = 0; g < rank.size(); ++g) templates.rankGroup[rank[g]] = std::int32_t(g);
+  std::vector<std::uint32_t>& begin = templates.rankBegin;
+  begin.assign(rank.size() + 1, 0);
+  for (const GroupRun& group : templates.groups) ++begin[rank[group.group] + 1];
+  for (std::size_t r = 1; r < begin.size(); ++r) begin[r] += begin[r - 1];
+  std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+  templates.visits.resize(templates.groups.size());
+  for (std::uint32_t x = 0; x + 1 < templates.columnBegin.size(); ++x)
+    for (std::uint32_t g = templates.columnBegin[x]; g < templates.columnBegin[x + 1]; ++g)
+      templates.visits[next[rank[templates.groups[g].group]]++] = {x, g};
+}
+
 }  // namespace
 
 RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles) {
@@ -56,6 +84,7 @@ RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, c
   templates.columnBegin.reserve(view.width + 1);
   for (const auto& runs : perColumn) appendColumn(tiles, runs, templates);
   templates.columnBegin.push_back(std::uint32_t(templates.groups.size()));
+  sortVisitsFrontToBack(tiles, view, templates);
   return templates;
 }
 

@@ -25,10 +25,27 @@ struct GroupRun {
   std::uint32_t endRun = 0;
 };
 
+// One column's passage through one tile group: templates.groups[groupRun] of column `column`.
+struct GroupVisit {
+  std::uint32_t column = 0;
+  std::uint32_t groupRun = 0;
+};
+
 struct RayTemplates {
   std::vector<std::uint32_t> columnBegin;  // groups of column x: [columnBegin[x], columnBegin[x + 1])
   std::vector<GroupRun> groups;
   std::vector<TileRun> runs;
+  // Every column's group runs in one front-to-back order for all rays (thesis sec. 4.3.1, fig.
+  // 4.4: the view's quadrant decides the order). A ray's group indices along b and along c each
+  // change monotonically, so ordering groups by (c, b), each reversed where the ray direction's
+  // component is negative, lists every ray's groups in its own order; columns follow by x within
+  // a group. A row rendered in this order reads each group's voxels (32^2 of each slice it reads)
+  // once for all rays through it, from the L1 cache, instead of once per ray.
+  std::vector<GroupVisit> visits;
+  // The visits through the group of rank r: [rankBegin[r], rankBegin[r + 1]), that group is
+  // rankGroup[r]; so a row skips a group no ray can see there in one step.
+  std::vector<std::uint32_t> rankBegin;
+  std::vector<std::int32_t> rankGroup;
 };
 
 // Sample positions are computed with the same arithmetic as the raycasters (RaySamples),

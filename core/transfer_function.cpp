@@ -45,11 +45,4 @@ TfTable buildTable(const TransferFunction& tf) {
   return table;
 }
 
-bool TfTable::anyVisible(int lo, int hi) const {
-  if (hi < lo) return false;  // before clamping: [5000, 4500] is empty, not density 4095
-  lo = std::clamp(lo, 0, kDensityLevels - 1);
-  hi = std::clamp(hi, 0, kDensityLevels - 1);
-  return integratedVisible[hi + 1] - integratedVisible[lo] > 0;
-}
-
 }  // namespace angio

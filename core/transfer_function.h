@@ -49,7 +49,12 @@ struct TfTable {
   std::array<int, kDensityLevels + 1> integratedVisible{};
 
   // True iff some density in [lo, hi] (clamped to the table) has opacity > 0. O(1).
-  bool anyVisible(int lo, int hi) const;
+  bool anyVisible(int lo, int hi) const {
+    if (hi < lo) return false;  // before clamping: [5000, 4500] is empty, not density 4095
+    lo = lo < 0 ? 0 : (lo > kDensityLevels - 1 ? kDensityLevels - 1 : lo);
+    hi = hi < 0 ? 0 : (hi > kDensityLevels - 1 ? kDensityLevels - 1 : hi);
+    return integratedVisible[hi + 1] - integratedVisible[lo] > 0;
+  }
 };
 
 TfTable buildTable(const TransferFunction& tf);

@@ -37,9 +37,10 @@ inline bool hasAllNeighbours(const Volume& volume, glm::ivec3 v, int below, int 
          glm::all(glm::lessThan(v + above, volume.dims));
 }
 
-// Central difference along one axis from the two neighbour densities, in HU per mm.
+// Central difference along one axis from the two neighbour densities, in HU per mm. A multiply
+// by 1 / (2 spacing), not a divide: a gradient costs 24 of these per cell at the high level.
 inline float centralDifference(float below, float above, double spacing) {
-  return (above - below) / float(2.0 * spacing);
+  return (above - below) * float(0.5 / spacing);
 }
 
 // Central differences at a voxel, neighbours clamped.

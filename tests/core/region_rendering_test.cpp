@@ -90,16 +90,22 @@ TEST(RegionRendering, FastMatchesReferenceWithRegions) {
   context.points[2].opacity = 0.05;
   context.points[3].opacity = 0.1;
   const TfTable focusTable = buildTable(vessels), contextTable = buildTable(context);
+  // The outside clipped; or the context clipped between a rendered focus and outside, so the
+  // fast raycaster's leaps over clipped stretches start and end inside rays.
+  const std::pair<const TfTable*, const TfTable*> contextAndOutside[] = {{&contextTable, nullptr},
+                                                                         {nullptr, &contextTable}};
   for (Axis axis : {Axis::k, Axis::j})
-    for (double angle : {20.0, 110.0}) {
+    for (double angle : {20.0, 110.0})
+    for (Quality quality : {Quality::medium, Quality::high})
+    for (const auto& [contextTf, outsideTf] : contextAndOutside) {
       RenderParams p;
       p.axis = axis;
       p.angleDeg = angle;
-      p.sampling = qualitySampling(Quality::medium);
+      p.sampling = qualitySampling(quality);
       p.sampling.ert = 1.0;
       const ViewGeometry view = makeViewGeometry(volume, p);
       // Per-pixel intervals that vary across the image: focus around depth 0 with a width that
-      // depends on x, context behind it.
+      // depends on x, a gap, context behind it.
       RayRegions regions;
       regions.width = view.width;
       regions.height = view.height;
@@ -108,10 +114,10 @@ TEST(RegionRendering, FastMatchesReferenceWithRegions) {
           regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
           const float half = 5.f + float((x * 7 + y * 3) % 40);
           regions.intervals.push_back({-half, half, Region::focus});
-          regions.intervals.push_back({half, half + 60.f, Region::context});
+          regions.intervals.push_back({half + 7.3f, half + 60.f, Region::context});
         }
       regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
-      const RegionTables tables{&regions, &focusTable, &contextTable, nullptr};
+      const RegionTables tables{&regions, &focusTable, contextTf, outsideTf};
       const SliceTiles tiles = buildSliceTiles(volume, axis);
       const Image reference = renderReference(volume, tables, p);
       const Image fast = renderFast(volume, tiles, classifyTiles(tiles, tables), tables, p);
@@ -122,7 +128,8 @@ TEST(RegionRendering, FastMatchesReferenceWithRegions) {
           worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
           brightest = std::max(brightest, reference.pixels[n][c]);
         }
-      EXPECT_LE(worst, 1.f / 255.f) << "axis " << toString(axis) << " angle " << angle;
+      EXPECT_LE(worst, 1.f / 255.f) << "axis " << toString(axis) << " angle " << angle << " quality "
+                                    << int(quality) << (outsideTf ? " outside shown" : " outside clipped");
       EXPECT_GT(brightest, 0.2f);  // the regions render something
     }
 }

@@ -1,0 +1,166 @@
+#pragma once
+// Reconstruction along a ray for the fast raycaster: one type per filter, so the inner loop is
+// compiled once per filter without a branch on it. Each gives the bits of core/volume_sampling.h's
+// sampleDensity / sampleGradient (the reference's path): the same voxels, the same operations in
+// the same order.
+//
+// The trilinear sampler keeps the thesis's cell cache (sec. 4.3.4): the eight corner densities of
+// the ray's current cell with their min/max, and, from the first visible sample in the cell on, the
+// eight corner gradients. At the high level (osd 0.3) about three consecutive samples share a cell,
+// so a cell's voxels are read once, and a sample in a cell whose densities the TF hides costs one
+// O(1) query of the integrated opacity table instead of an interpolation (cell transparency: a
+// trilinear value lies between the corners' min and max, so its table entry does too).
+//
+// Use per sample: moveTo(q), then mayBeVisible / maxDensity, then density(), then gradient().
+// samplesLeftInCell() tells how many of the following samples (q + j step, j = 1, 2, ...)
+// surely fall into the same cell (the same voxels), so a ray can leap over a hidden cell at once
+// (0 where the sampler does not know).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "core/transfer_function.h"
+#include "core/volume.h"
+#include "core/volume_sampling.h"
+
+namespace angio {
+
+class NearestRaySampler {
+ public:
+  NearestRaySampler(const Volume& volume, const glm::dvec3&) : volume_(volume) {}
+
+  void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
+  bool mayBeVisible(const TfTable&) const { return true; }
+  float maxDensity() const { return 4095.f; }
+  long samplesLeftInCell() const { return 0; }
+  float density() const { return float(volume_.densityAt(voxel_.x, voxel_.y, voxel_.z)); }
+  glm::vec3 gradient() const { return nearestGradient(volume_, voxel_); }
+
+ private:
+  const Volume& volume_;
+  glm::ivec3 voxel_{0};
+};
+
+// Thesis sec. 4.4: the nearest voxel and its six face neighbours; the gradient is the nearest's.
+class MeanRaySampler {
+ public:
+  MeanRaySampler(const Volume& volume, const glm::dvec3&) : volume_(volume) {}
+
+  void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
+  bool mayBeVisible(const TfTable&) const { return true; }
+  float maxDensity() const { return 4095.f; }
+  long samplesLeftInCell() const { return 0; }
+  float density() const { return meanDensity(volume_, voxel_); }
+  glm::vec3 gradient() const { return nearestGradient(volume_, voxel_); }
+
+ private:
+  const Volume& volume_;
+  glm::ivec3 voxel_{0};
+};
+
+class TrilinearRaySampler {
+ public:
+  // `step`: from one sample of the ray to the next, in voxel units.
+  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step)
+      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)) {
+    for (int axis = 0; axis < 3; ++axis) {
+      forward_[axis] = step[axis] > 0;
+      inverseStep_[axis] = step[axis] != 0 ? 1.0 / std::abs(step[axis]) : 0.0;
+    }
+  }
+
+  void moveTo(const glm::dvec3& q) {
+    q_ = q;
+    cell_ = cellAt(volume_, q);
+    if (cell_.base != cached_) load();
+  }
+  bool mayBeVisible(const TfTable& table) const { return table.anyVisible(lo_, hi_); }
+  float maxDensity() const { return float(hi_); }
+
+  // The j >= 1 with base <= q + j step < base + 1 on every axis, less a margin far above the
+  // rounding of the sample positions (1e-7 voxel), so the count never includes a sample of the
+  // next cell. (Conservative at the volume's last cell, whose far face cellAt also includes.)
+  long samplesLeftInCell() const {
+    double limit = 1e18;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (inverseStep_[axis] == 0) continue;
+      const double room = forward_[axis] ? cached_[axis] + 1 - q_[axis] : q_[axis] - cached_[axis];
+      limit = std::min(limit, room * inverseStep_[axis]);
+    }
+    return std::max(long(std::ceil(limit - 1e-7)) - 1, 0L);
+  }
+  float density() const {
+    return trilinear(cell_, [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; });
+  }
+  glm::vec3 gradient() {
+    if (!gradientsLoaded_) loadGradients();
+    return trilinear(cell_, [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; });
+  }
+
+ private:
+  static int corner(int dx, int dy, int dz) { return dx + 2 * dy + 4 * dz; }
+
+  // Cell bases whose corners' six neighbours all exist: gradients through pointer offsets.
+  struct Box {
+    glm::ivec3 lo{0}, hi{-1};
+    bool holds(glm::ivec3 v) const {
+      return glm::all(glm::greaterThanEqual(v, lo)) && glm::all(glm::lessThanEqual(v, hi));
+    }
+  };
+  static Box interiorBox(const Volume& volume) { return {glm::ivec3(1), volume.dims - 3}; }
+
+  void load() {
+    cached_ = cell_.base;
+    gradientsLoaded_ = false;
+    const Voxel* base = volume_.voxels.data() + volume_.indexOf(cached_.x, cached_.y, cached_.z);
+    int lo = 4095, hi = 0;
+    for (int dz = 0; dz < 2; ++dz)
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+          const int d = densityOf(base[dx * steps_.x + dy * steps_.y + dz * steps_.z]);
+          corners_[corner(dx, dy, dz)] = float(d);
+          lo = std::min(lo, d);
+          hi = std::max(hi, d);
+        }
+    lo_ = lo;
+    hi_ = hi;
+  }
+
+  // As trilinearGradient computes each corner's central differences (volume_sampling.h).
+  void loadGradients() {
+    gradientsLoaded_ = true;
+    if (interior_.holds(cached_)) {
+      const Voxel* base = volume_.voxels.data() + volume_.indexOf(cached_.x, cached_.y, cached_.z);
+      const glm::ivec3 strides = voxelStrides(volume_);
+      for (int dz = 0; dz < 2; ++dz)
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx)
+            gradients_[corner(dx, dy, dz)] = voxelGradientInterior(
+                base + dx * strides.x + dy * strides.y + dz * strides.z, strides, volume_.spacing);
+      return;
+    }
+    for (int dz = 0; dz < 2; ++dz)
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx)
+          gradients_[corner(dx, dy, dz)] =
+              voxelGradient(volume_, clampIndex(volume_, cached_ + glm::ivec3(dx, dy, dz)));
+  }
+
+  const Volume& volume_;
+  const glm::ivec3 steps_;
+  const Box interior_;
+  glm::dvec3 inverseStep_{0.0};  // 1 / |step| per axis, 0 where the ray does not move along it
+  glm::bvec3 forward_{false};
+  Cell cell_;
+  glm::dvec3 q_{0.0};
+  glm::ivec3 cached_{-1};
+  bool gradientsLoaded_ = false;
+  int lo_ = 0, hi_ = 0;
+  std::array<float, 8> corners_;       // filled by load() before any use
+  std::array<glm::vec3, 8> gradients_;  // filled by loadGradients() before any use
+};
+
+}  // namespace angio
