@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
@@ -56,6 +57,42 @@ FrameTimes timeFrames(const std::string& level, const std::string& variant, int 
           *std::max_element(ms.begin(), ms.end()), median(cpuMs), median(samples), angles};
 }
 
+// The techniques the bench switches off one at a time (contribution) or on alone (potential).
+struct Switches {
+  FastRenderOptions options;
+  bool ert = true;
+  bool threads = true;
+};
+
+struct Technique {
+  std::string name;
+  void (*set)(Switches&, bool on);
+};
+
+std::vector<Technique> techniques() {
+  return {
+      {"tile groups", [](Switches& s, bool on) { s.options.skipGroups = on; }},
+      {"tiles", [](Switches& s, bool on) { s.options.skipTiles = on; }},
+      {"cell skipping", [](Switches& s, bool on) { s.options.skipCells = on; }},
+      {"ERT", [](Switches& s, bool on) { s.ert = on; }},
+      {"threads", [](Switches& s, bool on) { s.threads = on; }},
+  };
+}
+
+Switches allBut(const Technique& technique) {
+  Switches s;
+  technique.set(s, false);
+  return s;
+}
+
+// Every technique off but `technique` (none: all off).
+Switches onlyWith(const Technique* technique) {
+  Switches s;
+  for (const Technique& t : techniques()) t.set(s, false);
+  if (technique) technique->set(s, true);
+  return s;
+}
+
 // The "vessel glyph" rows' renderer: intervals built per frame, then the fast raycaster.
 class GlyphFrames {
  public:
@@ -68,8 +105,10 @@ class GlyphFrames {
   double operator()(const RenderParams& p) {
     builder_.build(makeViewGeometry(volume_, p), regions_);
     FastRenderStats stats;
-    renderFast(volume_, tiles_, visible_, RegionTables{&regions_, &focus_, &context_, nullptr}, p, {},
-               &stats);
+    FastRenderOptions options;
+    options.recycle = &previous_;
+    previous_ = renderFast(volume_, tiles_, visible_, RegionTables{&regions_, &focus_, &context_, nullptr},
+                           p, options, &stats);
     return double(stats.samples);
   }
 
@@ -84,7 +123,43 @@ class GlyphFrames {
   RayRegions regions_;
   TfTable focus_, context_;
   std::vector<std::uint8_t> visible_;
+  Image previous_;
 };
+
+// Interruption latency (the progressive GUI restarts at fast on every change): high-quality frames
+// at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> renderFast
+// returned. Frames recycle memory, as in the GUI after its first high-quality frame (the very
+// first one spends ~30 ms uninterruptibly in page faults for its image).
+std::vector<double> interruptLatencies(const Volume& volume, const SliceTiles& tiles,
+                                       const std::vector<std::uint8_t>& visible, const TfTable& table,
+                                       Axis axis, int count) {
+  std::vector<double> latencies;
+  RenderParams warmUp;
+  warmUp.axis = axis;
+  warmUp.sampling = qualitySampling(Quality::high);
+  Image previous = renderFast(volume, tiles, visible, table, warmUp);
+  for (int n = 0; n < count; ++n) {
+    RenderParams p;
+    p.axis = axis;
+    p.angleDeg = 360.0 * n / count + 7.0;
+    p.sampling = qualitySampling(Quality::high);
+    std::atomic<bool> cancel{false};
+    FastRenderOptions options;
+    options.cancel = &cancel;
+    options.recycle = &previous;
+    Clock::time_point returnedAt;
+    std::thread worker([&] {
+      previous = renderFast(volume, tiles, visible, table, p, options);
+      returnedAt = Clock::now();
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(10 + (n * 37) % 190));
+    const Clock::time_point cancelledAt = Clock::now();
+    cancel = true;
+    worker.join();
+    latencies.push_back(std::chrono::duration<double, std::milli>(returnedAt - cancelledAt).count());
+  }
+  return latencies;
+}
 
 }  // namespace
 
@@ -104,14 +179,29 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
   start = Clock::now();
   const std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
   report.classifyMs = msSince(start);
+  const std::vector<double> latencies =
+      interruptLatencies(volume, tiles, visible, table, settings.axis, std::max(settings.angles, 12));
+  report.interruptMedianMs = median(latencies);
+  report.interruptMaxMs = *std::max_element(latencies.begin(), latencies.end());
+  report.interrupts = int(latencies.size());
   report.accelerationMiB = (tiles.minDensity.size() * 8 + visible.size()) / 1048576.0;  // 4 uint16 ranges + bits
 
+  // Frames recycle the previous frame's memory, as the progressive renderer does.
+  Image previous;
   auto fastFrame = [&](FastRenderOptions options) {
-    return [&, options](const RenderParams& p) {
+    return [&, options](const RenderParams& p) mutable {
       FastRenderStats stats;
-      renderFast(volume, tiles, visible, table, p, options, &stats);
+      options.recycle = &previous;
+      previous = renderFast(volume, tiles, visible, table, p, options, &stats);
       return double(stats.samples);
     };
+  };
+  auto timeVariant = [&](const std::string& level, const std::string& variant, int angles,
+                         RenderParams p, const Switches& switches) {
+    if (!switches.ert) p.sampling.ert = 1.0;
+    std::optional<tbb::global_control> oneThread;
+    if (!switches.threads) oneThread.emplace(tbb::global_control::max_allowed_parallelism, 1);
+    return timeFrames(level, variant, angles, p, fastFrame(switches.options));
   };
   for (const Level& level : levels()) {
     const auto& wanted = settings.levels;
@@ -122,17 +212,16 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
     report.rows.push_back(timeFrames(level.name, "all", settings.angles, p, fastFrame({})));
     std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
     if (settings.withContributions) {
-      RenderParams noErt = p;
-      noErt.sampling.ert = 1.0;
-      report.rows.push_back(timeFrames(level.name, "no ERT", settings.angles, noErt, fastFrame({})));
-      FastRenderOptions noSkip;
-      noSkip.skipEmpty = false;
-      report.rows.push_back(timeFrames(level.name, "no empty-space skipping",
-                                       std::max(settings.angles / 6, 2), p, fastFrame(noSkip)));
-      {
-        tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-        report.rows.push_back(timeFrames(level.name, "one thread", std::max(settings.angles / 6, 2), p,
-                                         fastFrame({})));
+      // Thesis fig. 4.9 ff.: "contribution" = everything but one technique, at every level;
+      // "potential" = one technique alone, at the fast level only (without any, a medium frame
+      // takes seconds).
+      const int few = std::min(std::max(settings.angles / 6, 6), settings.angles);
+      for (const Technique& t : techniques())
+        report.rows.push_back(timeVariant(level.name, "no " + t.name, few, p, allBut(t)));
+      if (level.name == "fast") {
+        report.rows.push_back(timeVariant(level.name, "none", few, p, onlyWith(nullptr)));
+        for (const Technique& t : techniques())
+          report.rows.push_back(timeVariant(level.name, "only " + t.name, few, p, onlyWith(&t)));
       }
     }
     if (settings.vesselTree) {
@@ -161,6 +250,9 @@ std::string formatTable(const BenchReport& r) {
                 "preprocessing (slice tiles) %.0f ms, TF classification %.1f ms, structures %.1f MiB\n",
                 r.preprocessMs, r.classifyMs, r.accelerationMiB);
   out << line;
+  std::snprintf(line, sizeof line, "interrupting a high-quality frame: median %.2f ms, max %.2f ms (%d frames)\n",
+                r.interruptMedianMs, r.interruptMaxMs, r.interrupts);
+  out << line;
   std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %10s %14s %7s\n", "level", "variant",
                 "median ms", "min ms", "max ms", "cpu ms", "samples/frame", "frames");
   out << line;
@@ -187,6 +279,8 @@ std::string toJson(const BenchReport& r) {
                    {"acceleration_mib", r.accelerationMiB},
                    {"preprocess_ms", r.preprocessMs},
                    {"classify_ms", r.classifyMs},
+                   {"interrupt_median_ms", r.interruptMedianMs},
+                   {"interrupt_max_ms", r.interruptMaxMs},
                    {"threads", r.threads},
                    {"frames", rows}};
   return j.dump(2);

@@ -43,6 +43,9 @@ struct BenchReport {
   double accelerationMiB = 0;     // slice tiles + classification
   double preprocessMs = 0;        // building the slice tiles for the axis
   double classifyMs = 0;          // classifying them for the TF
+  // A high-quality frame cancelled at a random moment: cancel flag set -> renderFast returned.
+  double interruptMedianMs = 0, interruptMaxMs = 0;
+  int interrupts = 0;
   int threads = 0;
   std::vector<FrameTimes> rows;
 };

@@ -29,6 +29,7 @@ struct Frame {
   std::vector<std::int32_t> groupOfTile;
 
   glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
+  bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
   // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
   const TfTable* anyRegionTf = nullptr;
 
@@ -88,8 +89,9 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
 
 // A tile (or group) may be skipped when no sample in it can change the pixel: nothing visible
 // there (DVR), or nothing denser than the maximum so far (MIP).
-bool maySkip(const Frame& f, std::uint8_t visible, std::uint16_t maxDensity, float mipMaximum) {
-  if (!f.options.skipEmpty) return false;
+bool maySkip(bool enabled, const Frame& f, std::uint8_t visible, std::uint16_t maxDensity,
+             float mipMaximum) {
+  if (!enabled) return false;
   if (f.params.compositing == Compositing::mip) return float(maxDensity) <= mipMaximum;
   return !visible;
 }
@@ -111,7 +113,7 @@ struct RayState {
 // not above the maximum) are skipped without interpolation; they could not change the pixel.
 template <bool Mip, class Sampler>
 bool sampleRun(const Frame& f, const TileRun& run, RayState<Sampler>& state) {
-  const bool skip = f.options.skipEmpty;
+  const bool skip = f.skipCells;
   const glm::vec3 viewDir(f.view.viewDir);
   Sampler& sampler = state.sampler;
   for (long k = std::max(run.firstSample, state.resumeAt); k < run.firstSample + run.count; ++k) {
@@ -167,13 +169,15 @@ struct RowScratch {
 template <bool Mip, class Sampler>
 bool visitGroup(const Frame& f, const RowTiles& row, const GroupRun& group, RayState<Sampler>& state,
                 std::uint64_t& samples) {
-  if (maySkip(f, row.groupVisible[group.group], row.groupMaxDensity[group.group], state.mipMaximum))
+  if (maySkip(f.skipGroups, f, row.groupVisible[group.group], row.groupMaxDensity[group.group],
+              state.mipMaximum))
     return false;
   for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
     const TileRun& run = f.templates.runs[r];
     const long end = run.firstSample + run.count;
     if (end <= state.resumeAt) continue;
-    if (maySkip(f, row.visible[run.tile], row.maxDensity[run.tile], state.mipMaximum)) continue;
+    if (maySkip(f.skipTiles, f, row.visible[run.tile], row.maxDensity[run.tile], state.mipMaximum))
+      continue;
     samples += end - std::max(run.firstSample, state.resumeAt);
     if (sampleRun<Mip>(f, run, state)) return true;
   }
@@ -181,12 +185,15 @@ bool visitGroup(const Frame& f, const RowTiles& row, const GroupRun& group, RayS
 }
 
 // Renders one row group by group in front-to-back order (RayTemplates::visits), each ray keeping
-// its state in between; returns false if cancelled part-way (checked every 16 groups).
+// its state in between; returns false if cancelled part-way (checked every 4 groups).
 template <bool Mip, class Sampler>
 bool renderRow(const Frame& f, int y, RowScratch<Sampler>& scratch, Image& image, std::uint64_t& samples) {
   const double axisMm = f.view.rayOrigin(0, y)[f.view.axis];
   // Rows above or below the domain see nothing (the reference's slab test, see sampleRange).
-  if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) return true;
+  if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) {
+    std::fill_n(&image.at(0, y), f.view.width, glm::vec4(0.f));
+    return true;
+  }
   if (cancelRequested(f.options)) return false;
   classifyRow(f, axisMm / f.volume.spacing[f.view.axis], scratch.tiles);
   auto& rays = scratch.rays;
@@ -195,9 +202,9 @@ bool renderRow(const Frame& f, int y, RowScratch<Sampler>& scratch, Image& image
   const RayTemplates& templates = f.templates;
   const bool mip = f.params.compositing == Compositing::mip;
   for (std::size_t rank = 0; rank + 1 < templates.rankBegin.size(); ++rank) {
-    if (rank % 16 == 15 && cancelRequested(f.options)) return false;
+    if (rank % 4 == 3 && cancelRequested(f.options)) return false;
     const std::int32_t group = templates.rankGroup[rank];
-    if (!mip && maySkip(f, scratch.tiles.groupVisible[group], 0, 0.f)) continue;
+    if (!mip && maySkip(f.skipGroups, f, scratch.tiles.groupVisible[group], 0, 0.f)) continue;
     for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
@@ -242,6 +249,17 @@ RowFunction rowFunctionFor(Filter filter) {
 RowFunction rowFunctionFor(const RenderParams& params) {
   return params.compositing == Compositing::mip ? rowFunctionFor<true>(params.sampling.filter)
                                                  : rowFunctionFor<false>(params.sampling.filter);
+}
+
+// The frame's image: every pixel is written by its row, so recycled memory needs no clearing.
+Image frameImage(const ViewGeometry& view, Image* recycle) {
+  if (!recycle) return makeImage(view.width, view.height);
+  Image image = std::move(*recycle);
+  *recycle = Image{};
+  image.width = view.width;
+  image.height = view.height;
+  image.pixels.resize(std::size_t(view.width) * view.height);
+  return image;
 }
 
 // A table whose visibility query answers "visible in any region's TF" (only integratedVisible set).
@@ -292,12 +310,19 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
           frameTables(tables, params.sampling.osd), {}, groupsOfTiles(tiles)};
   const TfTable anyRegion = unionVisibility(tables);
   f.anyRegionTf = &anyRegion;
+  f.skipGroups = options.skipEmpty && options.skipGroups;
+  f.skipTiles = options.skipEmpty && options.skipTiles;
+  f.skipCells = options.skipEmpty && options.skipCells;
   f.rayStepQ = RaySamples(volume, f.view, glm::dvec3(0.0)).stepQ;
-  f.templates = buildRayTemplates(volume, f.view, tiles);
+  f.templates = buildRayTemplates(volume, f.view, tiles, options.cancel);
   const double templateMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (cancelRequested(options)) {
+    if (stats) *stats = {0, templateMs, true};
+    return makeImage(f.view.width, f.view.height);
+  }
 
-  Image image = makeImage(f.view.width, f.view.height);
+  Image image = frameImage(f.view, options.recycle);
   const RowFunction renderRowsFn = rowFunctionFor(params);
   std::atomic<std::uint64_t> samples{0};
   std::atomic<bool> cancelled{false};

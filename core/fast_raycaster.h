@@ -1,7 +1,10 @@
 #pragma once
 // The accelerated raycaster: the reference's samples, minus those provably transparent.
-// Empty-space skipping by slice tiles (core/slice_tiles.h) walked through per-view ray templates
-// (core/ray_templates.h), early ray termination, rows in parallel (oneTBB, dynamic balance).
+// Empty-space skipping by slice tiles and tile groups (core/slice_tiles.h) walked through per-view
+// ray templates (core/ray_templates.h), each row group by group in front-to-back order so a
+// group's voxels are read from the cache by all rays through it; cell transparency and the cell's
+// gradients cached per ray (core/ray_samplers.h); early ray termination; rows in parallel (oneTBB,
+// dynamic balance).
 // Every evaluated sample uses the reference's arithmetic (core/compositing.h), so the image is the
 // reference's, bit for bit, for every filter, mode, axis and angle.
 #include <atomic>
@@ -17,9 +20,18 @@
 
 namespace angio {
 
+// Every switch exists to measure what a technique buys (`angioray bench`); the image is the same.
 struct FastRenderOptions {
-  bool skipEmpty = true;                      // off: every sample evaluated (for measuring)
-  const std::atomic<bool>* cancel = nullptr;  // checked every 64 pixels; set -> returns early
+  bool skipEmpty = true;   // off: every sample evaluated, whatever the three below say
+  bool skipGroups = true;  // the coarse level: 32^2-voxel tile groups no ray can see in this row
+  bool skipTiles = true;   // the fine level: 8^2-voxel tiles
+  bool skipCells = true;   // trilinear cells whose 8 corners the TF hides (or, MIP, not above the
+                           // ray's maximum), and the leaps over their remaining samples
+  const std::atomic<bool>* cancel = nullptr;  // checked per template column, every 4 groups of a row
+  // Optional: an earlier frame whose pixel memory the new frame takes over (it is left empty).
+  // Fresh memory for a frame costs page faults: ~25 ms of kernel page clearing for a 39 MB
+  // high-quality frame. A cancelled frame's unrendered rows are then undefined.
+  Image* recycle = nullptr;
 };
 
 struct FastRenderStats {

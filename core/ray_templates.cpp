@@ -77,9 +77,12 @@ void sortVisitsFrontToBack(const SliceTiles& tiles, const ViewGeometry& view, Ra
 
 }  // namespace
 
-RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles) {
+RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles,
+                               const std::atomic<bool>* cancel) {
   std::vector<std::vector<TileRun>> perColumn(view.width);
-  tbb::parallel_for(0, view.width, [&](int x) { perColumn[x] = columnRuns(volume, view, tiles, x); });
+  tbb::parallel_for(0, view.width, [&](int x) {
+    if (!cancel || !cancel->load(std::memory_order_relaxed)) perColumn[x] = columnRuns(volume, view, tiles, x);
+  });
   RayTemplates templates;
   templates.columnBegin.reserve(view.width + 1);
   for (const auto& runs : perColumn) appendColumn(tiles, runs, templates);

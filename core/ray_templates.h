@@ -5,6 +5,7 @@
 // is a list of runs: consecutive samples k whose floor(q) lies in the same tile, grouped by the
 // tile group (kGroupTiles^2 tiles) they lie in, so a ray leaps over an empty group in one step
 // and only looks at the tiles of groups that may be visible.
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct RayTemplates {
 
 // Sample positions are computed with the same arithmetic as the raycasters (RaySamples),
 // so the tile a run names is the tile of every sample in it.
-RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles);
+// `cancel` (optional) set: stops early with templates that must not be used.
+RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles,
+                               const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace angio
