@@ -16,6 +16,7 @@
 #include "core/fast_raycaster.h"
 #include "core/reference_raycaster.h"
 #include "core/slice_tiles.h"
+#include "vessel/cpr_hybrid.h"
 #include "vessel/vessel_glyph.h"
 
 namespace angio {
@@ -102,8 +103,12 @@ class GlyphFrames {
         focus_(buildTable(tf)), context_(buildTable(translucent(tf))),
         visible_(classifyTiles(tiles, RegionTables{&regions_, &focus_, &context_, nullptr})) {}
 
-  double operator()(const RenderParams& p) {
-    builder_.build(makeViewGeometry(volume_, p), regions_);
+  double operator()(const RenderParams& p) { return render(p); }
+
+  // Builds the view's regions and renders the frame into image(); returns the samples.
+  double render(const RenderParams& p) {
+    view_ = makeViewGeometry(volume_, p);
+    builder_.build(view_, regions_);
     FastRenderStats stats;
     FastRenderOptions options;
     options.recycle = &previous_;
@@ -111,6 +116,9 @@ class GlyphFrames {
                            p, options, &stats);
     return double(stats.samples);
   }
+  const ViewGeometry& view() const { return view_; }
+  const RayRegions& regions() const { return regions_; }
+  Image& image() { return previous_; }  // the next frame renders over it
 
  private:
   static TransferFunction translucent(TransferFunction tf) {
@@ -120,10 +128,37 @@ class GlyphFrames {
   const Volume& volume_;
   const SliceTiles& tiles_;
   RayRegionBuilder builder_;
+  ViewGeometry view_;
   RayRegions regions_;
   TfTable focus_, context_;
   std::vector<std::uint8_t> visible_;
   Image previous_;
+};
+
+// The "hybrid cpr" rows (issue 6 items 5 and 8; thesis fig. 5.4): the vessel glyph frame, then
+// the projected CPR of every path in the same view, shown through the focus TF and composited
+// into the focus's footprint with a hard edge, as `angioray render --hybrid-cpr` does.
+class HybridFrames {
+ public:
+  HybridFrames(const Volume& volume, const TransferFunction& tf, const SliceTiles& tiles,
+               const Centerlines& inVolumeFrame)
+      : glyph_(volume, tf, tiles, inVolumeFrame), volume_(volume), paths_(inVolumeFrame.paths) {
+    display_.tf = tf;
+    display_.centerlineMarker = display_.ruler = false;
+  }
+
+  double operator()(const RenderParams& p) {
+    const double samples = glyph_.render(p);
+    compositeCprInPlace(glyph_.image(), volume_, layoutCpr(paths_, glyph_.view(), {CprMode::projected}),
+                        focusFootprint(glyph_.regions()), display_, {0, glyph_.view().pixelMm});
+    return samples;
+  }
+
+ private:
+  GlyphFrames glyph_;
+  const Volume& volume_;
+  std::vector<CenterlinePath> paths_;
+  CprDisplay display_;
 };
 
 // Interruption latency (the progressive GUI restarts at fast on every change): high-quality frames
@@ -228,6 +263,10 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
       GlyphFrames glyph(volume, tf, tiles, *settings.vesselTree);
       report.rows.push_back(timeFrames(level.name, "vessel glyph", settings.angles, p, std::ref(glyph)));
       std::fprintf(stderr, "bench: %s vessel glyph %.1f ms\n", level.name.c_str(),
+                   report.rows.back().medianMs);
+      HybridFrames hybrid(volume, tf, tiles, *settings.vesselTree);
+      report.rows.push_back(timeFrames(level.name, "hybrid cpr", settings.angles, p, std::ref(hybrid)));
+      std::fprintf(stderr, "bench: %s hybrid cpr %.1f ms\n", level.name.c_str(),
                    report.rows.back().medianMs);
     }
     if (settings.withReference)

@@ -22,7 +22,9 @@ struct BenchSettings {
   std::vector<std::string> levels;  // names of the levels to time; empty = all
   // With centerlines (volume frame): also a "vessel glyph" row per level (thesis ch. 5): focus =
   // the TF within 2x the vessel radius, context = the TF at 30 % opacity in a slab 20 mm in front
-  // of and behind the centerline, outside clipped; each frame builds its ray intervals.
+  // of and behind the centerline, outside clipped; each frame builds its ray intervals. And a
+  // "hybrid cpr" row (issue 6 item 5): that frame with the projected CPR of every path composited
+  // into the focus's footprint.
   std::optional<Centerlines> vesselTree;
 };
 

@@ -1,29 +1,22 @@
 #include "bench/vessel_glyph_bench.h"
+#include "bench/timing.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <vector>
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
 
 #include "core/view_geometry.h"
 
 namespace angio {
 
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : (values[mid - 1] + values[mid]) / 2;
-}
 
 // Uniform in [lo, hi) from the raw engine (std distributions differ between libraries).
 double uniform(std::mt19937_64& random, double lo, double hi) {
@@ -36,36 +29,57 @@ std::size_t vertexCount(const GlyphTubes& tubes) {
   return count;
 }
 
+// FNV-1a over the bytes of the regions' offsets and interval fields (padding left out).
+void hashRegions(const RayRegions& regions, std::uint64_t& hash) {
+  const auto mix = [&](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t n = 0; n < size; ++n) hash = (hash ^ bytes[n]) * 0x100000001b3ull;
+  };
+  mix(regions.rayBegin.data(), regions.rayBegin.size() * sizeof(std::uint32_t));
+  for (const RegionInterval& interval : regions.intervals) {
+    mix(&interval.begin, sizeof interval.begin);
+    mix(&interval.end, sizeof interval.end);
+    mix(&interval.region, sizeof interval.region);
+  }
+}
+
 }  // namespace
 
 GlyphBenchResult runVesselGlyphBench(const Volume& volume, const Centerlines& inVolumeFrame,
                                      const VesselGlyphSettings& glyph,
                                      const GlyphBenchSettings& settings) {
+  std::optional<tbb::global_control> limit;
+  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
   GlyphBenchResult result;
+  result.threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+  result.checksum = 0xcbf29ce484222325ull;
   RenderParams params;
   params.axis = settings.axis;
   params.sampling = qualitySampling(settings.quality);
-  std::vector<double> fullMs, perViewMs, prepareMs, intervals, covered;
+  std::vector<double> fullMs, perViewMs, perViewCpuMs, prepareMs, intervals, covered;
   RayRegionBuilder builder(inVolumeFrame, glyph);
   RayRegions reused;
   for (int n = 0; n < settings.angles; ++n) {
     params.angleDeg = 360.0 * n / settings.angles;
     const ViewGeometry view = makeViewGeometry(volume, params);
-    auto start = std::chrono::steady_clock::now();
+    auto start = BenchClock::now();
     const RayRegions regions = buildRayRegions(volume, view, inVolumeFrame, glyph);
     fullMs.push_back(msSince(start));
 
-    start = std::chrono::steady_clock::now();
+    start = BenchClock::now();
     const GlyphTubes tubes = prepareGlyphTubes(inVolumeFrame, glyph);
     prepareMs.push_back(msSince(start));
-    start = std::chrono::steady_clock::now();
+    start = BenchClock::now();
+    const double cpuStart = processCpuMs();
     builder.build(view, reused);
     perViewMs.push_back(msSince(start));
+    perViewCpuMs.push_back(processCpuMs() - cpuStart);
 
     result.width = regions.width;
     result.height = regions.height;
     result.sourcePoints = tubes.sourcePoints;
     result.tubeVertices = vertexCount(tubes);
+    hashRegions(reused, result.checksum);
     intervals.push_back(double(regions.intervals.size()));
     std::size_t hitPixels = 0;
     for (std::size_t p = 0; p + 1 < regions.rayBegin.size(); ++p) {
@@ -81,10 +95,11 @@ GlyphBenchResult runVesselGlyphBench(const Volume& volume, const Centerlines& in
     result.perViewMedianMs = median(perViewMs);
     result.perViewMinMs = *std::min_element(perViewMs.begin(), perViewMs.end());
     result.perViewMaxMs = *std::max_element(perViewMs.begin(), perViewMs.end());
+    result.perViewMedianCpuMs = median(perViewCpuMs);
+    result.prepareMs = median(prepareMs);
+    result.medianIntervals = median(intervals);
+    result.coveredPixels = median(covered);
   }
-  result.prepareMs = median(prepareMs);
-  result.medianIntervals = median(intervals);
-  result.coveredPixels = median(covered);
   return result;
 }
 
@@ -211,10 +226,12 @@ std::string formatGlyphBench(const GlyphBenchResult& result) {
       << result.views << " views: median " << result.medianMs << " ms (min " << result.minMs
       << ", max " << result.maxMs << "); per view with prepared tubes and reused output "
       << result.perViewMedianMs << " ms (min " << result.perViewMinMs << ", max "
-      << result.perViewMaxMs << "); view-independent part " << result.prepareMs << " ms; "
+      << result.perViewMaxMs << "; CPU " << result.perViewMedianCpuMs << " ms on "
+      << result.threads << " threads); view-independent part " << result.prepareMs << " ms; "
       << result.sourcePoints << " centerline points -> " << result.tubeVertices
       << " tube vertices; " << std::size_t(result.medianIntervals) << " intervals, "
-      << 100 * result.coveredPixels << "% of pixels covered\n";
+      << 100 * result.coveredPixels << "% of pixels covered; checksum " << std::hex
+      << result.checksum << std::dec << "\n";
   return out.str();
 }
 

@@ -17,6 +17,7 @@ struct GlyphBenchSettings {
   int angles = 36;
   Axis axis = Axis::k;
   Quality quality = Quality::medium;
+  int threads = 0;  // 0 = all cores
 };
 
 struct GlyphBenchResult {
@@ -27,9 +28,13 @@ struct GlyphBenchResult {
   double medianMs = 0, minMs = 0, maxMs = 0;
   // RayRegionBuilder::build into a RayRegions reused from view to view (what a renderer does).
   double perViewMedianMs = 0, perViewMinMs = 0, perViewMaxMs = 0;
+  double perViewMedianCpuMs = 0;   // ... its CPU time, all threads (robust on a busy machine)
   double prepareMs = 0;            // the view-independent part alone (median)
   double medianIntervals = 0;      // intervals per view
   double coveredPixels = 0;        // fraction of pixels with at least one interval (median)
+  // FNV-1a of every view's rayBegin and intervals: equal before and after a speed-up = same output.
+  std::uint64_t checksum = 0;
+  int threads = 0;
   int views = 0;
 };
 

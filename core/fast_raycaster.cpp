@@ -228,8 +228,10 @@ bool renderRow(const Frame& f, int y, RowScratch<Sampler>& scratch, Image& image
 template <bool Mip, class Sampler>
 bool renderRows(const Frame& f, int first, int end, Image& image, std::uint64_t& samples) {
   RowScratch<Sampler> scratch;
-  for (int y = first; y != end; ++y)
+  for (int y = first; y != end; ++y) {
     if (!renderRow<Mip>(f, y, scratch, image, samples)) return false;
+    if (f.options.rowsDone) f.options.rowsDone->fetch_add(1, std::memory_order_relaxed);
+  }
   return true;
 }
 

@@ -32,6 +32,8 @@ struct FastRenderOptions {
   // Fresh memory for a frame costs page faults: ~25 ms of kernel page clearing for a 39 MB
   // high-quality frame. A cancelled frame's unrendered rows are then undefined.
   Image* recycle = nullptr;
+  // Optional: incremented as each image row is finished (the GUI's progress bar), from 0.
+  std::atomic<int>* rowsDone = nullptr;
 };
 
 struct FastRenderStats {

@@ -38,6 +38,11 @@ bool sameView(const RenderParams& a, const RenderParams& b) {
          a.mip.level == b.mip.level;
 }
 
+// The same TFs and regions (objects, not contents: a change makes new ones).
+bool sameClassification(const ProgressiveRequest& a, const ProgressiveRequest& b) {
+  return a.table == b.table && a.regions == b.regions;
+}
+
 bool sameLevels(const LevelSamplings& a, const LevelSamplings& b) {
   for (int q = 0; q < kQualityLevels; ++q)
     if (!sameSampling(a[q], b[q])) return false;
@@ -102,8 +107,8 @@ LevelSamplings defaultLevelSamplings() {
 }
 
 double ProgressiveStatus::estimatedProgress() const {
-  if (!rendering || expectedMs <= 0) return 0;
-  return std::min(renderingMs / expectedMs, 0.99);
+  if (!rendering || rows <= 0) return 0;
+  return std::min(double(rowsDone) / rows, 1.0);
 }
 
 ProgressiveRenderer::ProgressiveRenderer(const Volume& volume,
@@ -126,7 +131,7 @@ bool ProgressiveRenderer::isInProgress(const ProgressiveRequest& request) const 
   const std::optional<Job>& newest = pending_ ? pending_ : current_;
   if (!newest || !status_.busy) return false;
   const ProgressiveRequest& r = newest->request;
-  return r.table == request.table && r.interactive == request.interactive &&
+  return sameClassification(r, request) && r.interactive == request.interactive &&
          sameView(r.params, request.params) && sameLevels(r.levels, request.levels);
 }
 
@@ -157,7 +162,7 @@ bool ProgressiveRenderer::runningLevelStaysUseful(const ProgressiveRequest& requ
   const int level = int(*status_.rendering);
   const ProgressiveRequest& running = current_->request;
   if (request.interactive && level == int(Quality::fast)) return true;
-  return running.table == request.table && sameView(running.params, request.params) &&
+  return sameClassification(running, request) && sameView(running.params, request.params) &&
          sameSampling(running.levels[level], request.levels[level]);
 }
 
@@ -169,7 +174,10 @@ std::shared_ptr<const ProgressiveFrame> ProgressiveRenderer::latestFrame() const
 ProgressiveStatus ProgressiveRenderer::status() const {
   std::lock_guard lock(mutex_);
   ProgressiveStatus status = status_;
-  if (status.rendering) status.renderingMs = Ms(Clock::now() - levelStart_).count();
+  if (status.rendering) {
+    status.renderingMs = Ms(Clock::now() - levelStart_).count();
+    status.rowsDone = rowsDone_.load(std::memory_order_relaxed);
+  }
   return status;
 }
 
@@ -218,17 +226,23 @@ void ProgressiveRenderer::workerLoop() {
 }
 
 // Slice tiles per axis (rebuilt when it changes, not cancellable: ~0.5 s at 512x512x1200) and
-// tile visibility per TF table.
+// tile visibility per TF table, or per region TFs (a tile is visible if any region's TF shows it).
 void ProgressiveRenderer::prepare(const Job& job) {
   const Axis axis = job.request.params.axis;
   if (!tiles_ || tiles_->axis != axis) {
     tiles_.reset();  // free the old tiles before building the new ones
     tiles_ = buildSliceTiles(volume_, axis);
     classifiedTable_.reset();
+    classifiedRegions_.reset();
   }
-  if (classifiedTable_ != job.request.table) {
-    visibleTiles_ = classifyTiles(*tiles_, *job.request.table);
+  const std::shared_ptr<const RegionSource>& regions = job.request.regions;
+  if (classifiedTable_ != job.request.table || classifiedRegions_ != regions) {
+    visibleTiles_ = regions ? classifyTiles(*tiles_, RegionTables{&regionScratch_, regions->focus.get(),
+                                                                  regions->context.get(),
+                                                                  regions->outside.get()})
+                            : classifyTiles(*tiles_, *job.request.table);
     classifiedTable_ = job.request.table;
+    classifiedRegions_ = regions;
   }
 }
 
@@ -242,7 +256,7 @@ int ProgressiveRenderer::firstLevelToRender(const Job& job) {
   const int shown = int(latest_->level);
   const bool same = sameView(latest_->params, r.params) &&
                     sameSampling(latest_->params.sampling, r.levels[shown]) &&
-                    latest_->table == r.table;
+                    latest_->table == r.table && latest_->regions == r.regions;
   if (!same) return 0;
   auto relabelled = std::make_shared<ProgressiveFrame>(*latest_);
   relabelled->request = job.id;
@@ -270,9 +284,10 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image, do
   frame->params = job.request.params;
   frame->params.sampling = job.request.levels[int(level)];
   frame->table = job.request.table;
+  frame->regions = job.request.regions;
   frame->rgb8 = toRgb8(image);
   frame->mipmaps = halvedLevels(frame->rgb8, image.width, image.height);
-  frame->image = std::make_shared<const Image>(std::move(image));
+  frame->image = images_->share(std::move(image));
   frame->renderMs = ms;
   frame->samples = samples;
   {
@@ -294,6 +309,28 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image, do
   if (callbacks_.afterPublish) callbacks_.afterPublish();
 }
 
+// One level: plain DVR with the request's table, or VesselGlyph with the regions of this level's
+// view (built here, so their time counts in the level's).
+Image ProgressiveRenderer::renderLevel(const Job& job, const RenderParams& params,
+                                       FastRenderStats& stats) {
+  FastRenderOptions options;
+  options.cancel = &cancel_;
+  options.rowsDone = &rowsDone_;
+  {
+    std::lock_guard lock(mutex_);
+    status_.rows = makeViewGeometry(volume_, params).height;
+  }
+  rowsDone_ = 0;
+  Image recycled = images_->take();
+  options.recycle = &recycled;
+  const RegionSource* regions = job.request.regions.get();
+  if (!regions) return renderFast(volume_, *tiles_, visibleTiles_, *job.request.table, params, options, &stats);
+  regions->build(makeViewGeometry(volume_, params), regionScratch_);
+  const RegionTables tables{&regionScratch_, regions->focus.get(), regions->context.get(),
+                            regions->outside.get()};
+  return renderFast(volume_, *tiles_, visibleTiles_, tables, params, options, &stats);
+}
+
 void ProgressiveRenderer::runJob(const Job& job) {
   backgroundArena().execute([&] { prepare(job); });
   for (int q = firstLevelToRender(job); q <= lastLevel(job.request); ++q) {
@@ -304,12 +341,10 @@ void ProgressiveRenderer::runJob(const Job& job) {
     FastRenderStats stats;
     const auto start = Clock::now();
     Image image;
-    backgroundArena().execute([&] {
-      image = renderFast(volume_, *tiles_, visibleTiles_, *job.request.table, params,
-                         FastRenderOptions{true, &cancel_}, &stats);
-    });
+    backgroundArena().execute([&] { image = renderLevel(job, params, stats); });
     const double ms = Ms(Clock::now() - start).count();
     if (stats.cancelled) {
+      images_->giveBack(std::move(image));
       std::lock_guard lock(mutex_);
       status_.lastInterruptMs = Ms(Clock::now() - cancelRequestedAt_).count();
       status_.rendering.reset();

@@ -24,10 +24,14 @@
 #include <thread>
 #include <vector>
 
+#include "core/fast_raycaster.h"
 #include "core/image.h"
+#include "core/image_pool.h"
+#include "core/region_intervals.h"
 #include "core/render_params.h"
 #include "core/slice_tiles.h"
 #include "core/transfer_function.h"
+#include "core/view_geometry.h"
 #include "core/volume.h"
 
 namespace angio {
@@ -37,9 +41,24 @@ constexpr int kQualityLevels = 3;  // fast, medium, high, in rendering order
 using LevelSamplings = std::array<Sampling, kQualityLevels>;
 LevelSamplings defaultLevelSamplings();  // the rendering model's table
 
+// VesselGlyph for a request (thesis ch. 5): the ray regions of each level's view (the view
+// depends on the level's isd) and a TF per region. core knows no centerlines: `build` is whatever
+// makes the regions (vessel/vessel_glyph.h's RayRegionBuilder in the app). It is called on the
+// worker thread only, one call at a time per renderer, with the same `out` every time so its
+// buffers are reused; a source shared with other threads must guard its builder itself.
+struct RegionSource {
+  std::function<void(const ViewGeometry& view, RayRegions& out)> build;
+  std::shared_ptr<const TfTable> focus;    // null: the focus is not rendered
+  std::shared_ptr<const TfTable> context;  // null: no context
+  std::shared_ptr<const TfTable> outside;  // null: the outside is clipped
+};
+
 struct ProgressiveRequest {
   RenderParams params;                   // sampling is replaced by each level's
   std::shared_ptr<const TfTable> table;  // a different table object = a TF change
+  // Set: VesselGlyph rendering, `table` unused. A different source object = a change (sources
+  // are immutable: a change of the regions' shape or of a region's TF makes a new one).
+  std::shared_ptr<const RegionSource> regions;
   bool interactive = false;              // dragging or spinning: fast only
   LevelSamplings levels = defaultLevelSamplings();
 };
@@ -61,6 +80,7 @@ struct ProgressiveFrame {
   Quality level = Quality::fast;
   RenderParams params;                 // as rendered, with the level's sampling
   std::shared_ptr<const TfTable> table;
+  std::shared_ptr<const RegionSource> regions;  // the request's (null: plain DVR)
   std::shared_ptr<const Image> image;  // linear RGBA
   std::vector<std::uint8_t> rgb8;      // toRgb8(*image), ready for a texture upload
   std::vector<Rgb8Image> mipmaps;      // halvedLevels(rgb8): made here, off the UI thread
@@ -81,11 +101,12 @@ struct ProgressiveStatus {
   std::optional<Quality> rendering;   // the level being rendered right now
   double renderingMs = 0;             // how long that level has been running
   double expectedMs = 0;              // that level's last duration (0 = not known yet)
+  int rowsDone = 0, rows = 0;         // image rows of the running level finished / in all
   std::array<LevelTiming, kQualityLevels> levels;  // of the newest request
   double lastInterruptMs = -1;        // request() -> interrupted render returned, last time
   std::string error;                  // a render that threw (e.g. out of memory), else empty
 
-  // Rough progress of the running level from its last duration; renderFast reports no rows.
+  // Progress of the running level: its finished rows (rows render in parallel, in any order).
   double estimatedProgress() const;
 };
 
@@ -136,6 +157,7 @@ class ProgressiveRenderer {
   void publish(const Job& job, Quality level, Image image, double ms, std::uint64_t samples);
   bool isInProgress(const ProgressiveRequest& request) const;
   bool runningLevelStaysUseful(const ProgressiveRequest& request) const;
+  Image renderLevel(const Job& job, const RenderParams& params, FastRenderStats& stats);
 
   const Volume& volume_;
   ProgressiveCallbacks callbacks_;
@@ -158,7 +180,11 @@ class ProgressiveRenderer {
   // Worker-only state: the empty-space structure for the current axis and TF.
   std::optional<SliceTiles> tiles_;
   std::shared_ptr<const TfTable> classifiedTable_;
+  std::shared_ptr<const RegionSource> classifiedRegions_;
   std::vector<std::uint8_t> visibleTiles_;
+  RayRegions regionScratch_;  // the regions of the level being rendered (buffers reused)
+  std::shared_ptr<ImagePool> images_ = std::make_shared<ImagePool>();
+  std::atomic<int> rowsDone_{0};  // of the level being rendered
 
   std::thread worker_;  // last: starts after everything above is constructed
 };

@@ -24,7 +24,7 @@ bool sameSampling(const Sampling& a, const Sampling& b) {
 
 bool sameRequest(const ProgressiveRequest& a, const ProgressiveRequest& b) {
   const RenderParams &p = a.params, &q = b.params;
-  if (a.table != b.table || a.interactive != b.interactive || p.axis != q.axis ||
+  if (a.table != b.table || a.regions != b.regions || a.interactive != b.interactive || p.axis != q.axis ||
       p.angleDeg != q.angleDeg || p.compositing != q.compositing ||
       p.shading.enabled != q.shading.enabled || p.shading.ka != q.shading.ka ||
       p.shading.kd != q.shading.kd || p.mip.window != q.mip.window || p.mip.level != q.mip.level)
@@ -59,12 +59,19 @@ App::App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<v
     : data_(std::move(dataset)),
       state_(std::move(state)),
       texture_(gl),
-      renderer_(data_.volume, ProgressiveCallbacks{{}, std::move(wakeUi)}),
-      presets_(listPresets()) {
+      wakeUi_(std::move(wakeUi)),
+      renderer_(std::make_unique<ProgressiveRenderer>(data_.volume, ProgressiveCallbacks{{}, wakeUi_})),
+      presets_(listPresets()),
+      cprView_(gl) {
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
   ImGui::StyleColorsDark();
+  startSession();
+  if (!state_.centerlinesFile.empty()) {
+    vessel_.path = state_.centerlinesFile;
+    loadVesselCenterlines(vessel_.path);
+  }
 }
 
 App::~App() {
@@ -86,12 +93,14 @@ void App::frame(double previousFrameMs) {
   pollHistogram();
   pollRenderer();
   pollExport();
-  status_ = renderer_.status();
+  pollBackgroundJobs();
+  status_ = renderer_->status();
 
   ImGui::NewFrame();
   handleKeys();
   drawSidePanel();
   drawViewportWindow();
+  drawCprView();
   drawStatusBar();
   if (state_.view.autoSpin) {
     state_.view.angleDeg =
@@ -121,7 +130,7 @@ void App::pollHistogram() {
 // Swaps in the newest finished frame: uploads it in strips (a few per UI frame for a large image)
 // and shows it when complete; a frame with the pixels already shown (re-labelled) just replaces it.
 void App::pollRenderer() {
-  const std::shared_ptr<const ProgressiveFrame> frame = renderer_.latestFrame();
+  const std::shared_ptr<const ProgressiveFrame> frame = renderer_->latestFrame();
   if (frame && frame != shown_ && frame != incoming_) {
     if (shown_ && frame->serial == shown_->serial && !incoming_) {
       shown_ = frame;
@@ -160,10 +169,11 @@ void App::requestRender(bool interactive) {
   ProgressiveRequest request;
   request.params = renderParamsOf(state_);
   request.table = table_;
+  request.regions = vesselRegions();
   request.interactive = interactive;
   request.levels = state_.levels;
   if (lastRequest_ && sameRequest(*lastRequest_, request)) return;
-  lastRequestId_ = renderer_.request(request);
+  lastRequestId_ = renderer_->request(request);
   lastRequest_ = request;
   requestTimes_.emplace_back(lastRequestId_, Clock::now());
   if (requestTimes_.size() > kRememberedRequests) requestTimes_.pop_front();
@@ -185,7 +195,7 @@ void App::handleKeys() {
 void App::drawViewportWindow() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(std::max(io.DisplaySize.x - kPanelWidth, 64.f),
+  ImGui::SetNextWindowSize(ImVec2(std::max(io.DisplaySize.x - kPanelWidth - cprViewWidth(), 64.f),
                                   std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::Begin("##viewport", nullptr,
@@ -212,26 +222,28 @@ void App::drawViewportWindow() {
     overlay.levelLabel = label;
   }
   viewport_ = drawViewport(image.texture ? &image : nullptr, state_.view, overlay);
+  drawCenterlineOverlay();
+  moveCprCursorOnClick();
   if (viewport_.rotateDegrees != 0)
     state_.view.angleDeg = wrapDegrees(state_.view.angleDeg + viewport_.rotateDegrees);
   ImGui::End();
 }
 
 FramePacing App::pacing() const {
-  if (state_.view.autoSpin || incoming_ || renderer_.latestFrame() != shown_ ||
+  if (state_.view.autoSpin || incoming_ || renderer_->latestFrame() != shown_ ||
       ImGui::IsAnyMouseDown() || ImGui::IsAnyItemActive())
     return FramePacing::continuous;
-  if (renderer_.status().busy || histogramJob_.valid() || export_.job.valid())
+  if (renderer_->status().busy || histogramJob_.valid() || export_.job.valid() || backgroundBusy())
     return FramePacing::progress;
   return FramePacing::idle;
 }
 
 bool App::settled(Quality level) const {
-  const std::shared_ptr<const ProgressiveFrame> frame = renderer_.latestFrame();
-  if (export_.job.valid()) return false;
+  const std::shared_ptr<const ProgressiveFrame> frame = renderer_->latestFrame();
+  if (export_.job.valid() || backgroundBusy()) return false;
   const bool shownIsNewest = shown_ && !incoming_ && frame == shown_ && shown_->request == lastRequestId_;
   if (shownIsNewest && int(shown_->level) >= int(level)) return true;
-  const ProgressiveStatus status = renderer_.status();
+  const ProgressiveStatus status = renderer_->status();
   // Finished below `level` (an interactive request): nothing more will come.
   return shownIsNewest && !status.busy && status.request == lastRequestId_;
 }
@@ -253,7 +265,7 @@ nlohmann::json App::report() const {
              {"samples", shown_->samples},
              {"checksum", std::to_string(checksum(shown_->rgb8))}};
   }
-  const ProgressiveStatus status = renderer_.status();
+  const ProgressiveStatus status = renderer_->status();
   nlohmann::json levels = nlohmann::json::object();
   for (int q = 0; q < kQualityLevels; ++q) {
     const LevelTiming& t = status.levels[q];
@@ -282,6 +294,8 @@ nlohmann::json App::report() const {
                          {"top", std::string(1, letters.top)}, {"bottom", std::string(1, letters.bottom)}}},
         {"tf_undo_available", tfHistory_.canUndo()},
         {"message", message_},
+        {"data", dataReport()},
+        {"vessel_glyph", vesselReport()},
         {"layout", layout}}},
   };
 }

@@ -20,9 +20,15 @@
 #include "core/progressive_renderer.h"
 #include "core/volume.h"
 #include "gui/app_gl.h"
+#include "gui/background_job.h"
+#include "gui/file_browser.h"
+#include "gui/series_export.h"
 #include "gui/app_state.h"
+#include "gui/app_cpr.h"
+#include "gui/app_vessel.h"
 #include "gui/tf_editor.h"
 #include "gui/viewport.h"
+#include "io/session_file.h"
 #include "io/tf_file.h"
 
 namespace angio {
@@ -74,6 +80,11 @@ class App {
   // State and runtime numbers for --state-out and the tests.
   nlohmann::json report() const;
 
+  // Data and session (gui/app_data.cpp, gui/app_session.cpp): loads in the background and
+  // replaces the dataset on success (drag-and-drop, the file browser, recent files, scripts).
+  void openDataset(const std::string& path);
+  Session session() const;  // what the window saves as the last session when it quits
+
  private:
   using Clock = std::chrono::steady_clock;
   static constexpr float kPanelWidth = 430;   // the side panel on the right (screen pixels)
@@ -91,8 +102,37 @@ class App {
   void drawTfSection();
   void drawRenderingSection();
   void drawExportSection();
+  void drawSeriesExport();   // gui/app_series.cpp
+  void drawSessionSection(); // gui/app_session.cpp
+  void drawSessionBanner();
+  void startSession();       // panel states to apply, recent files, the last session offered
+  void pollBackgroundJobs(); // data load, series export
+  bool backgroundBusy() const;
+  void replaceDataset(LoadedDataset dataset);
+  void applySession(const Session& session);
+  bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
+  nlohmann::json dataReport() const;
   void pollExport();
   void noteRect(const std::string& name);  // the last widget's rectangle, for report()
+  // VesselGlyph (gui/app_vessel.cpp).
+  void drawVesselSection();
+  void drawTfTargetSelector();
+  void drawCenterlineOverlay();
+  void loadVesselCenterlines(const std::string& path);
+  const Centerlines* framedCenterlines();
+  void ensureVesselTfs();
+  std::shared_ptr<const RegionSource> vesselRegions();
+  nlohmann::json vesselReport() const;
+  ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
+  // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
+  void drawCprSection();
+  void drawCprView();
+  void updateCpr();
+  void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
+  float cprViewWidth() const;
+  nlohmann::json cprReport() const;
+  TransferFunction& editedTf();  // the TF the TF editor edits: main, focus or context
+  std::string& editedPreset();
   void applyTf(const TransferFunction& tf, const std::string& preset);
   void undoTf();
   void redoTf();
@@ -100,7 +140,8 @@ class App {
   LoadedDataset data_;  // before renderer_: the worker reads data_.volume
   AppState state_;
   StreamedTexture texture_;
-  ProgressiveRenderer renderer_;
+  std::function<void()> wakeUi_;
+  std::unique_ptr<ProgressiveRenderer> renderer_;  // replaced with the dataset
 
   // Rendering hand-off.
   std::shared_ptr<const TfTable> table_;
@@ -138,6 +179,19 @@ class App {
     Clock::time_point started;
   };
   ExportPanel export_;  // last: its job reads data_ and is waited for first on destruction
+
+  // Data, rotation series, session (after export_: their jobs are cancelled and waited for first).
+  FileBrowser browser_;
+  BackgroundJob<LoadedDataset> load_;
+  std::string loadPath_, loadError_;
+  std::optional<Session> offeredSession_;  // "Restore last session" banner
+  std::string sessionPath_ = "session.json";
+  std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame
+  SeriesPanel series_;
+  BackgroundJob<SeriesResult> seriesJob_;
+
+  VesselGlyphPanel vessel_;  // the VesselGlyph panel (gui/app_vessel.cpp)
+  CprViewPanel cprView_;     // the CPR view (gui/app_cpr.cpp)
 };
 
 }  // namespace angio

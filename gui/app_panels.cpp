@@ -51,26 +51,17 @@ void App::drawSidePanel() {
   drawDataSection();
   drawViewSection();
   drawTfSection();
+  drawVesselSection();
+  drawCprSection();
   drawRenderingSection();
   drawExportSection();
+  drawSeriesExport();  // part of the Export section
+  drawSessionSection();
   ImGui::End();
 }
 
-void App::drawDataSection() {
-  if (!ImGui::CollapsingHeader("Data", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const Volume& v = data_.volume;
-  ImGui::TextWrapped("%s", data_.name.c_str());
-  if (!data_.description.empty()) ImGui::TextDisabled("%s", data_.description.c_str());
-  ImGui::Text("%d x %d x %d voxels, %.3g x %.3g x %.3g mm", v.dims.x, v.dims.y, v.dims.z,
-              v.spacing.x, v.spacing.y, v.spacing.z);
-  if (huRange_)
-    ImGui::Text("HU %.0f .. %.0f", huOfDensity(huRange_->minDensity), huOfDensity(huRange_->maxDensity));
-  else
-    ImGui::TextDisabled("HU range: counting...");
-}
-
 void App::drawViewSection() {
-  if (!ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!sectionHeader("View")) return;
   ViewState& view = state_.view;
   ImGui::TextUnformatted("axis");
   for (Axis axis : {Axis::i, Axis::j, Axis::k}) {
@@ -101,29 +92,30 @@ void App::drawViewSection() {
 }
 
 void App::applyTf(const TransferFunction& tf, const std::string& preset) {
-  tfHistory_.push(state_.tf);
-  state_.tf = tf;
-  state_.tfPreset = preset;
+  tfHistory_.push(editedTf());
+  editedTf() = tf;
+  editedPreset() = preset;
   tfView_.selected = tfView_.dragging = -1;
 }
 
 void App::undoTf() {
   if (tfView_.gestureBefore) return;  // not in the middle of an edit
-  if (auto previous = tfHistory_.undo(state_.tf)) state_.tf = *previous, state_.tfPreset.clear();
+  if (auto previous = tfHistory_.undo(editedTf())) editedTf() = *previous, editedPreset().clear();
 }
 
 void App::redoTf() {
   if (tfView_.gestureBefore) return;
-  if (auto next = tfHistory_.redo(state_.tf)) state_.tf = *next, state_.tfPreset.clear();
+  if (auto next = tfHistory_.redo(editedTf())) editedTf() = *next, editedPreset().clear();
 }
 
 void App::drawTfSection() {
-  if (!ImGui::CollapsingHeader("Transfer function", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const std::string current = state_.tfPreset.empty() ? state_.tf.name + " (edited)" : state_.tfPreset;
+  if (!sectionHeader("Transfer function")) return;
+  drawTfTargetSelector();
+  const std::string current = editedPreset().empty() ? editedTf().name + " (edited)" : editedPreset();
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("preset", current.c_str())) {
     for (const Preset& preset : presets_) {
-      if (!ImGui::Selectable(preset.id.c_str(), preset.id == state_.tfPreset)) continue;
+      if (!ImGui::Selectable(preset.id.c_str(), preset.id == editedPreset())) continue;
       try {
         applyTf(loadPresetOrFile(preset.file.string()), preset.id);
       } catch (const std::exception& error) {
@@ -141,11 +133,11 @@ void App::drawTfSection() {
   if (ImGui::SmallButton("redo")) redoTf();
   ImGui::EndDisabled();
 
-  TfEdit edit = drawTfEditor(state_.tf, histogram_, tfView_);
+  TfEdit edit = drawTfEditor(editedTf(), histogram_, tfView_);
   if (edit.committedBefore) tfHistory_.push(*edit.committedBefore);
   if (edit.changed) {
-    state_.tf = std::move(edit.tf);
-    state_.tfPreset.clear();
+    editedTf() = std::move(edit.tf);
+    editedPreset().clear();
   }
 
   ImGui::SetNextItemWidth(230);
@@ -162,7 +154,7 @@ void App::drawTfSection() {
   ImGui::SameLine();
   if (ImGui::Button("save")) {
     try {
-      saveTransferFunction(state_.tf, tfPath_);
+      saveTransferFunction(editedTf(), tfPath_);
       message_ = "saved " + tfPath_;
     } catch (const std::exception& error) {
       message_ = error.what();
@@ -171,7 +163,7 @@ void App::drawTfSection() {
 }
 
 void App::drawRenderingSection() {
-  if (!ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!sectionHeader("Rendering")) return;
   bool mip = state_.mode == Compositing::mip;
   if (ImGui::Checkbox("MIP", &mip)) state_.mode = mip ? Compositing::mip : Compositing::dvr;
   helpMarker("Maximum intensity projection through a window/level instead of the transfer function.");
@@ -201,7 +193,7 @@ void App::drawRenderingSection() {
 }
 
 void App::drawExportSection() {
-  if (!ImGui::CollapsingHeader("Export", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!sectionHeader("Export")) return;
   ImGui::SetNextItemWidth(260);
   ImGui::InputText("file##export", &export_.path);
   noteRect("export_path");
@@ -219,13 +211,7 @@ void App::drawExportSection() {
     return;
   }
   if (ImGui::Button("Export image")) {
-    RenderDescription description;
-    description.dataset = data_.name;
-    description.transferFunction = state_.tf.name;
-    description.quality = Quality::high;
-    description.params = renderParamsOf(state_);
-    description.params.sampling = state_.levels[int(Quality::high)];
-    description.params.sampling.isd = export_.isd;
+    const RenderDescription description = exportDescription(state_, data_.name, export_.isd);
     export_.cancel = std::make_shared<std::atomic<bool>>(false);
     export_.started = Clock::now();
     export_.job = std::async(std::launch::async, [this, description, tf = state_.tf,

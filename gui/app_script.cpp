@@ -91,6 +91,9 @@ struct StepParser {
     } else if (object.contains("screenshot")) {
       step.kind = ScriptStep::Kind::screenshot;
       step.text = string(object["screenshot"], "screenshot");
+    } else if (object.contains("open")) {
+      step.kind = ScriptStep::Kind::open;
+      step.text = string(object["open"], "open");
     } else if (object.contains("state")) {
       step.kind = ScriptStep::Kind::state;
       step.text = string(object["state"], "state");

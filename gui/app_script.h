@@ -14,6 +14,8 @@
 //                                          and no export is running
 //   {"screenshot": "file.png"}             the window as it is now
 //   {"state": "file.json"}                 the app's state and runtime numbers
+//   {"open": "volume.mha"}                 open a volume file or DICOM folder, as a drop on the
+//                                          window does (wait_level waits for the load too)
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,7 +28,7 @@ namespace angio {
 
 struct ScriptStep {
   enum class Kind {
-    move, click, doubleClick, drag, press, release, wheel, key, text, waitMs, waitLevel, screenshot, state
+    move, click, doubleClick, drag, press, release, wheel, key, text, waitMs, waitLevel, screenshot, state, open
   };
   Kind kind = Kind::move;
   glm::vec2 at{0.f};  // move, click, wheel position; drag start

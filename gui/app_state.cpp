@@ -1,8 +1,7 @@
 #include "gui/app_state.h"
 
 #include <cmath>
-
-#include "io/tf_file.h"
+#include <filesystem>
 
 namespace angio {
 
@@ -21,37 +20,24 @@ RenderParams renderParamsOf(const AppState& state) {
   return params;
 }
 
-namespace {
+nlohmann::json toJson(const AppState& state) { return nlohmann::json::parse(toJson(Session(state))); }
 
-nlohmann::json toJson(const Sampling& sampling) {
-  return {{"isd", sampling.isd},
-          {"osd", sampling.osd},
-          {"filter", toString(sampling.filter)},
-          {"ert", sampling.ert}};
+void applySessionState(AppState& state, const Session& session) {
+  const std::string dataset = state.dataset;
+  std::vector<std::string> recent = std::move(state.recentFiles);
+  static_cast<Session&>(state) = session;
+  state.dataset = dataset;
+  state.recentFiles = std::move(recent);
+  state.view.angleDeg = wrapDegrees(session.view.angleDeg);
 }
 
-}  // namespace
+bool isPhantomName(const std::string& dataset) { return dataset.rfind("phantom ", 0) == 0; }
 
-nlohmann::json toJson(const AppState& state) {
-  const ViewState& v = state.view;
-  nlohmann::json levels = nlohmann::json::object();
-  for (int q = 0; q < kQualityLevels; ++q) levels[toString(Quality(q))] = toJson(state.levels[q]);
-  return {
-      {"dataset", state.dataset},
-      {"view",
-       {{"axis", toString(v.axis)},
-        {"angle_deg", v.angleDeg},
-        {"zoom", v.zoom},
-        {"pan_px", {v.panPx.x, v.panPx.y}},
-        {"degrees_per_pixel", v.degreesPerPixel},
-        {"auto_spin", v.autoSpin},
-        {"spin_degrees_per_second", v.spinDegreesPerSecond}}},
-      {"transfer_function", nlohmann::json::parse(angio::toJson(state.tf))},
-      {"tf_preset", state.tfPreset},
-      {"mode", state.mode == Compositing::mip ? "mip" : "dvr"},
-      {"shading", {{"enabled", state.shading.enabled}, {"ka", state.shading.ka}, {"kd", state.shading.kd}}},
-      {"levels", levels},
-  };
+std::string absoluteDataset(const std::string& dataset) {
+  std::error_code error;
+  if (isPhantomName(dataset) || !std::filesystem::exists(dataset, error)) return dataset;
+  const std::filesystem::path absolute = std::filesystem::absolute(dataset, error);
+  return error ? dataset : absolute.lexically_normal().string();
 }
 
 }  // namespace angio

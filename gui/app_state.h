@@ -1,6 +1,7 @@
 #pragma once
 // The workstation's long-lived state: one plain struct, drawn from every frame and printable as
 // JSON (it becomes the session file). Runtime things (textures, the worker) live in App.
+#include <map>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -9,27 +10,18 @@
 #include "core/progressive_renderer.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
+#include "io/session_file.h"
 
 namespace angio {
 
-struct ViewState {
-  Axis axis = Axis::k;            // rotation axis (default: the patient's long axis)
-  double angleDeg = 0;            // theta of the rendering model, kept in [0, 360)
-  double zoom = 1;                // 1 = the whole volume fits the viewport
-  glm::dvec2 panPx{0.0};          // image centre offset from the viewport centre, screen pixels
-  double degreesPerPixel = 0.5;   // left-drag rotation speed
-  bool autoSpin = false;
-  double spinDegreesPerSecond = 30;
-};
+// Rotation axis and angle (theta of the rendering model, kept in [0, 360)), zoom (1 = the whole
+// volume fits the viewport), pan (screen pixels), drag speed, auto-spin: as a session keeps them.
+using ViewState = SessionView;
 
-struct AppState {
-  std::string dataset;  // file or folder, or "phantom IxJxK"
-  ViewState view;
-  TransferFunction tf;
-  std::string tfPreset;  // preset id the TF came from, empty if edited or loaded from a file
-  Compositing mode = Compositing::dvr;
-  Shading shading;
-  LevelSamplings levels = defaultLevelSamplings();
+// What a session keeps (dataset, view, TF with its MIP window, tfPreset, mode, shading, levels,
+// panelsOpen, recentFiles: io/session_file.h), and what only this run needs.
+struct AppState : Session {
+  std::string centerlinesFile;  // centerlines to load at start (`gui --centerlines`), if any
 };
 
 // theta wrapped into [0, 360).
@@ -38,6 +30,16 @@ double wrapDegrees(double degrees);
 // The render parameters the state asks for (sampling left at its default: each level sets it).
 RenderParams renderParamsOf(const AppState& state);
 
+// The session file's JSON (io/session_file.h) of the state.
 nlohmann::json toJson(const AppState& state);
+
+// A session's contents into the state: everything but the dataset (the caller loads it) and the
+// recent files (the app's own list).
+void applySessionState(AppState& state, const Session& session);
+
+// "phantom IxJxK" names the generated phantom rather than a file.
+bool isPhantomName(const std::string& dataset);
+// A dataset on disk as an absolute path (sessions and sidecars work from any folder), else as is.
+std::string absoluteDataset(const std::string& dataset);
 
 }  // namespace angio

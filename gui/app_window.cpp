@@ -17,6 +17,7 @@
 
 #include "io/atomic_write.h"
 #include "io/image_export.h"
+#include "io/session_file.h"
 
 namespace angio {
 
@@ -74,6 +75,20 @@ std::atomic<bool> closeRequested{false};
 
 void requestClose(int) { closeRequested.store(true); }
 
+// A file or folder dropped on the window opens like one chosen in the file browser (the first one).
+void openDropped(GLFWwindow* window, int count, const char** paths) {
+  if (count > 0) static_cast<App*>(glfwGetWindowUserPointer(window))->openDataset(paths[0]);
+}
+
+// The last session goes to $XDG_CONFIG_HOME/angioray/last-session.json; a failure is a warning.
+void saveLastSession(const App& app) {
+  try {
+    saveSession(app.session(), lastSessionPath());
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "angioray: warning: %s\n", error.what());
+  }
+}
+
 void writeScreenshot(const std::filesystem::path& path, const GlApi& gl, int width, int height) {
   const std::vector<std::uint8_t> rgb = gl.readFrameRgb(width, height);
   Image image = makeImage(width, height);
@@ -106,6 +121,8 @@ int runWindow(LoadedDataset dataset, AppState state, const WindowOptions& option
   std::signal(SIGINT, requestClose);
   std::signal(SIGTERM, requestClose);
   App app(std::move(dataset), std::move(state), window.gl(), [] { glfwPostEmptyEvent(); });
+  glfwSetWindowUserPointer(window.handle(), &app);
+  glfwSetDropCallback(window.handle(), openDropped);
   const auto opened = Clock::now();
   double previousFrameMs = 0;
   bool closing = false;
@@ -136,6 +153,8 @@ int runWindow(LoadedDataset dataset, AppState state, const WindowOptions& option
     if (rest > 0) std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(rest));
   }
   if (!options.stateOut.empty()) writeReport(options.stateOut, app);
+  saveLastSession(app);
+  glfwSetDropCallback(window.handle(), nullptr);
   return 0;
 }
 

@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "gui/vessel_glyph_options.h"
 
 namespace angio {
 
@@ -29,7 +32,10 @@ struct RenderOptions {
   bool mip = false;
   std::optional<double> window, level;
   bool reference = false;  // the plain reference raycaster instead of the fast one
+  VesselGlyphCliOptions vesselGlyph;  // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
+  std::string params;  // a render sidecar to reproduce (then only --out may be given)
 };
+// Writes the image and its sidecar (io/render_sidecar.h), or re-renders a sidecar's image.
 int runRender(const RenderOptions& options);
 
 // `angioray cpr`: curved planar reformation of centerline paths (vessel/cpr.h).
@@ -71,7 +77,10 @@ struct BenchOptionsCli {
   int threads = 0;
   bool reference = false;
   bool contributions = true;
+  std::vector<std::string> levels;  // empty = all
+  std::string centerlines;  // adds VesselGlyph rows (the phantom's own when no VOLUME)
   std::string json;
+  bool glyphIntervals = false;  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
 };
 int runBench(const BenchOptionsCli& options);
 
@@ -99,6 +108,8 @@ struct GuiOptions {
   std::string stateOut;    // the app's state and runtime numbers as JSON, at the end
   double timeoutSeconds = 300;   // headless: for each wait for a quality level
   double quitAfterSeconds = 0;   // window: close by itself after this long (smoke tests)
+  std::string session;           // a saved session (io/session_file.h): its dataset, view, TF, panels
+  std::string centerlines;       // loaded into the VesselGlyph panel at start (errors shown there)
 };
 int runGui(const GuiOptions& options);
 // A display is there and GLFW can open windows on it.

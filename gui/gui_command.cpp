@@ -60,7 +60,16 @@ AppState initialState(const GuiOptions& options, const LoadedDataset& dataset) {
   for (const Preset& preset : listPresets())
     if (preset.id == options.tf) state.tfPreset = preset.id;
   if (options.mip) state.mode = Compositing::mip;
+  state.centerlinesFile = options.centerlines;
   return state;
+}
+
+// The session's dataset unless a VOLUME was given (a phantom session: its size).
+GuiOptions withSessionDataset(GuiOptions options, const Session& session) {
+  if (!options.volume.empty() || session.dataset.empty()) return options;
+  if (isPhantomName(session.dataset)) options.phantomSize = session.dataset.substr(8);
+  else options.volume = session.dataset;
+  return options;
 }
 
 }  // namespace
@@ -79,8 +88,12 @@ int runGui(const GuiOptions& options) {
   if (!options.headless && !windowSystemAvailable())
     throw std::runtime_error("no display to open a window on (DISPLAY/WAYLAND_DISPLAY unset or "
                              "unusable); use --headless");
-  LoadedDataset dataset = loadDataset(options);
-  AppState state = initialState(options, dataset);
+  std::optional<Session> session;
+  if (!options.session.empty()) session = loadSession(options.session);
+  const GuiOptions effective = session ? withSessionDataset(options, *session) : options;
+  LoadedDataset dataset = loadDataset(effective);
+  AppState state = initialState(effective, dataset);
+  if (session) applySessionState(state, *session);
   if (options.headless) {
     HeadlessOptions headless;
     headless.width = size.x;

@@ -124,6 +124,7 @@ class HeadlessSession {
       case Kind::waitLevel: waitLevel(step.level); break;
       case Kind::screenshot: frame(), screenshot(step.text); break;
       case Kind::state: frame(), writeJson(step.text, app_->report()); break;
+      case Kind::open: app_->openDataset(step.text), frame(); break;
     }
   }
 

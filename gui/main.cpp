@@ -17,8 +17,9 @@ void addInfo(CLI::App& app, angio::InfoOptions& o) {
 
 void addRender(CLI::App& app, angio::RenderOptions& o) {
   auto* cmd = app.add_subcommand("render", "Render a volume to an image file (.png, .tif, .exr)");
-  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder")->required();
-  cmd->add_option("--out,-o", o.out, "Output image (.png 8-bit, .tif 16-bit, .exr float)")->required();
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder (required without --params)");
+  auto* out = cmd->add_option("--out,-o", o.out, "Output image (.png 8-bit, .tif 16-bit, .exr float); "
+                                                 "a JSON sidecar goes beside it (OUT.json)");
   cmd->add_option("--labels", o.labels, "Label volume on the same grid");
   cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
   cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
@@ -38,6 +39,11 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
   cmd->add_option("--window", o.window, "MIP window width (HU)")->check(CLI::PositiveNumber);
   cmd->add_option("--level", o.level, "MIP window centre (HU)");
   cmd->add_flag("--reference", o.reference, "Use the plain reference raycaster (same image, slower)");
+  angio::addVesselGlyphOptions(*cmd, o.vesselGlyph);
+  auto* params = cmd->add_option("--params", o.params, "Render again what this sidecar (IMAGE.json) "
+                                                       "describes, to --out or its image");
+  for (CLI::Option* option : cmd->get_options())
+    if (option != params && option != out && option != cmd->get_help_ptr()) params->excludes(option);
 }
 
 void addCpr(CLI::App& app, angio::CprOptions& o) {
@@ -98,6 +104,13 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--reference", o.reference, "Also time the reference raycaster (slow)");
   cmd->add_flag("!--no-contributions", o.contributions, "Skip the technique-off rows");
   cmd->add_option("--json", o.json, "Also write the results as JSON");
+  cmd->add_option("--levels", o.levels, "Only these levels (fast, medium, medium-trilinear, high)")
+      ->check(CLI::IsMember({"fast", "medium", "medium-trilinear", "high"}));
+  cmd->add_option("--centerlines", o.centerlines,
+                  "Also time VesselGlyph frames with these centerlines (default: the phantom's)");
+  cmd->add_flag("--glyph-intervals", o.glyphIntervals,
+                "Time only VesselGlyph interval construction at medium quality: 20 synthetic "
+                "paths of 1000 points, or --centerlines");
 }
 
 void addDemo(CLI::App& app, angio::DemoOptions& o) {
@@ -128,8 +141,12 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
   cmd->add_option("--state-out", o.stateOut, "Write the app's state and timings as JSON at the end");
   cmd->add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for a quality level")
       ->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--session", o.session, "Restore a saved session (its dataset unless VOLUME is "
+                                           "given, view, TF, levels, panels)");
   cmd->add_option("--quit-after", o.quitAfterSeconds, "Window: close after this many seconds")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--centerlines", o.centerlines,
+                  "Centerlines (.vtp, .mrk.json, .csv) for the VesselGlyph panel");
 }
 
 }  // namespace

@@ -1,12 +1,11 @@
-// `angioray render`: volume + TF + view -> image file.
-#include <cstdio>
-#include <functional>
+// `angioray render`: volume + TF + view (+ VesselGlyph, hybrid) -> image file and its sidecar.
+#include <filesystem>
+#include <stdexcept>
 
 #include "gui/commands.h"
-#include "gui/progress_line.h"
-#include "gui/render_job.h"
+#include "gui/sidecar_render.h"
+#include "io/render_sidecar.h"
 #include "io/tf_file.h"
-#include "io/volume_reader.h"
 
 namespace angio {
 
@@ -30,27 +29,36 @@ RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
   return p;
 }
 
-void printWarning(const std::string& warning) {
-  std::fprintf(stderr, "angioray: warning: %s\n", warning.c_str());
+// Paths as absolute ones, so the sidecar works from any directory.
+std::string absolutePath(const std::string& path) {
+  return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
+}
+
+RenderSidecar sidecarFrom(const RenderOptions& o) {
+  if (o.volume.empty() || o.out.empty())
+    throw std::invalid_argument("render needs VOLUME and --out (or --params SIDECAR.json)");
+  RenderSidecar s;
+  s.vesselGlyph = vesselGlyphRecipe(o.vesselGlyph, o.tf);
+  s.hybrid = hybridCprRecipe(o.vesselGlyph);
+  if (s.vesselGlyph && o.mip) throw std::invalid_argument("--mip cannot be combined with --centerlines");
+  s.dataset = absolutePath(o.volume);
+  s.labels = absolutePath(o.labels);
+  s.quality = parseQuality(o.quality);
+  s.raycaster = o.reference ? "reference" : "fast";
+  s.tf = loadPresetOrFile(o.tf);
+  s.params = paramsFrom(o, s.tf);
+  return s;
 }
 
 }  // namespace
 
 int runRender(const RenderOptions& options) {
-  const TransferFunction tf = loadPresetOrFile(options.tf);
-  ReadOptions read;
-  read.labelPath = options.labels;
-  read.warn = printWarning;
-  ProgressLine loading("loading " + options.volume);
-  read.progress = std::ref(loading);
-  const LoadedVolume loaded = readVolume(options.volume, read);
-  RenderDescription description;
-  description.dataset = options.volume;
-  description.transferFunction = tf.name;
-  description.quality = parseQuality(options.quality);
-  description.params = paramsFrom(options, tf);
-  renderAndExport(loaded.volume, tf, description, options.out,
-                  options.reference ? Raycaster::reference : Raycaster::fast);
+  if (options.params.empty()) {
+    renderSidecarToFile(sidecarFrom(options), options.out);
+    return 0;
+  }
+  const RenderSidecar sidecar = loadRenderSidecar(options.params);
+  renderSidecarToFile(sidecar, options.out.empty() ? sidecar.image : options.out);
   return 0;
 }
 

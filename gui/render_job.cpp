@@ -25,14 +25,17 @@ Image render(const Volume& volume, const TfTable& table, const RenderParams& par
 
 }  // namespace
 
-double renderAndExport(const Volume& volume, const TransferFunction& tf,
-                       const RenderDescription& description, const std::filesystem::path& out,
-                       Raycaster raycaster) {
-  const ViewGeometry view = makeViewGeometry(volume, description.params);
+void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out) {
   if (long(view.width) * view.height > kMaxImagePixels)
     throw std::runtime_error(out.string() + ": image of " + std::to_string(view.width) + "x" +
                              std::to_string(view.height) +
                              " pixels is too large; use a larger --isd");
+}
+
+double renderAndExport(const Volume& volume, const TransferFunction& tf,
+                       const RenderDescription& description, const std::filesystem::path& out,
+                       Raycaster raycaster) {
+  checkImageSize(makeViewGeometry(volume, description.params), out);
   const auto start = std::chrono::steady_clock::now();
   Image image;
   {

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/transfer_function.h"
+#include "core/view_geometry.h"
 #include "core/volume.h"
 #include "io/render_metadata.h"
 
@@ -10,6 +11,9 @@ namespace angio {
 
 // Throws if the image would be unreasonably large (more than kMaxImagePixels).
 constexpr long kMaxImagePixels = 64L * 1024 * 1024;
+
+// Throws (naming `out`) if the view's image has more than kMaxImagePixels.
+void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out);
 
 enum class Raycaster { fast, reference };
 

@@ -136,6 +136,9 @@ ViewportInteraction drawViewport(const ViewportImage* image, ViewState& view,
     const float halfH = float(image->height * image->pixelMm * pixelsPerMm / 2);
     const ImVec2 imageMin(centre.x - halfW, centre.y - halfH), imageMax(centre.x + halfW, centre.y + halfH);
     draw->AddImage(image->texture, imageMin, imageMax);
+    result.hasImage = true;
+    result.imageMin = imageMin;
+    result.imageMax = imageMax;
     drawOrientation(draw, view, imageMin, imageMax, min, max);
   }
   drawScaleBar(draw, pixelsPerMm, min, max);

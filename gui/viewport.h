@@ -30,6 +30,8 @@ struct ViewportInteraction {
   double rotateDegrees = 0;  // from a left drag this frame
   bool reset = false;        // double-click: zoom and pan were reset
   ImVec2 min, max;           // the viewport's screen rectangle
+  bool hasImage = false;     // an image was drawn, at:
+  ImVec2 imageMin, imageMax; // its screen rectangle (may reach beyond the viewport)
 };
 
 // The letters (L/R/A/P/S/I) of the dominant LPS axis of +r, -r, +up and -up for a view about

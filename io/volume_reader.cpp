@@ -290,6 +290,8 @@ LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& op
     if (!options.labelPath.empty()) addLabels(loaded.volume, options.labelPath, options);
   } catch (const InputError&) {
     throw;
+  } catch (const LoadCancelled&) {
+    throw;
   } catch (const std::bad_alloc&) {
     throw InputError(path, "out of memory while loading");
   } catch (const std::exception& error) {  // e.g. a file vanishing mid-read

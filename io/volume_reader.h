@@ -4,6 +4,7 @@
 // reoriented to the LPS-aligned frame (voxel axes along +L, +P, +S). Throws InputError with a
 // one-line message naming the file and the problem.
 #include <filesystem>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,8 +18,13 @@ struct ReadOptions {
   std::filesystem::path labelPath;
   // Called with each warning (NaN replaced, oblique snapped, other DICOM series present, ...).
   std::function<void(const std::string&)> warn;
-  // Called with load progress in [0, 1]; may be empty.
+  // Called with load progress in [0, 1]; may be empty. It may throw LoadCancelled to stop the load.
   std::function<void(double)> progress;
+};
+
+// Thrown by a progress callback to stop a load (the user cancelled); readVolume passes it on as is.
+struct LoadCancelled : std::exception {
+  const char* what() const noexcept override { return "load cancelled"; }
 };
 
 struct LoadedVolume {

@@ -195,6 +195,33 @@ void DepthRayRoundCone::addFrustumSpansOpeningUp(const Row& row, double h0, doub
   const double k0 = frustum_.k0, secSquared = 1 + tan * tan;
   const double hb0 = -cone_.centre0.z + k0 * tan * dz, hb1 = dz * secSquared;
   const double twoK0Tan = 2 * k0 * tan, k0Squared = k0 * k0, invA = 1 / quadA_;
+  if (invDz_ != 0) {
+    // The common case, in chunks of columns computed without branches so that the compiler
+    // makes vector code of it (vessel/CMakeLists.txt), then joined; the same arithmetic as below.
+    constexpr int kChunk = 64;
+    for (int first = 0; first < count; first += kChunk) {
+      const int chunk = std::min(kChunk, count - first);
+      double los[kChunk], his[kChunk];
+      for (int k = 0; k < chunk; ++k) {
+        const double dh0 = h0 + (first + k) * dh - cone_.centre0.x;
+        const double wz = row.wz + dh0 * axisH;
+        const double ww = row.ww + dh0 * dh0;
+        const double halfB = hb0 - hb1 * wz;
+        const double c = ww - k0Squared + wz * (twoK0Tan - secSquared * wz);
+        const double discriminant = halfB * halfB - quadA_ * c;
+        const double q = -(halfB + std::copysign(std::sqrt(std::max(discriminant, 0.0)), halfB));
+        const double quotient = c / (q != 0 ? q : 1.0);
+        const double root0 = q * invA, root1 = q != 0 ? quotient : root0;
+        const double z0 = (frustum_.zBegin - wz) * invDz_, z1 = (frustum_.zEnd - wz) * invDz_;
+        los[k] = discriminant < 0 ? kInfinity : std::max(std::min(root0, root1), std::min(z0, z1));
+        his[k] = std::min(std::max(root0, root1), std::max(z0, z1));
+      }
+      for (int k = 0; k < chunk; ++k) {
+        if (los[k] <= his[k]) out[first + k] = hull(out[first + k], {los[k], his[k]});
+      }
+    }
+    return;
+  }
   for (int n = 0; n < count; ++n) {
     const double dh0 = h0 + n * dh - cone_.centre0.x;
     const double wz = row.wz + dh0 * axisH;

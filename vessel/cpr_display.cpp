@@ -28,14 +28,8 @@ void fillPixels(Image& image, const std::vector<float>& hu, const CprDisplay& di
   const std::optional<TfTable> table =
       display.tf ? std::optional<TfTable>(buildTable(*display.tf)) : std::nullopt;
   for (std::size_t n = 0; n < hu.size(); ++n) {
-    const float value = hu[n];
-    if (std::isnan(value)) continue;  // stays transparent black
-    if (table) {
-      image.pixels[n] = glm::vec4(glm::vec3(table->rgba[densityOfHu(value)]), 1.0f);
-    } else {
-      const float g = windowGrey(value, display.windowLevel);
-      image.pixels[n] = {g, g, g, 1.0f};
-    }
+    if (std::isnan(hu[n])) continue;  // stays transparent black
+    image.pixels[n] = cprColour(hu[n], display, table ? &*table : nullptr);
   }
 }
 
@@ -108,6 +102,12 @@ std::optional<WindowLevel> windowPreset(const std::string& name) {
 float windowGrey(float hu, WindowLevel windowLevel) {
   const double low = windowLevel.level - 0.5 * windowLevel.window;
   return float(std::clamp((hu - low) / windowLevel.window, 0.0, 1.0));
+}
+
+glm::vec4 cprColour(float hu, const CprDisplay& display, const TfTable* table) {
+  if (table) return glm::vec4(glm::vec3(table->rgba[densityOfHu(hu)]), 1.0f);
+  const float g = windowGrey(hu, display.windowLevel);
+  return {g, g, g, 1.0f};
 }
 
 Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const CprDisplay& display) {

@@ -36,6 +36,10 @@ struct CprDisplay {
 // Grey value of a HU under a window/level: clamp((HU - (level - window / 2)) / window, 0, 1).
 float windowGrey(float hu, WindowLevel windowLevel);
 
+// The colour of a sampled pixel of `hu`: through `table` (= buildTable(*display.tf), when the
+// display has a TF), else grey through the window; opaque.
+glm::vec4 cprColour(float hu, const CprDisplay& display, const TfTable* table);
+
 // hu: row-major layout.width x layout.height, NaN = not sampled (resampleCpr's output).
 Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const CprDisplay& display);
 

@@ -17,10 +17,7 @@ namespace angio {
 namespace {
 
 void resampleTrilinear(const Volume& volume, const CprSpan& span, float* row) {
-  for (int x = span.x0; x < span.x1; ++x) {
-    const glm::dvec3 q = span.pointMm(x) / volume.spacing;
-    row[x] = trilinearDensity(volume, cellAt(volume, q)) - float(kHuOffset);
-  }
+  for (int x = span.x0; x < span.x1; ++x) row[x] = trilinearHu(volume, span.pointMm(x));
 }
 
 // The densities (label bits masked off) of voxels [i0, i0 + width) x [j0, j0 + height) of slice k.
@@ -86,6 +83,10 @@ void resampleRemap(const Volume& volume, const CprSpan& span, float* row) {
 }
 
 }  // namespace
+
+float trilinearHu(const Volume& volume, glm::dvec3 pointMm) {
+  return trilinearDensity(volume, cellAt(volume, pointMm / volume.spacing)) - float(kHuOffset);
+}
 
 const char* toString(CprResampler resampler) {
   return resampler == CprResampler::trilinear ? "trilinear" : "opencv-remap";

@@ -24,6 +24,10 @@ enum class CprResampler { trilinear, opencvRemap };
 const char* toString(CprResampler resampler);
 std::optional<CprResampler> parseCprResampler(const std::string& text);
 
+// The HU at a point (mm, volume frame) by the trilinear filter: the trilinear resampler's value
+// at a pixel showing that point. The volume must have voxels.
+float trilinearHu(const Volume& volume, glm::dvec3 pointMm);
+
 // HU per pixel, row-major (layout.width x layout.height), NaN where no span samples.
 std::vector<float> resampleCpr(const Volume& volume, const CprLayout& layout,
                                CprResampler resampler = CprResampler::trilinear);

@@ -11,8 +11,9 @@
 #include <span>
 #include <stdexcept>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 
 #include "vessel/capsule_intersection.h"
 
@@ -322,15 +323,18 @@ class SpanList {
   const DepthSpan* end() const { return begin() + count_; }
   bool empty() const { return count_ == 0; }
 
-  void add(DepthSpan span) {
+  void add(const DepthSpan& span) {  // by reference: a copy on the stack stalled its load
+    if (count_ == 0) {  // the most common case by far, inline (an empty list is never spilled)
+      local_[0] = span;
+      count_ = 1;
+      return;
+    }
     DepthSpan* spans = spilled_ ? spill_.data() : local_;
-    if (count_ > 0) {  // most often the span meets the last one only: join in place
-      DepthSpan& last = spans[count_ - 1];
-      if (span.begin <= last.end && span.end >= last.begin &&
-          (count_ == 1 || span.begin > spans[count_ - 2].end)) {
-        last = {std::min(span.begin, last.begin), std::max(span.end, last.end)};
-        return;
-      }
+    DepthSpan& last = spans[count_ - 1];  // most often the span meets the last one only: join in place
+    if (span.begin <= last.end && span.end >= last.begin &&
+        (count_ == 1 || span.begin > spans[count_ - 2].end)) {
+      last = {std::min(span.begin, last.begin), std::max(span.end, last.end)};
+      return;
     }
     if (!spilled_ && count_ < kLocal) {
       count_ = insertMerged(local_, count_, span);
@@ -363,7 +367,7 @@ class ColumnSpans {
   explicit ColumnSpans(int width)
       : focus_(std::size_t(width)), context_(std::size_t(width)), used_((std::size_t(width) + 63) / 64, 0) {}
 
-  void add(Region region, int x, DepthSpan span) {
+  void add(Region region, int x, const DepthSpan& span) {
     const std::size_t word = std::size_t(x) / 64;
     const std::uint64_t bit = std::uint64_t(1) << (x % 64);
     if (!(used_[word] & bit)) {
@@ -508,14 +512,23 @@ class IntervalBuffer {
   std::size_t size_ = 0, capacity_ = 0;
 };
 
+// Builds rows one at a time. Its per-column storage is kept from band to band and view to view
+// (one builder per thread, vessel_glyph's Scratch): built afresh for every band it cost about a
+// tenth of a view.
 class RowBuilder {
  public:
-  RowBuilder(const RowGeometry& rows, const VesselGlyphSettings& settings)
-      : rows_(rows),
-        settings_(settings),
-        columns_(rows.width),
-        focusChain_(rows.width, Region::focus),
-        contextChain_(rows.width, Region::context) {}
+  RowBuilder() : columns_(0), focusChain_(0, Region::focus), contextChain_(0, Region::context) {}
+
+  // Before the rows of a view; `settings` must outlive them.
+  void startView(const RowGeometry& rows, const VesselGlyphSettings& settings) {
+    if (rows.width != rows_.width) {
+      columns_ = ColumnSpans(rows.width);
+      focusChain_ = ChainAccumulator(rows.width, Region::focus);
+      contextChain_ = ChainAccumulator(rows.width, Region::context);
+    }
+    rows_ = rows;
+    settings_ = &settings;
+  }
 
   // Appends row y's intervals to `out`; rowStarts[x] = the offset in `out` of column x's first.
   void build(int y, const std::vector<ViewSegment>& segments, const std::uint32_t* candidates,
@@ -529,8 +542,8 @@ class RowBuilder {
   void advanceRuns(int x);
   void emitMixed(int x, IntervalBuffer& out);
 
-  const RowGeometry& rows_;
-  const VesselGlyphSettings& settings_;
+  RowGeometry rows_;
+  const VesselGlyphSettings* settings_ = nullptr;
   ColumnSpans columns_;
   ChainAccumulator focusChain_, contextChain_;
   std::vector<RunSpan> runs_, activeRuns_;
@@ -552,9 +565,9 @@ void RowBuilder::build(int y, const std::vector<ViewSegment>& segments,
       focusChain_.flush(columns_);
       contextChain_.flush(columns_);
     }
-    addTube(segment, segment.focus, v, focusChain_, settings_.halfVessel);
+    addTube(segment, segment.focus, v, focusChain_, settings_->halfVessel);
     if (segment.contextTube) addTube(segment, *segment.contextTube, v, contextChain_, false);
-    if (settings_.context == ContextShape::kSlab) addSlab(segment, v);
+    if (settings_->context == ContextShape::kSlab) addSlab(segment, v);
   }
   focusChain_.flush(columns_);
   contextChain_.flush(columns_);
@@ -577,16 +590,18 @@ void RowBuilder::addTube(const ViewSegment& segment, const Tube& tube, double v,
   if (v < tube.vLo || v > tube.vHi) return;  // the band's other rows
   const DepthRayRoundCone::Row row = tube.cone.row(v);
   if (row.partCount == 0) return;
-  double hLo = kInfinity, hHi = -kInfinity;
+  // The columns of each part, and of all (columns() is monotone: the hull's are min and max).
+  std::pair<int, int> partColumns[3];
+  int x0 = rows_.width, x1 = -1;
   for (int p = 0; p < row.partCount; ++p) {
-    hLo = std::min(hLo, row.parts[p].hLo);
-    hHi = std::max(hHi, row.parts[p].hHi);
+    partColumns[p] = rows_.columns(row.parts[p].hLo, row.parts[p].hHi);
+    x0 = std::min(x0, partColumns[p].first);
+    x1 = std::max(x1, partColumns[p].second);
   }
-  const auto [x0, x1] = rows_.columns(hLo, hHi);
   if (x0 > x1) return;
   spans_.assign(std::size_t(x1 - x0 + 1), DepthSpan{});
   for (int p = 0; p < row.partCount; ++p) {
-    const auto [first, last] = rows_.columns(row.parts[p].hLo, row.parts[p].hHi);
+    const auto [first, last] = partColumns[p];
     if (first > last) continue;
     tube.cone.addPartSpans(row, row.parts[p], rows_.columnH(first), rows_.pixelMm, last - first + 1,
                            spans_.data() + (first - x0));
@@ -603,7 +618,7 @@ void RowBuilder::addTube(const ViewSegment& segment, const Tube& tube, double v,
 // depths of those with |h(s) - h| <= half width, widened by front and back. Where all of them
 // are within the half width (the interior) the span is the same for every column: one run.
 void RowBuilder::addSlab(const ViewSegment& segment, double v) {
-  const SlabContext& slab = settings_.slab;
+  const SlabContext& slab = settings_->slab;
   const double halfRow = rows_.pixelMm / 2;
   const glm::dvec3 along = segment.b - segment.a;
   SRange inRow;
@@ -724,7 +739,7 @@ void RowBuilder::emitMixed(int x, IntervalBuffer& out) {
     for (const DepthSpan& span : columnContext) insertMerged(context_, span);
     context = context_;
   }
-  const double notBefore = settings_.cleft && !focus_.empty() ? focus_.front().begin : -kInfinity;
+  const double notBefore = settings_->cleft && !focus_.empty() ? focus_.front().begin : -kInfinity;
   subtract(context, focus_, notBefore, contextLeft_);
   // Both lists are sorted and disjoint from each other: merge them by begin.
   std::size_t f = 0, c = 0;
@@ -737,23 +752,16 @@ void RowBuilder::emitMixed(int x, IntervalBuffer& out) {
   out.commit(end);
 }
 
-// Turns the bands' local offsets in regions.rayBegin into global ones and concatenates their
-// intervals, reusing the memory of `regions`.
-void assemble(const RowGeometry& rows, const std::vector<IntervalBuffer>& bands, RayRegions& regions) {
-  std::vector<std::size_t> intervalBase(bands.size() + 1, 0);
-  for (std::size_t n = 0; n < bands.size(); ++n) intervalBase[n + 1] = intervalBase[n] + bands[n].size();
+// Appends a finished band to `regions` (bands arrive in order): its intervals, and its rows'
+// offsets in regions.rayBegin turned from band-local into global ones.
+void appendBand(const RowGeometry& rows, int band, const IntervalBuffer& buffer, RayRegions& regions) {
+  const std::uint32_t base = std::uint32_t(regions.intervals.size());
   const std::size_t pixels = std::size_t(rows.width) * rows.height;
-  regions.intervals.resize(intervalBase.back());
-  regions.rayBegin[pixels] = std::uint32_t(intervalBase.back());
   const std::size_t pixelsPerBand = std::size_t(rows.width) * kRowsPerBand;
-  tbb::parallel_for(std::size_t(0), bands.size(), [&](std::size_t n) {
-    const std::uint32_t base = std::uint32_t(intervalBase[n]);
-    std::uint32_t* begin = regions.rayBegin.data() + n * pixelsPerBand;
-    std::uint32_t* end = regions.rayBegin.data() + std::min(pixels, (n + 1) * pixelsPerBand);
-    for (std::uint32_t* start = begin; start != end; ++start) *start += base;
-    std::copy(bands[n].data(), bands[n].data() + bands[n].size(),
-              regions.intervals.begin() + std::ptrdiff_t(intervalBase[n]));
-  });
+  std::uint32_t* begin = regions.rayBegin.data() + std::size_t(band) * pixelsPerBand;
+  std::uint32_t* end = regions.rayBegin.data() + std::min(pixels, (std::size_t(band) + 1) * pixelsPerBand);
+  for (std::uint32_t* start = begin; start != end; ++start) *start += base;
+  regions.intervals.insert(regions.intervals.end(), buffer.data(), buffer.data() + buffer.size());
 }
 
 bool finiteAndNonNegative(double value) { return std::isfinite(value) && value >= 0; }
@@ -809,9 +817,31 @@ GlyphTubes prepareGlyphTubes(const Centerlines& inVolumeFrame, const VesselGlyph
 
 namespace {
 
-// The per-view work, into `out`, with `bands` as scratch (both reused if they have room).
+// Band `band`'s rows into `buffer` (cleared first), their band-local offsets into rayBegin.
+void buildBand(int band, const RowGeometry& rows, const std::vector<ViewSegment>& segments,
+               const BandBins& bins, RowBuilder& builder, IntervalBuffer& buffer,
+               std::vector<std::uint32_t>& rayBegin) {
+  buffer.clear();
+  buffer.room(std::size_t(rows.width) * kRowsPerBand);  // about one interval per pixel
+  const std::uint32_t* candidates = bins.segments.data() + bins.first[band];
+  const std::size_t candidateCount = bins.first[band + 1] - bins.first[band];
+  const int yEnd = std::min(rows.height, (band + 1) * kRowsPerBand);
+  for (int y = band * kRowsPerBand; y < yEnd; ++y) {
+    builder.build(y, segments, candidates, candidateCount, buffer,
+                  rayBegin.data() + std::size_t(y) * rows.width);
+  }
+}
+
+// What the per-view work keeps from view to view: the bands' intervals and a row builder per thread.
+struct BuildScratch {
+  std::vector<IntervalBuffer> bands;
+  tbb::enumerable_thread_specific<RowBuilder> builders;
+};
+
+// The per-view work, into `out` (both reused if they have room).
 void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGlyphSettings& settings,
-               RayRegions& out, std::vector<IntervalBuffer>& bands) {
+               RayRegions& out, BuildScratch& scratch) {
+  std::vector<IntervalBuffer>& bands = scratch.bands;
   if (const auto problem = settingsProblem(settings)) throw std::invalid_argument(*problem);
   const RowGeometry rows{view.width, view.height, view.pixelMm};
   const std::vector<ViewSegment> segments = viewSegments(view, tubes, settings);
@@ -820,24 +850,33 @@ void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGl
   out.width = rows.width;
   out.height = rows.height;
   out.rayBegin.resize(std::size_t(rows.width) * rows.height + 1);
-  bands.resize(std::size_t(bandCount));
-  for (IntervalBuffer& band : bands) {
-    band.clear();
-    band.room(std::size_t(rows.width) * kRowsPerBand);  // about one interval per pixel
-  }
-  tbb::parallel_for(tbb::blocked_range<int>(0, bandCount, 1), [&](const tbb::blocked_range<int>& range) {
-    RowBuilder builder(rows, settings);
-    for (int band = range.begin(); band != range.end(); ++band) {
-      const std::uint32_t* candidates = bins.segments.data() + bins.first[band];
-      const std::size_t candidateCount = bins.first[band + 1] - bins.first[band];
-      const int yEnd = std::min(rows.height, (band + 1) * kRowsPerBand);
-      for (int y = band * kRowsPerBand; y < yEnd; ++y) {
-        builder.build(y, segments, candidates, candidateCount, bands[std::size_t(band)],
-                      out.rayBegin.data() + std::size_t(y) * rows.width);
-      }
-    }
-  });
-  assemble(rows, bands, out);
+  out.intervals.clear();
+  // A pipeline: bands are built in parallel, each into a buffer of its own, and appended to `out`
+  // in order as soon as they are done, while their intervals are still in cache (appending them
+  // all at the end cost about a tenth of a view). Band n's buffer is n % tokens: at most `tokens`
+  // bands are in flight and they leave in order, so band n + tokens starts after n has left.
+  const int tokens = 4 * tbb::this_task_arena::max_concurrency();
+  bands.resize(std::size_t(tokens));
+  int nextBand = 0;
+  tbb::parallel_pipeline(
+      std::size_t(tokens),
+      tbb::make_filter<void, int>(tbb::filter_mode::serial_in_order,
+                                  [&](tbb::flow_control& control) {
+                                    if (nextBand == bandCount) control.stop();
+                                    return nextBand++;
+                                  }) &
+          tbb::make_filter<int, int>(tbb::filter_mode::parallel,
+                                     [&](int band) {
+                                       RowBuilder& builder = scratch.builders.local();
+                                       builder.startView(rows, settings);
+                                       buildBand(band, rows, segments, bins, builder,
+                                                 bands[std::size_t(band % tokens)], out.rayBegin);
+                                       return band;
+                                     }) &
+          tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int band) {
+            appendBand(rows, band, bands[std::size_t(band % tokens)], out);
+          }));
+  out.rayBegin.back() = std::uint32_t(out.intervals.size());
 }
 
 }  // namespace
@@ -845,14 +884,12 @@ void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGl
 RayRegions buildRayRegions(const ViewGeometry& view, const GlyphTubes& tubes,
                            const VesselGlyphSettings& settings) {
   RayRegions regions;
-  std::vector<IntervalBuffer> bands;
-  buildInto(view, tubes, settings, regions, bands);
+  BuildScratch scratch;
+  buildInto(view, tubes, settings, regions, scratch);
   return regions;
 }
 
-struct RayRegionBuilder::Scratch {
-  std::vector<IntervalBuffer> bands;
-};
+struct RayRegionBuilder::Scratch : BuildScratch {};
 
 RayRegionBuilder::RayRegionBuilder(const Centerlines& inVolumeFrame,
                                    const VesselGlyphSettings& settings)
@@ -865,7 +902,7 @@ RayRegionBuilder::RayRegionBuilder(RayRegionBuilder&&) noexcept = default;
 RayRegionBuilder& RayRegionBuilder::operator=(RayRegionBuilder&&) noexcept = default;
 
 void RayRegionBuilder::build(const ViewGeometry& view, RayRegions& out) {
-  buildInto(view, tubes_, settings_, out, scratch_->bands);
+  buildInto(view, tubes_, settings_, out, *scratch_);
 }
 
 RayRegions buildRayRegions(const Volume& volume, const ViewGeometry& view,

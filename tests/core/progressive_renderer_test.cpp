@@ -244,5 +244,90 @@ TEST(ProgressiveRenderer, DestructionInterruptsARunningRender) {
   EXPECT_LT(joinMs, 500);
 }
 
+// A stand-in for VesselGlyph's regions, independent of vessel/: on the left half of the image the
+// depths |t - centre depth| < 15 mm are focus, on the right half context; the rest is outside.
+void halvesRegions(const ViewGeometry& view, RayRegions& out) {
+  out.width = view.width;
+  out.height = view.height;
+  out.rayBegin.clear();
+  out.intervals.clear();
+  const double centreDepth = glm::dot(view.centre - view.rayOrigin(0, 0), view.viewDir);
+  for (int y = 0; y < view.height; ++y) {
+    for (int x = 0; x < view.width; ++x) {
+      out.rayBegin.push_back(std::uint32_t(out.intervals.size()));
+      const Region region = x < view.width / 2 ? Region::focus : Region::context;
+      out.intervals.push_back({float(centreDepth - 15), float(centreDepth + 15), region});
+    }
+  }
+  out.rayBegin.push_back(std::uint32_t(out.intervals.size()));
+}
+
+std::shared_ptr<const RegionSource> halvesSource(std::shared_ptr<const TfTable> outside) {
+  auto source = std::make_shared<RegionSource>();
+  source->build = halvesRegions;
+  source->focus = tableFor("cta-vessels-bone");
+  source->context = tableFor("soft-tissue-context");
+  source->outside = std::move(outside);
+  return source;
+}
+
+Image renderDirectlyWithRegions(const Volume& volume, const RegionSource& source,
+                                const RenderParams& params) {
+  const SliceTiles tiles = buildSliceTiles(volume, params.axis);
+  RayRegions regions;
+  halvesRegions(makeViewGeometry(volume, params), regions);
+  const RegionTables tables{&regions, source.focus.get(), source.context.get(), source.outside.get()};
+  return renderFast(volume, tiles, classifyTiles(tiles, tables), tables, params);
+}
+
+TEST(ProgressiveRenderer, RequestWithRegionsEqualsRenderFastWithTheSameRegionTables) {
+  FrameLog log;
+  ProgressiveRenderer renderer(testVolume(), log.callbacks());
+  ProgressiveRequest request = requestAt(35, tableFor("cta-vessels-bone"));
+  request.regions = halvesSource(nullptr);  // outside clipped
+  const std::uint64_t id = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(id, Quality::high, 120s));
+
+  const std::vector<ProgressiveFrame> frames = log.copy();
+  ASSERT_EQ(frames.size(), 3u);
+  for (int q = 0; q < kQualityLevels; ++q) {
+    SCOPED_TRACE(toString(Quality(q)));
+    EXPECT_EQ(frames[q].regions, request.regions);
+    RenderParams params = request.params;
+    params.sampling = qualitySampling(Quality(q));
+    const Image direct = renderDirectlyWithRegions(testVolume(), *request.regions, params);
+    EXPECT_TRUE(hasVisiblePixel(direct));
+    EXPECT_TRUE(sameImage(*frames[q].image, direct));
+    // The clipped outside makes it another image than plain DVR with the same table.
+    EXPECT_FALSE(sameImage(direct, renderDirectly(testVolume(), *request.table, params)));
+  }
+}
+
+TEST(ProgressiveRenderer, ANewRegionSourceIsANewRenderAndDroppingItGivesPlainDvr) {
+  ProgressiveRenderer renderer(testVolume());
+  const auto table = tableFor("cta-vessels-bone");
+  ProgressiveRequest clipped = requestAt(0, table);
+  clipped.regions = halvesSource(nullptr);
+  const std::uint64_t a = renderer.request(clipped);
+  ASSERT_TRUE(renderer.waitForLevel(a, Quality::medium, 60s));
+
+  ProgressiveRequest withOutside = clipped;
+  withOutside.regions = halvesSource(table);  // same shape, the outside rendered: a change
+  const std::uint64_t b = renderer.request(withOutside);
+  EXPECT_NE(a, b);
+  ASSERT_TRUE(renderer.waitForLevel(b, Quality::medium, 60s));
+  auto frame = renderer.latestFrame();
+  RenderParams params = withOutside.params;
+  params.sampling = qualitySampling(frame->level);
+  EXPECT_TRUE(sameImage(*frame->image, renderDirectlyWithRegions(testVolume(), *withOutside.regions, params)));
+
+  const std::uint64_t c = renderer.request(requestAt(0, table));
+  ASSERT_TRUE(renderer.waitForLevel(c, Quality::medium, 60s));
+  frame = renderer.latestFrame();
+  EXPECT_EQ(frame->regions, nullptr);
+  params.sampling = qualitySampling(frame->level);
+  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(testVolume(), *table, params)));
+}
+
 }  // namespace
 }  // namespace angio

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "tests/gui/run_angioray.h"
 #include <nlohmann/json.hpp>
@@ -24,7 +25,7 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 // Tall enough for the whole side panel (export section included) without scrolling.
-const std::string kSmall = " --phantom-size 96x96x200 --size 1000x900 --timeout 120";
+const std::string kSmall = " --phantom-size 96x96x200 --size 1000x1400 --timeout 120";
 
 using angio::test_support::runAngioray;
 using GuiRun = angio::test_support::ProgramRun;
@@ -72,7 +73,8 @@ class Gui : public ::testing::Test {
  protected:
   void SetUp() override {
     dir = fs::temp_directory_path() /
-          ("angioray-gui-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+          ("angioray-gui-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+           "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
   }
@@ -107,7 +109,7 @@ TEST_F(Gui, HeadlessWithoutScriptShowsTheHighImageWithOrientation) {
   OIIO::ImageBuf shot(file("start.png"));
   ASSERT_TRUE(shot.read());
   EXPECT_EQ(shot.spec().width, 1000);
-  EXPECT_EQ(shot.spec().height, 900);
+  EXPECT_EQ(shot.spec().height, 1400);
 
   const Json state = readJson(dir / "state.json");
   const Json& runtime = state["runtime"];
@@ -261,13 +263,12 @@ TEST_F(Gui, ExportWritesTheShownHighImageAndASidecar) {
   ASSERT_TRUE(fs::exists(dir / "view.png"));
   // isd 0.5 with the high level's other settings: the very image the viewport shows at high.
   EXPECT_EQ(checksumOfRgb8(dir / "view.png"), end["runtime"]["shown"]["checksum"]);
-  const Json sidecar = readJson(dir / "view.png.json");
-  EXPECT_EQ(sidecar["image"], "view.png");
+  const Json sidecar = readJson(dir / "view.png.json");  // io/render_sidecar.h
+  EXPECT_EQ(sidecar["image"], file("view.png"));
   EXPECT_DOUBLE_EQ(sidecar["sampling"]["isd"].get<double>(), 0.5);
   EXPECT_EQ(sidecar["sampling"]["filter"], "trilinear");
-  EXPECT_EQ(sidecar["axis"], "k");
-  EXPECT_EQ(sidecar["transfer_function"]["points"].size(), end["state"]["transfer_function"]["points"].size());
-  EXPECT_EQ(sidecar["width"], end["runtime"]["shown"]["width"]);
+  EXPECT_EQ(sidecar["view"]["axis"], "k");
+  EXPECT_EQ(sidecar["tf"]["points"].size(), end["state"]["transfer_function"]["points"].size());
 }
 
 TEST_F(Gui, MissingVolumeIsAOneLineErrorNamingIt) {
@@ -287,7 +288,8 @@ TEST_F(Gui, WindowUnderXvfbRotatesWithARealMouseDrag) {
   if (!installed("xvfb-run")) GTEST_SKIP() << "xvfb-run not installed (apt package xvfb)";
   if (!installed("xdotool")) GTEST_SKIP() << "xdotool not installed (apt package xdotool)";
   const fs::path session = dir / "session.sh";
-  std::ofstream(session) << std::string(ANGIORAY_BINARY) +
+  // XDG_CONFIG_HOME: the window writes its last session there when it closes.
+  std::ofstream(session) << "XDG_CONFIG_HOME=" + file("config") + " " + std::string(ANGIORAY_BINARY) +
       " gui --phantom-size 96x96x200 --size 800x600 --quit-after 60 --state-out " + file("window.json") +
       " --screenshot " + file("window.png") + R"( &
 app=$!
@@ -309,6 +311,9 @@ wait $app
   OIIO::ImageBuf shot(file("window.png"));
   ASSERT_TRUE(shot.read());
   EXPECT_EQ(shot.spec().width, 800);
+  // Closing wrote the last session, with the angle the drag set.
+  const Json last = readJson(dir / "config" / "angioray" / "last-session.json");
+  EXPECT_DOUBLE_EQ(last["view"]["angle_deg"].get<double>(), 320);
 }
 
 }  // namespace

@@ -215,8 +215,11 @@ class CenterlineFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    // Parameterised tests are named "Test/N": flatten the '/' so TearDown removes the whole dir.
+    std::string name = info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
     dir_ = fs::temp_directory_path() /
-           ("angioray-centerlines-" + std::to_string(::getpid()) + "-" + info->name());
+           ("angioray-centerlines-" + std::to_string(::getpid()) + "-" + name);
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -1,0 +1,254 @@
+// The CPR view of App (issue 6 item 6; thesis sec. 5.2.2, fig. 5.4): the curved planar
+// reformation of the selected path beside the DVR view, at the view's axis and angle (so rotating
+// the view turns the straightened CPR's vector of interest). Hovering it shows the arc length and
+// HU under the mouse and marks that point on the DVR image.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include <imgui.h>
+
+#include "core/view_geometry.h"
+#include "gui/app.h"
+#include "io/tf_file.h"
+
+namespace angio {
+
+namespace {
+
+constexpr float kCprShare = 0.35f;  // of the room left of the side panel
+constexpr double kMaxCprPixelMm = 1.0;  // finer than coarse volumes' DVR pixels, for the ruler
+constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
+constexpr const char* kColourings[] = {"CTA lumen", "calcium", "focus TF"};
+constexpr float kClickReachPx = 12;  // a click this near a projected centerline moves the cursor
+
+std::shared_ptr<const ProgressiveFrame> textureFrameOf(Image image) {
+  auto frame = std::make_shared<ProgressiveFrame>();
+  frame->rgb8 = toRgb8(image);
+  frame->mipmaps = halvedLevels(frame->rgb8, image.width, image.height);
+  frame->image = std::make_shared<const Image>(std::move(image));
+  return frame;
+}
+
+std::string pathLabel(const Centerlines& centerlines, int path) {
+  if (path < 0 || path >= int(centerlines.paths.size())) return "all paths";
+  const std::string& name = centerlines.paths[path].name;
+  return std::to_string(path) + (name.empty() ? "" : ": " + name);
+}
+
+// Where a centerline point lies in the CPR image: on its path's curve, or, on a trunk the path
+// shares with an earlier path (drawn once, vessel/cpr_layout.h), on that path's curve.
+// `path` indexes the paths the CPR was computed for.
+std::optional<glm::dvec2> cprPixelOf(const CprLayout& layout, int path, double arcMm) {
+  for (const bool samePath : {true, false}) {
+    for (const CprCurve& curve : layout.curves) {
+      if (samePath ? curve.path != path : curve.path >= path) continue;
+      for (std::size_t n = 1; n < curve.arcMm.size(); ++n) {
+        const double a0 = curve.arcMm[n - 1], a1 = curve.arcMm[n];
+        if (arcMm < a0 || arcMm > a1) continue;
+        const double f = a1 > a0 ? (arcMm - a0) / (a1 - a0) : 0;
+        return curve.pixels[n - 1] + f * (curve.pixels[n] - curve.pixels[n - 1]);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+// A left click (not a drag) on the DVR image near a projected centerline: the nearest centerline
+// point becomes the CPR view's cursor.
+void App::moveCprCursorOnClick() {
+  if (cprViewWidth() <= 0 || !shown_ || !viewport_.hasImage) return;
+  if (!ImGui::IsItemHovered() || !ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return;
+  const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
+  if (drag.x * drag.x + drag.y * drag.y > 9) return;  // a drag turns the view
+  const Centerlines* centerlines = nullptr;
+  try {
+    centerlines = framedCenterlines();
+  } catch (const std::exception&) {
+    return;
+  }
+  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  float best = kClickReachPx * kClickReachPx;
+  for (std::size_t p = 0; p < centerlines->paths.size(); ++p) {
+    const CenterlinePath& path = centerlines->paths[p];
+    const std::vector<double> arcs = arcLengthsMm(path);
+    for (std::size_t n = 0; n < path.points.size(); ++n) {
+      const ImVec2 at = dvrScreenOf(view, path.points[n].positionMm);
+      const float dx = at.x - mouse.x, dy = at.y - mouse.y;
+      if (dx * dx + dy * dy >= best) continue;
+      best = dx * dx + dy * dy;
+      cprView_.cursor = CenterlinePlace{int(p), arcs[n], path.points[n].positionMm};
+    }
+  }
+}
+
+float App::cprViewWidth() const {
+  if (!cprView_.shown || !vessel_.physical) return 0;
+  return std::floor(std::max(ImGui::GetIO().DisplaySize.x - kPanelWidth, 0.f) * kCprShare);
+}
+
+void App::drawCprSection() {
+  if (!vessel_.physical || !sectionHeader("CPR")) return;  // the section needs centerlines
+  CprViewPanel& panel = cprView_;
+  ImGui::Checkbox("CPR view beside the image", &panel.shown);
+  noteRect("cpr_shown");
+  for (std::size_t n = 0; n < std::size(kModes); ++n) {
+    if (n) ImGui::SameLine();
+    if (ImGui::RadioButton(toString(kModes[n]), panel.mode == kModes[n])) panel.mode = kModes[n];
+    noteRect(std::string("cpr_mode_") + toString(kModes[n]));
+  }
+  ImGui::SetNextItemWidth(220);
+  if (ImGui::BeginCombo("path##cpr", pathLabel(*vessel_.physical, panel.path).c_str())) {
+    for (int n = -1; n < int(vessel_.physical->paths.size()); ++n)
+      if (ImGui::Selectable(pathLabel(*vessel_.physical, n).c_str(), panel.path == n)) panel.path = n;
+    ImGui::EndCombo();
+  }
+  ImGui::TextUnformatted("colour");
+  for (int n = 0; n < 3; ++n) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton(kColourings[n], int(panel.colouring) == n)) panel.colouring = CprColouring(n);
+  }
+  if (!panel.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", panel.error.c_str());
+}
+
+// Recomputes the CPR when its inputs changed (not while a slider or a spin changes them every
+// frame, once one is shown), and uploads it as the view's texture.
+void App::updateCpr() {
+  CprViewPanel& panel = cprView_;
+  const Centerlines* centerlines = nullptr;
+  try {
+    centerlines = framedCenterlines();
+  } catch (const std::exception& error) {
+    panel.error = error.what();
+  }
+  if (!centerlines) return;
+  ensureVesselTfs();
+  char view[96];
+  std::snprintf(view, sizeof view, "%s %.17g %d %d %d", toString(state_.view.axis), state_.view.angleDeg,
+                int(panel.mode), panel.path, int(panel.colouring));
+  const std::string key = vessel_.framedFor + " " + vessel_.file + " " + view +
+                          (panel.colouring == CprColouring::focusTf ? toJson(vessel_.focusTf) : "");
+  if (key == panel.madeFor) return;
+  if (panel.cpr && (ImGui::IsAnyItemActive() || state_.view.autoSpin)) return;
+  panel.madeFor = key;
+  panel.hovered.reset();
+  try {
+    const auto paths = selectPaths(*centerlines, panel.path < 0 ? "all" : std::to_string(panel.path));
+    // The high level's pixel size, so a projected CPR registers with the DVR image (issue 6 item 1).
+    const double pixelMm = std::min(state_.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm);
+    const ViewGeometry geometry = cprView(data_.volume, state_.view.axis, state_.view.angleDeg, pixelMm);
+    Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{panel.mode, {}});
+    CprDisplay display;
+    if (panel.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
+    if (panel.colouring == CprColouring::focusTf) display.tf = vessel_.focusTf;
+    panel.frame = textureFrameOf(displayCpr(cpr.layout, cpr.hu, display));
+    panel.texture.begin(panel.frame);
+    while (!panel.texture.step(std::size_t(64) << 20)) {
+    }
+    panel.cpr = std::move(cpr);
+    panel.error.clear();
+  } catch (const std::exception& error) {
+    panel.error = error.what();
+    panel.cpr.reset();
+    panel.frame.reset();
+  }
+}
+
+// The CPR hovered: what it shows, and the same point marked on the DVR image.
+void App::drawCprView() {
+  CprViewPanel& panel = cprView_;
+  panel.hovered.reset();
+  panel.markedOnDvr.reset();
+  const float width = cprViewWidth();
+  if (width <= 0) return;
+  updateCpr();
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(std::max(io.DisplaySize.x - kPanelWidth - width, 64.f), 0));
+  ImGui::SetNextWindowSize(ImVec2(width, std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
+  ImGui::Begin("##cpr", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+  ImGui::Text("CPR %s, %s", toString(panel.mode), pathLabel(*vessel_.physical, panel.path).c_str());
+  const ImVec2 hoverLine = ImGui::GetCursorScreenPos();
+  ImGui::NewLine();
+  if (!panel.error.empty()) ImGui::TextWrapped("%s", panel.error.c_str());
+  if (!panel.frame || !panel.cpr || panel.texture.empty()) {
+    ImGui::End();
+    return;
+  }
+  const Image& image = *panel.frame->image;
+  const ImVec2 avail = ImGui::GetContentRegionAvail(), at = ImGui::GetCursorScreenPos();
+  const float scale = std::max(std::min(avail.x / float(image.width), avail.y / float(image.height)), 1e-3f);
+  const ImVec2 size(float(image.width) * scale, float(image.height) * scale);
+  panel.imageMin = ImVec2(at.x + std::max(avail.x - size.x, 0.f) / 2, at.y);
+  panel.imageMax = ImVec2(panel.imageMin.x + size.x, panel.imageMin.y + size.y);
+  ImGui::SetCursorScreenPos(panel.imageMin);
+  ImGui::InvisibleButton("cpr_image", ImVec2(std::max(size.x, 1.f), std::max(size.y, 1.f)));
+  noteRect("cpr_image");
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddImage(panel.texture.id(), panel.imageMin, panel.imageMax);
+
+  if (ImGui::IsItemHovered()) {
+    const int x = int(std::floor((io.MousePos.x - panel.imageMin.x) / scale));
+    const int y = int(std::floor((io.MousePos.y - panel.imageMin.y) / scale));
+    panel.hovered = pickCpr(*panel.cpr, x, y);
+  }
+  char text[128];
+  if (panel.hovered)
+    std::snprintf(text, sizeof text, "arc %.1f mm   %.0f HU   path %d", panel.hovered->arcMm,
+                  double(panel.hovered->hu), panel.hovered->path);
+  else
+    std::snprintf(text, sizeof text, "hover the CPR: arc length, HU");
+  draw->AddText(hoverLine, panel.hovered ? IM_COL32(255, 230, 90, 255) : IM_COL32(150, 150, 150, 255), text);
+  panel.cursorPixel.reset();
+  if (panel.cursor && (panel.path < 0 || panel.path == panel.cursor->path))
+    panel.cursorPixel = cprPixelOf(panel.cpr->layout, panel.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
+  if (panel.cursorPixel) {
+    const ImVec2 mark(panel.imageMin.x + float(panel.cursorPixel->x + 0.5) * scale,
+                      panel.imageMin.y + float(panel.cursorPixel->y + 0.5) * scale);
+    draw->AddCircle(mark, 7, IM_COL32(90, 255, 120, 255), 0, 2);
+    draw->AddLine(ImVec2(panel.imageMin.x, mark.y), ImVec2(mark.x - 8, mark.y), IM_COL32(90, 255, 120, 160));
+    draw->AddLine(ImVec2(mark.x + 8, mark.y), ImVec2(panel.imageMax.x, mark.y), IM_COL32(90, 255, 120, 160));
+  }
+  if (shown_ && viewport_.hasImage) {  // the hovered point (yellow) and the cursor (green) on the DVR
+    const ViewGeometry shownView = makeViewGeometry(data_.volume, shown_->params);
+    ImDrawList* front = ImGui::GetForegroundDrawList();
+    front->PushClipRect(viewport_.min, viewport_.max, true);
+    if (panel.cursor) front->AddCircle(dvrScreenOf(shownView, panel.cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0, 2);
+    if (panel.hovered) {
+      panel.markedOnDvr = dvrScreenOf(shownView, panel.hovered->pointMm);
+      front->AddCircle(*panel.markedOnDvr, 7, IM_COL32(255, 230, 90, 255), 0, 2);
+    }
+    front->PopClipRect();
+  }
+  ImGui::End();
+}
+
+nlohmann::json App::cprReport() const {
+  const CprViewPanel& panel = cprView_;
+  nlohmann::json hovered = nullptr;
+  if (panel.hovered) {
+    hovered = {{"arc_mm", panel.hovered->arcMm}, {"hu", panel.hovered->hu}, {"path", panel.hovered->path}};
+    if (panel.markedOnDvr) hovered["dvr_screen"] = {panel.markedOnDvr->x, panel.markedOnDvr->y};
+  }
+  nlohmann::json cursor = nullptr;
+  if (panel.cursor) {
+    cursor = {{"path", panel.cursor->path}, {"arc_mm", panel.cursor->arcMm}};
+    if (panel.cursorPixel) cursor["cpr_pixel"] = {panel.cursorPixel->x, panel.cursorPixel->y};
+  }
+  return {{"shown", cprViewWidth() > 0},
+          {"cursor", cursor},
+          {"mode", toString(panel.mode)},
+          {"path", panel.path},
+          {"width", panel.cpr ? panel.cpr->layout.width : 0},
+          {"height", panel.cpr ? panel.cpr->layout.height : 0},
+          {"pixel_mm", panel.cpr ? panel.cpr->layout.pixelMm : 0.0},
+          {"error", panel.error},
+          {"hovered", hovered}};
+}
+
+}  // namespace angio

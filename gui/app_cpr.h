@@ -1,0 +1,48 @@
+#pragma once
+// The CPR view's state (issue 6 item 6; thesis sec. 5.2.2; Kanitsar et al., IEEE Vis 2002): the
+// curved planar reformation of the selected centerline path at the view's axis and angle, shown
+// beside the DVR view; hovering it reads arc length and HU and marks the point on the DVR image.
+// Drawn by gui/app_cpr.cpp.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <imgui.h>
+
+#include "gui/app_gl.h"
+#include "vessel/cpr.h"
+
+namespace angio {
+
+enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
+
+// A point of a centerline: the CPR view's cursor.
+struct CenterlinePlace {
+  int path = 0;      // index into the centerlines
+  double arcMm = 0;  // from the path's first point
+  glm::dvec3 pointMm{0.0};  // volume frame
+};
+
+struct CprViewPanel {
+  explicit CprViewPanel(const GlApi& gl) : texture(gl) {}
+
+  // What the user set.
+  bool shown = false;
+  CprMode mode = CprMode::straightened;
+  int path = -1;  // index into the centerlines, -1 = all side by side
+  CprColouring colouring = CprColouring::ctaLumen;
+
+  // What is shown.
+  StreamedTexture texture;
+  std::shared_ptr<const ProgressiveFrame> frame;  // the CPR image as the texture uploads it
+  std::optional<Cpr> cpr;
+  std::string madeFor;  // the inputs `cpr` was computed for (recomputed when they change)
+  std::string error;
+  std::optional<CprPick> hovered;  // the CPR pixel under the mouse
+  std::optional<ImVec2> markedOnDvr;  // where it was marked on the DVR image (screen)
+  std::optional<CenterlinePlace> cursor;  // set by a click near a centerline on the DVR image
+  std::optional<glm::dvec2> cursorPixel;  // the cursor in the CPR image (pixel centres at integers)
+  ImVec2 imageMin, imageMax;       // where the CPR image was drawn (screen)
+};
+
+}  // namespace angio

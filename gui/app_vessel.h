@@ -1,0 +1,66 @@
+#pragma once
+// The VesselGlyph panel's state (issue 5 item 7; thesis ch. 5): the centerlines, the region shapes
+// and the focus / context TFs the user picked, and what the progressive renderer got from them
+// (core's RegionSource, made anew whenever any of it changes). Drawn by gui/app_vessel.cpp.
+#include <array>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "core/progressive_renderer.h"
+#include "core/transfer_function.h"
+#include "core/view_geometry.h"
+#include "gui/tf_editor.h"
+#include "vessel/centerline.h"
+#include "vessel/vessel_glyph.h"
+
+namespace angio {
+
+// Which TF the TF editor edits.
+enum class TfTarget { main = 0, focus = 1, context = 2 };
+
+// RayRegionBuilder is not re-entrant: the renderer's worker and anyone else building regions from
+// the same builder take turns.
+struct GuardedRegionBuilder {
+  GuardedRegionBuilder(const Centerlines& inVolumeFrame, const VesselGlyphSettings& settings)
+      : builder(inVolumeFrame, settings) {}
+  std::mutex mutex;
+  RayRegionBuilder builder;
+};
+
+struct VesselGlyphPanel {
+  // What the user set.
+  std::string path = "centerlines.csv";  // the "Load centerlines..." field
+  bool enabled = false;
+  bool overlay = true;                   // the projected centerlines over the image
+  VesselGlyphSettings settings;
+  bool outsideRendered = false;          // the outside: rendered with the main TF, else clipped
+  TransferFunction focusTf, contextTf;   // loaded from the presets below on first use
+  std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";
+  TfTarget editing = TfTarget::main;
+  std::array<TfHistory, 3> histories;    // undo stacks of the targets not being edited
+
+  // What was loaded.
+  std::optional<Centerlines> physical;   // as the file holds them (LPS mm)
+  std::string file;                      // where they came from
+  std::string warnings;                  // the loader's, one per line
+  std::string error;                     // the last load's error, shown in the panel
+
+  // Derived, rebuilt on change (UI thread).
+  std::optional<Centerlines> inVolume;   // physical mapped into the shown dataset's volume frame
+  std::string framedFor;                 // the dataset inVolume was mapped for
+  std::shared_ptr<GuardedRegionBuilder> builder;
+  std::shared_ptr<const TfTable> focusTable, contextTable, outsideTable;
+  TransferFunction focusTableTf, contextTableTf;
+  std::shared_ptr<const RegionSource> source;  // what the last request got (null: plain DVR)
+  std::string problem;                   // why VG is not rendered although enabled
+};
+
+// Continuous pixel coordinates (x right, y down; pixel n spans [n, n + 1)) of a volume-frame
+// point in the view's parallel projection: the inverse of ViewGeometry::rayOrigin.
+glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm);
+
+bool sameGlyphSettings(const VesselGlyphSettings& a, const VesselGlyphSettings& b);
+
+}  // namespace angio

@@ -1,0 +1,183 @@
+#include "gui/file_browser.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace angio {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kTitle = "Open volume";
+constexpr int kDicomProbeFiles = 8;   // files looked at per folder
+constexpr std::size_t kDicomProbeLimit = 400;  // folders beyond this many are not probed
+
+std::string lowered(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+bool endsWith(const std::string& text, const char* suffix) {
+  const std::size_t n = std::strlen(suffix);
+  return text.size() > n && text.compare(text.size() - n, n, suffix) == 0;
+}
+
+bool isDicomFile(const fs::path& file) {
+  if (lowered(file.extension().string()) == ".dcm") return true;
+  std::ifstream in(file, std::ios::binary);
+  char magic[4] = {};
+  return in.seekg(128) && in.read(magic, 4) && std::memcmp(magic, "DICM", 4) == 0;
+}
+
+fs::path homeFolder() {
+  const char* home = std::getenv("HOME");
+  return home && *home ? fs::path(home) : fs::current_path();
+}
+
+}  // namespace
+
+bool isVolumeFileName(const fs::path& path) {
+  const std::string name = lowered(path.filename().string());
+  for (const char* extension : {".mha", ".mhd", ".nrrd", ".nhdr", ".nii", ".nii.gz"})
+    if (endsWith(name, extension)) return true;
+  return false;
+}
+
+bool looksLikeDicomSeries(const fs::path& folder) {
+  std::error_code error;
+  int probed = 0;
+  for (fs::directory_iterator it(folder, error), end; !error && it != end && probed < kDicomProbeFiles;
+       it.increment(error)) {
+    if (!it->is_regular_file(error)) continue;
+    ++probed;
+    if (isDicomFile(it->path())) return true;
+  }
+  return false;
+}
+
+std::vector<BrowserEntry> listFolder(const fs::path& folder) {
+  std::error_code error;
+  std::vector<BrowserEntry> folders, files;
+  fs::directory_iterator it(folder, error);
+  if (error) throw std::runtime_error(folder.string() + ": cannot be listed: " + error.message());
+  for (fs::directory_iterator end; it != end; it.increment(error)) {
+    if (error) throw std::runtime_error(folder.string() + ": cannot be listed: " + error.message());
+    const std::string name = it->path().filename().string();
+    if (name.empty() || name[0] == '.') continue;
+    std::error_code typeError;
+    if (it->is_directory(typeError)) folders.push_back({name, it->path(), true, false});
+    else if (isVolumeFileName(it->path())) files.push_back({name, it->path(), false, false});
+  }
+  const auto byName = [](const BrowserEntry& a, const BrowserEntry& b) {
+    const std::string la = lowered(a.name), lb = lowered(b.name);
+    return la != lb ? la < lb : a.name < b.name;
+  };
+  std::sort(folders.begin(), folders.end(), byName);
+  std::sort(files.begin(), files.end(), byName);
+  if (folders.size() <= kDicomProbeLimit)
+    for (BrowserEntry& entry : folders) entry.dicomSeries = looksLikeDicomSeries(entry.path);
+  folders.insert(folders.end(), files.begin(), files.end());
+  return folders;
+}
+
+void FileBrowser::show(const fs::path& startFolder) {
+  requestOpen = true;
+  go(startFolder.empty() ? fs::current_path() : startFolder);
+}
+
+void FileBrowser::go(const fs::path& newFolder) {
+  try {
+    entries = listFolder(newFolder);
+    folder = fs::absolute(newFolder).lexically_normal();
+    if (folder.has_filename() == false && folder != folder.root_path()) folder = folder.parent_path();
+    typedPath = folder.string();
+    selected = -1;
+    error.clear();
+  } catch (const std::exception& problem) {
+    error = problem.what();
+  }
+}
+
+std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
+  if (browser.requestOpen) {
+    ImGui::OpenPopup(kTitle);
+    browser.requestOpen = false;
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowSize(ImVec2(std::min(640.f, display.x - 40), std::min(480.f, display.y - 40)),
+                           ImGuiCond_Appearing);
+  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(kTitle)) return std::nullopt;
+  std::optional<fs::path> chosen;
+  const auto choose = [&](const fs::path& path) {
+    chosen = path;
+    ImGui::CloseCurrentPopup();
+  };
+
+  if (ImGui::Button("Up")) browser.go(browser.folder.parent_path());
+  ImGui::SameLine();
+  if (ImGui::Button("Home")) browser.go(homeFolder());
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::IsWindowAppearing() || browser.focusPath) ImGui::SetKeyboardFocusHere();
+  browser.focusPath = false;
+  if (ImGui::InputText("##path", &browser.typedPath, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    fs::path typed(browser.typedPath);
+    if (typed.is_relative()) typed = browser.folder / typed;
+    std::error_code error;
+    if (fs::is_directory(typed, error) && !looksLikeDicomSeries(typed)) {
+      browser.go(typed);
+      browser.focusPath = true;  // type on: a file name or the next folder
+    } else {
+      choose(typed);
+    }  // a file, or a DICOM folder; a missing one fails in the loader, named
+  }
+  ImGui::TextDisabled("volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder");
+
+  const float footer = ImGui::GetFrameHeightWithSpacing() * 2 + 4;
+  ImGui::BeginChild("##entries", ImVec2(0, -footer), true);
+  for (int n = 0; n < int(browser.entries.size()); ++n) {
+    const BrowserEntry& entry = browser.entries[n];
+    const std::string label = entry.folder ? (entry.dicomSeries ? "[DICOM] " : "[dir]   ") + entry.name + "/"
+                                           : "        " + entry.name;
+    if (ImGui::Selectable(label.c_str(), browser.selected == n, ImGuiSelectableFlags_AllowDoubleClick)) {
+      browser.selected = n;
+      browser.typedPath = entry.path.string();
+      if (ImGui::IsMouseDoubleClicked(0)) {
+        if (entry.folder && !entry.dicomSeries) {
+          browser.go(entry.path);
+          break;  // entries changed
+        }
+        choose(entry.path);
+      }
+    }
+  }
+  if (browser.entries.empty()) ImGui::TextDisabled("(no folders or volume files here)");
+  ImGui::EndChild();
+
+  if (!browser.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", browser.error.c_str());
+  const BrowserEntry* selected =
+      browser.selected >= 0 && browser.selected < int(browser.entries.size()) ? &browser.entries[browser.selected] : nullptr;
+  ImGui::BeginDisabled(!selected || (selected->folder && !selected->dicomSeries));
+  if (ImGui::Button("Open")) choose(selected->path);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  const fs::path seriesFolder = selected && selected->folder ? selected->path : browser.folder;
+  if (ImGui::Button("Open folder as DICOM series")) choose(seriesFolder);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", seriesFolder.string().c_str());
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
+    ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+  return chosen;
+}
+
+}  // namespace angio

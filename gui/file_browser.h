@@ -1,0 +1,44 @@
+#pragma once
+// The built-in file browser (Dear ImGui, no native dialog): a modal listing one folder with
+// std::filesystem, folders first, then volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz), each
+// group sorted by name; up, home and a typed path; a folder of DICOM slices can be opened as a
+// series. Listing and filtering are plain functions, testable without a window.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace angio {
+
+struct BrowserEntry {
+  std::string name;             // file name, shown
+  std::filesystem::path path;
+  bool folder = false;
+  bool dicomSeries = false;     // a folder holding DICOM slices
+};
+
+// By case-insensitive extension: .mha .mhd .nrrd .nhdr .nii .nii.gz.
+bool isVolumeFileName(const std::filesystem::path& path);
+// Some of the first few files in `folder` are DICOM (".dcm", or "DICM" at byte 128).
+bool looksLikeDicomSeries(const std::filesystem::path& folder);
+// Visible (no dot-files) folders and volume files of `folder`: folders first, then files, each
+// sorted case-insensitively. Throws std::runtime_error (one line) if it cannot be listed.
+std::vector<BrowserEntry> listFolder(const std::filesystem::path& folder);
+
+struct FileBrowser {
+  bool requestOpen = false;  // show() sets it; the modal opens on the next draw
+  std::filesystem::path folder;
+  std::string typedPath;     // the path field: a folder to go to or a file to open
+  std::vector<BrowserEntry> entries;
+  int selected = -1;
+  std::string error;
+  bool focusPath = false;    // give the path field the keyboard on the next draw
+
+  void show(const std::filesystem::path& startFolder);
+  void go(const std::filesystem::path& newFolder);  // lists it (error kept in `error`)
+};
+
+// Draws the modal while it is open; returns the file or folder the user chose to open.
+std::optional<std::filesystem::path> drawFileBrowser(FileBrowser& browser);
+
+}  // namespace angio

@@ -1,0 +1,209 @@
+#include "io/session_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_write.h"
+#include "io/input_error.h"
+#include "io/tf_file.h"
+
+namespace angio {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+constexpr const char* kFormat = "angioray-session";
+constexpr int kVersion = 1;
+
+Json samplingJson(const Sampling& sampling) {
+  return {{"isd", sampling.isd}, {"osd", sampling.osd}, {"filter", toString(sampling.filter)},
+          {"ert", sampling.ert}};
+}
+
+// Reads one session file: every key optional (defaults stay), every present key checked.
+struct SessionReader {
+  const fs::path& source;
+
+  [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, problem); }
+
+  double number(const Json& object, const char* key, double lo, double hi, double fallback) const {
+    if (!object.contains(key)) return fallback;
+    const Json& value = object[key];
+    if (!value.is_number()) fail(std::string(key) + " is not a number");
+    const double n = value.get<double>();
+    if (!std::isfinite(n) || n < lo || n > hi)
+      fail(std::string(key) + " " + value.dump() + " is out of range");
+    return n;
+  }
+  bool flag(const Json& object, const char* key, bool fallback) const {
+    if (!object.contains(key)) return fallback;
+    if (!object[key].is_boolean()) fail(std::string(key) + " is not true or false");
+    return object[key].get<bool>();
+  }
+  std::string text(const Json& object, const char* key) const {
+    if (!object.contains(key)) return "";
+    if (!object[key].is_string()) fail(std::string(key) + " is not a string");
+    return object[key].get<std::string>();
+  }
+  const Json& section(const Json& object, const char* key) const {
+    static const Json empty = Json::object();
+    if (!object.contains(key)) return empty;
+    if (!object[key].is_object()) fail(std::string(key) + " is not an object");
+    return object[key];
+  }
+
+  SessionView view(const Json& v) const {
+    SessionView view;
+    if (v.contains("axis")) {
+      const auto axis = parseAxis(text(v, "axis"));
+      if (!axis) fail("view axis is not i, j or k");
+      view.axis = *axis;
+    }
+    view.angleDeg = number(v, "angle_deg", -1e6, 1e6, view.angleDeg);
+    view.zoom = number(v, "zoom", 1e-3, 1e3, view.zoom);
+    if (v.contains("pan_px")) {
+      const Json& pan = v["pan_px"];
+      if (!pan.is_array() || pan.size() != 2 || !pan[0].is_number() || !pan[1].is_number())
+        fail("view pan_px is not [x, y]");
+      view.panPx = {pan[0].get<double>(), pan[1].get<double>()};
+      if (!std::isfinite(view.panPx.x + view.panPx.y)) fail("view pan_px is not finite");
+    }
+    view.degreesPerPixel = number(v, "degrees_per_pixel", 1e-3, 100, view.degreesPerPixel);
+    view.autoSpin = flag(v, "auto_spin", view.autoSpin);
+    view.spinDegreesPerSecond = number(v, "spin_degrees_per_second", -3600, 3600, view.spinDegreesPerSecond);
+    return view;
+  }
+
+  Sampling sampling(const Json& s, Sampling sampling) const {
+    sampling.isd = number(s, "isd", 1e-3, 100, sampling.isd);
+    sampling.osd = number(s, "osd", 1e-3, 100, sampling.osd);
+    sampling.ert = number(s, "ert", 0, 1, sampling.ert);
+    if (s.contains("filter")) {
+      const auto filter = parseFilter(text(s, "filter"));
+      if (!filter) fail("levels filter is not nearest, trilinear or mean");
+      sampling.filter = *filter;
+    }
+    return sampling;
+  }
+
+  Session session(const Json& json) const {
+    if (!json.is_object()) fail("a session is a JSON object");
+    if (json.contains("format") && text(json, "format") != kFormat) fail("is not an angioray session");
+    Session session;
+    session.dataset = text(json, "dataset");
+    session.view = view(section(json, "view"));
+    if (json.contains("transfer_function")) {
+      if (!json["transfer_function"].is_object()) fail("transfer_function is not an object");
+      session.tf = parseTransferFunction(json["transfer_function"].dump(), source);
+    }
+    session.tfPreset = text(json, "tf_preset");
+    const std::string mode = json.contains("mode") ? text(json, "mode") : "dvr";
+    if (mode != "dvr" && mode != "mip") fail("mode is not dvr or mip");
+    session.mode = mode == "mip" ? Compositing::mip : Compositing::dvr;
+    const Json& shading = section(json, "shading");
+    session.shading.enabled = flag(shading, "enabled", session.shading.enabled);
+    session.shading.ka = number(shading, "ka", 0, 10, session.shading.ka);
+    session.shading.kd = number(shading, "kd", 0, 10, session.shading.kd);
+    const Json& levels = section(json, "levels");
+    for (int q = 0; q < kQualityLevels; ++q)
+      session.levels[q] = sampling(section(levels, toString(Quality(q))), session.levels[q]);
+    for (const auto& [name, open] : section(json, "panels").items()) {
+      if (!open.is_boolean()) fail("panels " + name + " is not true or false");
+      session.panelsOpen[name] = open.get<bool>();
+    }
+    if (json.contains("recent_files")) {
+      const Json& recent = json["recent_files"];
+      if (!recent.is_array()) fail("recent_files is not a list");
+      for (const Json& file : recent) {
+        if (!file.is_string()) fail("recent_files holds something that is not a string");
+        if (session.recentFiles.size() < kMaxRecentFiles) session.recentFiles.push_back(file.get<std::string>());
+      }
+    }
+    return session;
+  }
+};
+
+}  // namespace
+
+std::string toJson(const Session& session) {
+  const SessionView& v = session.view;
+  Json levels = Json::object();
+  for (int q = 0; q < kQualityLevels; ++q) levels[toString(Quality(q))] = samplingJson(session.levels[q]);
+  Json panels = Json::object();
+  for (const auto& [name, open] : session.panelsOpen) panels[name] = open;
+  const Json json = {
+      {"format", kFormat},
+      {"version", kVersion},
+      {"dataset", session.dataset},
+      {"view",
+       {{"axis", toString(v.axis)},
+        {"angle_deg", v.angleDeg},
+        {"zoom", v.zoom},
+        {"pan_px", {v.panPx.x, v.panPx.y}},
+        {"degrees_per_pixel", v.degreesPerPixel},
+        {"auto_spin", v.autoSpin},
+        {"spin_degrees_per_second", v.spinDegreesPerSecond}}},
+      {"transfer_function", Json::parse(toJson(session.tf))},
+      {"tf_preset", session.tfPreset},
+      {"mode", session.mode == Compositing::mip ? "mip" : "dvr"},
+      {"shading", {{"enabled", session.shading.enabled}, {"ka", session.shading.ka}, {"kd", session.shading.kd}}},
+      {"levels", levels},
+      {"panels", panels},
+      {"recent_files", session.recentFiles},
+  };
+  return json.dump(2);
+}
+
+Session parseSession(const std::string& text, const fs::path& source) {
+  Json json;
+  try {
+    json = Json::parse(text);
+  } catch (const Json::exception& error) {
+    const std::string message = error.what();
+    throw InputError(source, "not valid JSON: " + message.substr(message.find(']') + 2));
+  }
+  return SessionReader{source}.session(json);
+}
+
+Session loadSession(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, fs::exists(path) ? "cannot be read" : "does not exist");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseSession(text.str(), path);
+}
+
+void saveSession(const Session& session, const fs::path& path) {
+  std::error_code error;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
+  if (error) throw InputError(path, "cannot create its folder: " + error.message());
+  writeAtomically(path, [&](const fs::path& temp) {
+    std::ofstream out(temp);
+    out << toJson(session) << '\n';
+    if (!out) throw InputError(path, "cannot be written");
+  });
+}
+
+fs::path configDirectory() {
+  const char* xdg = std::getenv("XDG_CONFIG_HOME");
+  if (xdg && *xdg) return fs::path(xdg) / "angioray";
+  const char* home = std::getenv("HOME");
+  return fs::path(home && *home ? home : ".") / ".config" / "angioray";
+}
+
+fs::path lastSessionPath() { return configDirectory() / "last-session.json"; }
+
+void addRecentFile(std::vector<std::string>& recent, const std::string& path) {
+  recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
+  recent.insert(recent.begin(), path);
+  if (recent.size() > kMaxRecentFiles) recent.resize(kMaxRecentFiles);
+}
+
+}  // namespace angio

@@ -1,0 +1,77 @@
+// FastRenderOptions that must not change the image: recycled frame memory and row progress; and
+// the skipping switches the bench turns off one at a time.
+#include <atomic>
+
+#include <gtest/gtest.h>
+
+#include "core/fast_raycaster.h"
+#include "core/phantom.h"
+
+namespace angio {
+namespace {
+
+struct Scene {
+  Volume volume = generatePhantom({{48, 48, 96}, 3}).volume;
+  TfTable table = buildTable({"bone and vessels",
+                              {{-1024, {0, 0, 0}, 0}, {150, {1, 0.3f, 0.2f}, 0}, {400, {1, 1, 0.9f}, 0.5}}});
+  SliceTiles tiles = buildSliceTiles(volume, Axis::k);
+  std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
+
+  Image render(Quality quality, double angle, const FastRenderOptions& options = {}) const {
+    RenderParams p;
+    p.angleDeg = angle;
+    p.sampling = qualitySampling(quality);
+    return renderFast(volume, tiles, visible, table, p, options);
+  }
+};
+
+bool showsSomething(const Image& image) {
+  for (const glm::vec4& pixel : image.pixels)
+    if (pixel.a > 0.5f) return true;
+  return false;
+}
+
+TEST(FastRenderOptions, RecycledMemoryOfAnotherSizeGivesTheSameImage) {
+  const Scene scene;
+  for (Quality quality : {Quality::fast, Quality::medium, Quality::high}) {
+    const Image fresh = scene.render(quality, 40);
+    ASSERT_TRUE(showsSomething(fresh));
+    // A frame of another level and angle, so every pixel must be written again.
+    Image previous = scene.render(quality == Quality::high ? Quality::fast : Quality::high, 75);
+    FastRenderOptions options;
+    options.recycle = &previous;
+    const Image recycled = scene.render(quality, 40, options);
+    EXPECT_TRUE(previous.pixels.empty());
+    ASSERT_EQ(recycled.width, fresh.width);
+    ASSERT_EQ(recycled.height, fresh.height);
+    EXPECT_TRUE(recycled.pixels == fresh.pixels) << toString(quality);
+  }
+}
+
+TEST(FastRenderOptions, EveryRowIsCountedOnceWhenDone) {
+  const Scene scene;
+  std::atomic<int> rows{0};
+  FastRenderOptions options;
+  options.rowsDone = &rows;
+  const Image image = scene.render(Quality::medium, 10, options);
+  EXPECT_EQ(rows.load(), image.height);
+}
+
+TEST(FastRenderOptions, EachSkippingLevelAloneKeepsTheImage) {
+  const Scene scene;
+  for (Quality quality : {Quality::medium, Quality::high}) {
+    const Image all = scene.render(quality, 130);
+    ASSERT_TRUE(showsSomething(all));
+    for (int off = 0; off < 3; ++off) {
+      FastRenderOptions options;
+      options.skipGroups = off != 0;
+      options.skipTiles = off != 1;
+      options.skipCells = off != 2;
+      EXPECT_TRUE(scene.render(quality, 130, options).pixels == all.pixels)
+          << toString(quality) << " without skipping level " << off;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace angio
