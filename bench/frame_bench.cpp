@@ -251,6 +251,8 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
       // "potential" = one technique alone, at the fast level only (without any, a medium frame
       // takes seconds).
       const int few = std::min(std::max(settings.angles / 6, 6), settings.angles);
+      // The reference for these rows: everything on, over the same (fewer) angles.
+      report.rows.push_back(timeVariant(level.name, "all, " + std::to_string(few) + " angles", few, p, {}));
       for (const Technique& t : techniques())
         report.rows.push_back(timeVariant(level.name, "no " + t.name, few, p, allBut(t)));
       if (level.name == "fast") {
