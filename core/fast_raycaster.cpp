@@ -26,7 +26,6 @@ struct Frame {
   ViewGeometry view;
   FrameTables tables;
   RayTemplates templates;
-  std::vector<std::int32_t> groupOfTile;
 
   glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
   bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
@@ -80,10 +79,16 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
   const std::size_t groups = std::size_t(f.tiles.groupsB()) * f.tiles.groupsC();
   row.groupVisible.assign(groups, 0);
   row.groupMaxDensity.assign(groups, 0);
-  for (std::size_t t = 0; t < perSlice; ++t) {
-    const int g = f.groupOfTile[t];
-    if (mip) row.groupMaxDensity[g] = std::max(row.groupMaxDensity[g], row.maxDensity[t]);
-    else row.groupVisible[g] |= row.visible[t];
+  // Tile rows in order, each tile into its group (kGroupTiles^2 tiles): no index table.
+  const int tilesB = f.tiles.tilesB, groupsB = f.tiles.groupsB();
+  for (int tc = 0; tc < f.tiles.tilesC; ++tc) {
+    const std::size_t rowBase = std::size_t(tc) * tilesB;
+    const std::size_t groupBase = std::size_t(tc / kGroupTiles) * groupsB;
+    for (int tb = 0; tb < tilesB; ++tb) {
+      const std::size_t g = groupBase + tb / kGroupTiles;
+      if (mip) row.groupMaxDensity[g] = std::max(row.groupMaxDensity[g], row.maxDensity[rowBase + tb]);
+      else row.groupVisible[g] |= row.visible[rowBase + tb];
+    }
   }
 }
 
@@ -277,12 +282,6 @@ TfTable unionVisibility(const RegionTables& tables) {
   return any;
 }
 
-std::vector<std::int32_t> groupsOfTiles(const SliceTiles& tiles) {
-  std::vector<std::int32_t> groups(tiles.tilesPerSlice());
-  for (int t = 0; t < tiles.tilesPerSlice(); ++t) groups[t] = tiles.groupOf(t);
-  return groups;
-}
-
 }  // namespace
 
 Image renderFast(const Volume& volume, const SliceTiles& tiles,
@@ -309,7 +308,7 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
                  FastRenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   Frame f{volume, tiles, visibleTiles, params, options, tables, makeViewGeometry(volume, params),
-          frameTables(tables, params.sampling.osd), {}, groupsOfTiles(tiles)};
+          frameTables(tables, params.sampling.osd), {}};
   const TfTable anyRegion = unionVisibility(tables);
   f.anyRegionTf = &anyRegion;
   f.skipGroups = options.skipEmpty && options.skipGroups;
