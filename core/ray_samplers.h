@@ -28,15 +28,23 @@
 
 namespace angio {
 
-class NearestRaySampler {
+// Both filters that read around the nearest voxel; the gradient is the nearest voxel's.
+// Mean (thesis sec. 4.4): the nearest voxel and its six face neighbours.
+enum class VoxelFilter { nearest, mean };
+
+template <VoxelFilter Filter>
+class VoxelRaySampler {
  public:
-  NearestRaySampler(const Volume& volume, const glm::dvec3&) : volume_(volume) {}
+  VoxelRaySampler(const Volume& volume, const glm::dvec3&) : volume_(volume) {}
 
   void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
-  float density() const { return float(volume_.densityAt(voxel_.x, voxel_.y, voxel_.z)); }
+  float density() const {
+    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, voxel_);
+    else return float(volume_.densityAt(voxel_.x, voxel_.y, voxel_.z));
+  }
   glm::vec3 gradient() const { return nearestGradient(volume_, voxel_); }
 
  private:
@@ -44,22 +52,8 @@ class NearestRaySampler {
   glm::ivec3 voxel_{0};
 };
 
-// Thesis sec. 4.4: the nearest voxel and its six face neighbours; the gradient is the nearest's.
-class MeanRaySampler {
- public:
-  MeanRaySampler(const Volume& volume, const glm::dvec3&) : volume_(volume) {}
-
-  void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
-  bool mayBeVisible(const TfTable&) const { return true; }
-  float maxDensity() const { return 4095.f; }
-  long samplesLeftInCell() const { return 0; }
-  float density() const { return meanDensity(volume_, voxel_); }
-  glm::vec3 gradient() const { return nearestGradient(volume_, voxel_); }
-
- private:
-  const Volume& volume_;
-  glm::ivec3 voxel_{0};
-};
+using NearestRaySampler = VoxelRaySampler<VoxelFilter::nearest>;
+using MeanRaySampler = VoxelRaySampler<VoxelFilter::mean>;
 
 class TrilinearRaySampler {
  public:
