@@ -55,6 +55,7 @@ FrameTables frameTables(const RegionTables& tables, double osd);
 // Walks one ray's sorted intervals as the sample depth grows: amortised O(1) per sample.
 class RegionCursor {
  public:
+  RegionCursor() = default;  // no regions: every sample is outside
   RegionCursor(const RayRegions* regions, int x, int y) {
     if (!regions || regions->rayBegin.empty()) return;
     const std::size_t n = std::size_t(y) * regions->width + x;

@@ -1,6 +1,9 @@
 #include "core/fast_raycaster.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -29,6 +32,7 @@ struct Frame {
 
   glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
   bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
+  bool shareRows = true;
   // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
   const TfTable* anyRegionTf = nullptr;
 
@@ -101,58 +105,173 @@ bool maySkip(bool enabled, const Frame& f, std::uint8_t visible, std::uint16_t m
   return !visible;
 }
 
-// What a ray carries from one tile group to the next.
-template <class Sampler>
-struct RayState {
-  RaySamples positions;
+// Rows whose samples read the same voxels: consecutive rows with the same cell base (trilinear)
+// or nearest voxel (nearest, mean) along the rotation axis a. Their in-plane sample positions are
+// the same (the rendering model's rays differ only by v e_a from row to row), so they meet the
+// same cells in the same order: one pass along each column loads a cell's corners, tests its
+// transparency and computes its gradients once for all of them, and each row only interpolates
+// with its own fraction along a. At the high level (isd 0.5) about 2.5 rows share a slice pair.
+constexpr int kMaxBundleRows = 4;
+
+struct RowBundle {
+  int firstRow = 0;
+  int rows = 1;
+  bool outside = false;  // above or below the domain: black (the reference's slab test)
+  // Rays that differ: every row for trilinear or with regions; otherwise the rows' rays are
+  // identical (same voxels, same TF) and the first row's pixels are copied to the others.
+  int lanes = 1;
+  std::array<float, kMaxBundleRows> fracA{};  // each row's cell fraction along a (cellAt)
+  double qa = 0;  // the first row's axis coordinate, voxel units
+};
+
+// The row's axis coordinate in voxel units, as RaySamples computes it (q = origin / spacing).
+double rowAxisCoordinate(const Frame& f, int y) {
+  return f.view.rayOrigin(0, y)[f.view.axis] / f.volume.spacing[f.view.axis];
+}
+
+bool rowOutsideDomain(const Frame& f, int y) {
+  const double axisMm = f.view.rayOrigin(0, y)[f.view.axis];
+  return axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9;
+}
+
+// What decides the voxels a row reads along a: cellAt's base or nearestVoxel's index.
+int rowVoxelKey(const Frame& f, double qa) {
+  const int n = f.volume.dims[f.view.axis];
+  if (f.params.sampling.filter == Filter::trilinear) return cellBase(qa, n);
+  return std::clamp(int(std::floor(qa + 0.5)), 0, n - 1);
+}
+
+float rowFraction(const Frame& f, double qa) {
+  const int n = f.volume.dims[f.view.axis];
+  return float(std::clamp(qa, 0.0, double(n - 1)) - cellBase(qa, n));
+}
+
+std::vector<RowBundle> rowBundles(const Frame& f) {
+  const int maxRows = f.shareRows ? kMaxBundleRows : 1;
+  const bool distinctRays = f.params.sampling.filter == Filter::trilinear || f.regionTables.regions;
+  std::vector<RowBundle> bundles;
+  int lastKey = -1;
+  for (int y = 0; y < f.view.height; ++y) {
+    const double qa = rowAxisCoordinate(f, y);
+    const bool outside = rowOutsideDomain(f, y);
+    const int key = outside ? -1 : rowVoxelKey(f, qa);
+    RowBundle* last = bundles.empty() ? nullptr : &bundles.back();
+    if (last && !outside && !last->outside && key == lastKey && last->rows < maxRows) {
+      last->fracA[last->rows++] = rowFraction(f, qa);
+      last->lanes = distinctRays ? last->rows : 1;
+      continue;
+    }
+    RowBundle bundle;
+    bundle.firstRow = y;
+    bundle.outside = outside;
+    bundle.qa = qa;
+    bundle.fracA[0] = rowFraction(f, qa);
+    bundles.push_back(bundle);
+    lastKey = key;
+  }
+  return bundles;
+}
+
+// One row's ray in a bundle.
+struct Lane {
   RegionCursor regions;
-  Sampler sampler;
   RayAccumulator ray;
   float mipMaximum = 0.f;
   long resumeAt = std::numeric_limits<long>::min();  // samples before it are in a clipped region
-  bool terminated = false;
+  bool done = false;  // terminated early, or nothing more shown
 };
 
-// The samples of one tile run, composited into the ray (DVR) or into its maximum (MIP).
-// Returns true when the ray terminated early. Samples the sampler proves invisible (or, in MIP,
-// not above the maximum) are skipped without interpolation; they could not change the pixel.
+// What the rays of one column of a bundle carry from one tile group to the next.
+template <class Sampler>
+struct BundleRay {
+  RaySamples positions;  // the first row's; the in-plane part is every row's
+  Sampler sampler;
+  std::array<Lane, kMaxBundleRows> lanes;
+  int live = 1;  // lanes not done
+
+  // The first sample any live lane still needs.
+  long resumeAt(int lanes) const {
+    long first = std::numeric_limits<long>::max();
+    for (int l = 0; l < lanes; ++l)
+      if (!this->lanes[l].done) first = std::min(first, this->lanes[l].resumeAt);
+    return first;
+  }
+  // MIP: a sample can change some pixel only above the smallest maximum of the live lanes.
+  float mipFloor(int lanes) const {
+    float floor = std::numeric_limits<float>::max();
+    for (int l = 0; l < lanes; ++l)
+      if (!this->lanes[l].done) floor = std::min(floor, this->lanes[l].mipMaximum);
+    return floor;
+  }
+  void finish(Lane& lane) {
+    lane.done = true;
+    --live;
+  }
+};
+
+// One sample k of one lane, after the bundle's sampler moved to it.
 template <bool Mip, class Sampler>
-bool sampleRun(const Frame& f, const TileRun& run, RayState<Sampler>& state) {
-  const bool skip = f.skipCells;
-  const glm::vec3 viewDir(f.view.viewDir);
-  Sampler& sampler = state.sampler;
-  for (long k = std::max(run.firstSample, state.resumeAt); k < run.firstSample + run.count; ++k) {
-    const double t = double(k) * f.view.sampleMm;
-    const Region region = state.regions.at(t);
-    const SampleTable* table = f.tables.of(region);
-    if (!table) {
-      // A clipped region (VesselGlyph): leap to just before its end. The sample there is
-      // classified as every other one, so the leap needs no exact division.
-      const double change = state.regions.nextChange(t);
-      if (change == std::numeric_limits<double>::infinity()) return true;  // nothing more shown
-      state.resumeAt = std::max(k + 1, long(change / f.view.sampleMm) - 1);
-      k = state.resumeAt - 1;
-      continue;
+void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRay<Sampler>& b) {
+  Lane& lane = b.lanes[l];
+  const double t = double(k) * f.view.sampleMm;
+  const Region region = lane.regions.at(t);
+  const SampleTable* table = f.tables.of(region);
+  if (!table) {
+    // A clipped region (VesselGlyph): leap to just before its end. The sample there is
+    // classified as every other one, so the leap needs no exact division.
+    const double change = lane.regions.nextChange(t);
+    if (change == std::numeric_limits<double>::infinity()) {
+      b.finish(lane);  // nothing more shown
+      return;
     }
-    sampler.moveTo(state.positions.at(k));
+    lane.resumeAt = std::max(k + 1, long(change / f.view.sampleMm) - 1);
+    return;
+  }
+  Sampler& sampler = b.sampler;
+  if constexpr (Mip) {
+    lane.mipMaximum = std::max(lane.mipMaximum, sampler.density(bundle.fracA[l]));
+  } else {
+    if (f.skipCells && !sampler.mayBeVisible(*f.tfOf(region))) return;
+    const glm::vec4 rgba = (*table)[tableIndex(sampler.density(bundle.fracA[l]))];
+    if (rgba.a <= 0.f) return;
+    const float shade = f.params.shading.enabled
+                            ? shadingFactor(f.params.shading, sampler.gradient(bundle.fracA[l]),
+                                            glm::vec3(f.view.viewDir))
+                            : 1.f;
+    lane.ray.add(rgba, shade);
+    if (lane.ray.opacity >= f.params.sampling.ert) b.finish(lane);
+  }
+}
+
+// The samples of one tile run, composited into each lane's ray (DVR) or maximum (MIP). Returns
+// true when every lane is done. Samples the sampler proves invisible for every lane (or, in MIP,
+// not above any lane's maximum) are skipped without interpolation; they could not change a pixel.
+template <bool Mip, class Sampler>
+bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, BundleRay<Sampler>& b) {
+  const bool skip = f.skipCells;
+  const int lanes = bundle.lanes;
+  Sampler& sampler = b.sampler;
+  const long end = run.firstSample + run.count;
+  for (long k = std::max(run.firstSample, b.resumeAt(lanes)); k < end; ++k) {
+    sampler.moveTo(b.positions.at(k));
     if constexpr (Mip) {
-      if (skip && sampler.maxDensity() <= state.mipMaximum) {
+      if (skip && sampler.maxDensity() <= b.mipFloor(lanes)) {
         k += sampler.samplesLeftInCell();
         continue;
       }
-      state.mipMaximum = std::max(state.mipMaximum, sampler.density());
     } else {
-      if (skip && !sampler.mayBeVisible(*f.tfOf(region))) {
-        if (!sampler.mayBeVisible(*f.anyRegionTf)) k += sampler.samplesLeftInCell();
+      if (skip && !sampler.mayBeVisible(*f.anyRegionTf)) {
+        k += sampler.samplesLeftInCell();
         continue;
       }
-      const glm::vec4 rgba = (*table)[tableIndex(sampler.density())];
-      if (rgba.a <= 0.f) continue;
-      const float shade = f.params.shading.enabled
-                              ? shadingFactor(f.params.shading, sampler.gradient(), viewDir)
-                              : 1.f;
-      state.ray.add(rgba, shade);
-      if (state.ray.opacity >= f.params.sampling.ert) return true;
+    }
+    for (int l = 0; l < lanes; ++l)
+      if (!b.lanes[l].done && k >= b.lanes[l].resumeAt) sampleLane<Mip>(f, bundle, l, k, b);
+    if (b.live == 0) return true;
+    // Every lane in a clipped stretch: leap to the first sample one of them needs.
+    if (f.regionTables.regions) {
+      const long next = b.resumeAt(lanes);
+      if (next > k + 1) k = next - 1;
     }
   }
   return false;
@@ -162,85 +281,104 @@ bool cancelRequested(const FastRenderOptions& options) {
   return options.cancel && options.cancel->load(std::memory_order_relaxed);
 }
 
-// Scratch of one worker, reused from row to row. A ray's state is made when a visible group
-// first needs it, so rays through empty space cost nothing.
+// Scratch of one worker, reused from bundle to bundle. A column's state is made when a visible
+// group first needs it, so rays through empty space cost nothing.
 template <class Sampler>
 struct RowScratch {
   RowTiles tiles;
-  std::vector<std::optional<RayState<Sampler>>> rays;
+  std::vector<std::optional<BundleRay<Sampler>>> rays;
 };
 
-// The samples of one column's passage through a tile group. Returns true if the ray terminated.
+// The samples of one column's passage through a tile group. Returns true if every lane is done.
 template <bool Mip, class Sampler>
-bool visitGroup(const Frame& f, const RowTiles& row, const GroupRun& group, RayState<Sampler>& state,
-                std::uint64_t& samples) {
-  if (maySkip(f.skipGroups, f, row.groupVisible[group.group], row.groupMaxDensity[group.group],
-              state.mipMaximum))
+bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, const GroupRun& group,
+                BundleRay<Sampler>& b, std::uint64_t& samples) {
+  const float mipFloor = Mip ? b.mipFloor(bundle.lanes) : 0.f;
+  if (maySkip(f.skipGroups, f, row.groupVisible[group.group], row.groupMaxDensity[group.group], mipFloor))
     return false;
   for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
     const TileRun& run = f.templates.runs[r];
     const long end = run.firstSample + run.count;
-    if (end <= state.resumeAt) continue;
-    if (maySkip(f.skipTiles, f, row.visible[run.tile], row.maxDensity[run.tile], state.mipMaximum))
+    const long resumeAt = b.resumeAt(bundle.lanes);
+    if (end <= resumeAt) continue;
+    if (maySkip(f.skipTiles, f, row.visible[run.tile], row.maxDensity[run.tile],
+                Mip ? b.mipFloor(bundle.lanes) : 0.f))
       continue;
-    samples += end - std::max(run.firstSample, state.resumeAt);
-    if (sampleRun<Mip>(f, run, state)) return true;
+    samples += std::uint64_t(end - std::max(run.firstSample, resumeAt)) * bundle.rows;
+    if (sampleRun<Mip>(f, bundle, run, b)) return true;
   }
   return false;
 }
 
-// Renders one row group by group in front-to-back order (RayTemplates::visits), each ray keeping
-// its state in between; returns false if cancelled part-way (checked every 4 groups).
+template <class Sampler>
+BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
+  BundleRay<Sampler> b{RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
+                       Sampler(f.volume, f.rayStepQ, f.view.axis), {}, bundle.lanes};
+  for (int l = 0; l < bundle.lanes; ++l)
+    b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
+  return b;
+}
+
 template <bool Mip, class Sampler>
-bool renderRow(const Frame& f, int y, RowScratch<Sampler>& scratch, Image& image, std::uint64_t& samples) {
-  const double axisMm = f.view.rayOrigin(0, y)[f.view.axis];
-  // Rows above or below the domain see nothing (the reference's slab test, see sampleRange).
-  if (axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9) {
-    std::fill_n(&image.at(0, y), f.view.width, glm::vec4(0.f));
+void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampler>& scratch, Image& image) {
+  const RayTemplates& templates = f.templates;
+  for (int r = 0; r < bundle.rows; ++r) {
+    const int y = bundle.firstRow + r, l = std::min(r, bundle.lanes - 1);
+    for (int x = 0; x < f.view.width; ++x) {
+      const auto& b = scratch.rays[x];
+      if (!b) image.at(x, y) = Mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
+                                   ? mipPixel(0.f, f.params.mip) : glm::vec4(0.f);
+      else image.at(x, y) = Mip ? mipPixel(b->lanes[l].mipMaximum, f.params.mip) : b->lanes[l].ray.pixel();
+    }
+  }
+}
+
+// Renders one bundle of rows group by group in front-to-back order (RayTemplates::visits), each
+// column keeping its state in between; returns false if cancelled part-way (checked every 4 groups).
+template <bool Mip, class Sampler>
+bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& scratch, Image& image,
+                  std::uint64_t& samples) {
+  if (bundle.outside) {
+    std::fill_n(&image.at(0, bundle.firstRow), std::size_t(f.view.width) * bundle.rows, glm::vec4(0.f));
     return true;
   }
   if (cancelRequested(f.options)) return false;
-  classifyRow(f, axisMm / f.volume.spacing[f.view.axis], scratch.tiles);
+  // Every row of the bundle reads the first row's slices (nearest, trilinear) or a subset of them
+  // (mean: the same nearest voxel), so its classification holds for all.
+  classifyRow(f, bundle.qa, scratch.tiles);
   auto& rays = scratch.rays;
   rays.resize(f.view.width);
   for (auto& ray : rays) ray.reset();
   const RayTemplates& templates = f.templates;
-  const bool mip = f.params.compositing == Compositing::mip;
   for (std::size_t rank = 0; rank + 1 < templates.rankBegin.size(); ++rank) {
     if (rank % 4 == 3 && cancelRequested(f.options)) return false;
     const std::int32_t group = templates.rankGroup[rank];
-    if (!mip && maySkip(f.skipGroups, f, scratch.tiles.groupVisible[group], 0, 0.f)) continue;
+    if (!Mip && maySkip(f.skipGroups, f, scratch.tiles.groupVisible[group], 0, 0.f)) continue;
     for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
-      if (!state)
-        state.emplace(RayState<Sampler>{RaySamples(f.volume, f.view, f.view.rayOrigin(int(visit.column), y)),
-                                        RegionCursor(f.regionTables.regions, int(visit.column), y),
-                                        Sampler(f.volume, f.rayStepQ)});
-      else if (state->terminated) continue;
-      state->terminated = visitGroup<Mip>(f, scratch.tiles, templates.groups[visit.groupRun], *state, samples);
+      if (!state) state.emplace(startColumn<Sampler>(f, bundle, int(visit.column)));
+      else if (state->live == 0) continue;
+      visitGroup<Mip>(f, bundle, scratch.tiles, templates.groups[visit.groupRun], *state, samples);
     }
   }
-  for (int x = 0; x < f.view.width; ++x) {
-    if (!rays[x]) image.at(x, y) = Mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
-                                       ? mipPixel(0.f, f.params.mip) : glm::vec4(0.f);
-    else image.at(x, y) = Mip ? mipPixel(rays[x]->mipMaximum, f.params.mip) : rays[x]->ray.pixel();
-  }
+  writePixels<Mip>(f, bundle, scratch, image);
   return true;
 }
 
-// Renders rows [first, end); returns false if cancelled.
+// Renders bundles [first, end); returns false if cancelled.
 template <bool Mip, class Sampler>
-bool renderRows(const Frame& f, int first, int end, Image& image, std::uint64_t& samples) {
+bool renderRows(const Frame& f, const RowBundle* first, const RowBundle* end, Image& image,
+                std::uint64_t& samples) {
   RowScratch<Sampler> scratch;
-  for (int y = first; y != end; ++y) {
-    if (!renderRow<Mip>(f, y, scratch, image, samples)) return false;
-    if (f.options.rowsDone) f.options.rowsDone->fetch_add(1, std::memory_order_relaxed);
+  for (const RowBundle* bundle = first; bundle != end; ++bundle) {
+    if (!renderBundle<Mip>(f, *bundle, scratch, image, samples)) return false;
+    if (f.options.rowsDone) f.options.rowsDone->fetch_add(bundle->rows, std::memory_order_relaxed);
   }
   return true;
 }
 
-using RowFunction = bool (*)(const Frame&, int, int, Image&, std::uint64_t&);
+using RowFunction = bool (*)(const Frame&, const RowBundle*, const RowBundle*, Image&, std::uint64_t&);
 
 template <bool Mip>
 RowFunction rowFunctionFor(Filter filter) {
@@ -313,6 +451,7 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
   f.anyRegionTf = &anyRegion;
   f.skipGroups = options.skipEmpty && options.skipGroups;
   f.skipTiles = options.skipEmpty && options.skipTiles;
+  f.shareRows = options.shareRows;
   // Cell skipping pays only with several samples per cell: at osd 1 (about one sample per cell)
   // the test and leap cost more than the interpolation they save (`angioray bench`: medium with
   // trilinear 119 ms without, 134 ms with; high at osd 0.3: 964 ms without, 842 ms with).
@@ -330,9 +469,11 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
   const RowFunction renderRowsFn = rowFunctionFor(params);
   std::atomic<std::uint64_t> samples{0};
   std::atomic<bool> cancelled{false};
-  tbb::parallel_for(tbb::blocked_range<int>(0, f.view.height), [&](const tbb::blocked_range<int>& rows) {
+  const std::vector<RowBundle> bundles = rowBundles(f);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bundles.size()), [&](const tbb::blocked_range<std::size_t>& range) {
     std::uint64_t local = 0;
-    if (!renderRowsFn(f, rows.begin(), rows.end(), image, local)) cancelled = true;
+    if (!renderRowsFn(f, bundles.data() + range.begin(), bundles.data() + range.end(), image, local))
+      cancelled = true;
     samples += local;
   });
   if (stats) *stats = {samples.load(), templateMs, cancelled.load()};

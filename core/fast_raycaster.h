@@ -28,6 +28,8 @@ struct FastRenderOptions {
   bool skipCells = true;   // trilinear cells whose 8 corners the TF hides (or, MIP, not above the
                            // ray's maximum), and the leaps over their remaining samples; used
                            // only where samples are dense (osd < 0.75), where it pays
+  // Rows that read the same voxels rendered in one pass (row bundles, core/fast_raycaster.cpp).
+  bool shareRows = true;
   const std::atomic<bool>* cancel = nullptr;  // checked per template column, every 4 groups of a row
   // Optional: an earlier frame whose pixel memory the new frame takes over (it is left empty).
   // Fresh memory for a frame costs page faults: ~25 ms of kernel page clearing for a 39 MB

@@ -11,8 +11,11 @@
 // O(1) query of the integrated opacity table instead of an interpolation (cell transparency: a
 // trilinear value lies between the corners' min and max, so its table entry does too).
 //
-// Use per sample: moveTo(q), then mayBeVisible / maxDensity, then density(), then gradient().
-// samplesLeftInCell() tells how many of the following samples (q + j step, j = 1, 2, ...)
+// Use per sample: moveTo(q), then mayBeVisible / maxDensity, then density(fracA), then
+// gradient(fracA). Rows of a bundle (core/fast_raycaster.cpp) share one sampler: their samples
+// read the same voxels and differ only in the cell fraction along the rotation axis a, `fracA`
+// (what cellAt gives for the row's own q; the voxel filters ignore it, a bundle's rows read the
+// same nearest voxel). samplesLeftInCell() tells how many of the following samples (q + j step, j = 1, 2, ...)
 // surely fall into the same cell (the same voxels), so a ray can leap over a hidden cell at once
 // (0 where the sampler does not know).
 #include <algorithm>
@@ -35,17 +38,17 @@ enum class VoxelFilter { nearest, mean };
 template <VoxelFilter Filter>
 class VoxelRaySampler {
  public:
-  VoxelRaySampler(const Volume& volume, const glm::dvec3&) : volume_(volume) {}
+  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int) : volume_(volume) {}
 
   void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
-  float density() const {
+  float density(float) const {
     if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, voxel_);
     else return float(volume_.densityAt(voxel_.x, voxel_.y, voxel_.z));
   }
-  glm::vec3 gradient() const { return nearestGradient(volume_, voxel_); }
+  glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_); }
 
  private:
   const Volume& volume_;
@@ -57,9 +60,9 @@ using MeanRaySampler = VoxelRaySampler<VoxelFilter::mean>;
 
 class TrilinearRaySampler {
  public:
-  // `step`: from one sample of the ray to the next, in voxel units.
-  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step)
-      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)) {
+  // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a.
+  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis)
+      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)), axis_(axis) {
     for (int axis = 0; axis < 3; ++axis) {
       forward_[axis] = step[axis] > 0;
       inverseStep_[axis] = step[axis] != 0 ? 1.0 / std::abs(step[axis]) : 0.0;
@@ -86,16 +89,23 @@ class TrilinearRaySampler {
     }
     return std::max(long(std::ceil(limit - 1e-7)) - 1, 0L);
   }
-  float density() const {
-    return trilinear(cell_, [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; });
+  float density(float fracA) const {
+    return trilinear(rowCell(fracA), [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; });
   }
-  glm::vec3 gradient() {
+  glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();
-    return trilinear(cell_, [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; });
+    return trilinear(rowCell(fracA), [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; });
   }
 
  private:
   static int corner(int dx, int dy, int dz) { return dx + 2 * dy + 4 * dz; }
+
+  // The current cell as one row of the bundle sees it.
+  Cell rowCell(float fracA) const {
+    Cell cell = cell_;
+    cell.frac[axis_] = fracA;
+    return cell;
+  }
 
   // Cell bases whose corners' six neighbours all exist: gradients through pointer offsets.
   struct Box {
@@ -146,6 +156,7 @@ class TrilinearRaySampler {
   const Volume& volume_;
   const glm::ivec3 steps_;
   const Box interior_;
+  const int axis_;
   glm::dvec3 inverseStep_{0.0};  // 1 / |step| per axis, 0 where the ray does not move along it
   glm::bvec3 forward_{false};
   Cell cell_;
