@@ -133,7 +133,9 @@ class TrilinearRaySampler {
     hi_ = hi;
   }
 
-  // As trilinearGradient computes each corner's central differences (volume_sampling.h).
+  // As trilinearGradient computes each corner's central differences (volume_sampling.h). Inside
+  // the volume half of the 48 neighbours are the cell's own corners, already in corners_ (the
+  // same float values), so only the 24 voxels of the shell around the cell are read.
   void loadGradients() {
     gradientsLoaded_ = true;
     if (interior_.holds(cached_)) {
@@ -141,9 +143,21 @@ class TrilinearRaySampler {
       const glm::ivec3 strides = voxelStrides(volume_);
       for (int dz = 0; dz < 2; ++dz)
         for (int dy = 0; dy < 2; ++dy)
-          for (int dx = 0; dx < 2; ++dx)
-            gradients_[corner(dx, dy, dz)] = voxelGradientInterior(
-                base + dx * strides.x + dy * strides.y + dz * strides.z, strides, volume_.spacing);
+          for (int dx = 0; dx < 2; ++dx) {
+            const Voxel* v = base + dx * strides.x + dy * strides.y + dz * strides.z;
+            const glm::ivec3 d(dx, dy, dz);
+            glm::vec3 g;
+            for (int axis = 0; axis < 3; ++axis) {
+              // The neighbour inside the cell is the corner across it; the other is in the shell.
+              glm::ivec3 across = d;
+              across[axis] = 1 - d[axis];
+              const float inside = corners_[corner(across.x, across.y, across.z)];
+              const float shell = float(densityOf(v[d[axis] ? strides[axis] : -strides[axis]]));
+              g[axis] = d[axis] ? centralDifference(inside, shell, volume_.spacing[axis])
+                                : centralDifference(shell, inside, volume_.spacing[axis]);
+            }
+            gradients_[corner(dx, dy, dz)] = g;
+          }
       return;
     }
     for (int dz = 0; dz < 2; ++dz)
