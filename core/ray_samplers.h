@@ -72,6 +72,7 @@ class TrilinearRaySampler {
   void moveTo(const glm::dvec3& q) {
     q_ = q;
     cell_ = cellAt(volume_, q);
+    densityPlanesReady_ = gradientPlanesReady_ = false;
     if (cell_.base != cached_) load();
   }
   bool mayBeVisible(const TfTable& table) const { return table.anyVisible(lo_, hi_); }
@@ -89,12 +90,27 @@ class TrilinearRaySampler {
     }
     return std::max(long(std::ceil(limit - 1e-7)) - 1, 0L);
   }
-  float density(float fracA) const {
-    return trilinear(rowCell(fracA), [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; });
+  // About the rotation axis k (the patient's long axis, the default) the rows of a bundle differ
+  // only in the last of trilinear's interpolations, along z: the two bilinear planes are computed
+  // once per sample for all rows.
+  float density(float fracA) {
+    auto corners = [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; };
+    if (axis_ != 2) return trilinear(rowCell(fracA), corners);
+    if (!densityPlanesReady_) {
+      densityPlanes_ = {bilinearInPlane(cell_, corners, 0), bilinearInPlane(cell_, corners, 1)};
+      densityPlanesReady_ = true;
+    }
+    return interpolate(densityPlanes_[0], densityPlanes_[1], fracA);
   }
   glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();
-    return trilinear(rowCell(fracA), [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; });
+    auto corners = [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; };
+    if (axis_ != 2) return trilinear(rowCell(fracA), corners);
+    if (!gradientPlanesReady_) {
+      gradientPlanes_ = {bilinearInPlane(cell_, corners, 0), bilinearInPlane(cell_, corners, 1)};
+      gradientPlanesReady_ = true;
+    }
+    return interpolate(gradientPlanes_[0], gradientPlanes_[1], fracA);
   }
 
  private:
@@ -180,6 +196,10 @@ class TrilinearRaySampler {
   int lo_ = 0, hi_ = 0;
   std::array<float, 8> corners_;       // filled by load() before any use
   std::array<glm::vec3, 8> gradients_;  // filled by loadGradients() before any use
+  // The current sample's bilinear planes z = base and base + 1 (rotation about k).
+  bool densityPlanesReady_ = false, gradientPlanesReady_ = false;
+  std::array<float, 2> densityPlanes_{};
+  std::array<glm::vec3, 2> gradientPlanes_{};
 };
 
 }  // namespace angio

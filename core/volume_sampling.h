@@ -82,17 +82,23 @@ inline Cell cellAt(const Volume& volume, glm::dvec3 q) {
   return cell;
 }
 
-// corner(dx, dy, dz) gives the value at base + (dx, dy, dz); the lerp order is fixed, so every
-// caller gets the same bits for the same corner values.
+inline float interpolate(float a, float b, float t) { return a + (b - a) * t; }
+inline glm::vec3 interpolate(const glm::vec3& a, const glm::vec3& b, float t) { return a + (b - a) * t; }
+
+// corner(dx, dy, dz) gives the value at base + (dx, dy, dz). The bilinear value in the cell's
+// plane dz: along x, then y.
+template <typename CornerValue>
+auto bilinearInPlane(const Cell& cell, CornerValue&& corner, int dz) {
+  const glm::vec3 f = cell.frac;
+  return interpolate(interpolate(corner(0, 0, dz), corner(1, 0, dz), f.x),
+                     interpolate(corner(0, 1, dz), corner(1, 1, dz), f.x), f.y);
+}
+
+// Along x, then y, then z: the order is fixed, so every caller gets the same bits for the same
+// corner values (the fast raycaster shares the two planes between rows that differ only in z).
 template <typename CornerValue>
 auto trilinear(const Cell& cell, CornerValue&& corner) {
-  const glm::vec3 f = cell.frac;
-  auto lerp = [](auto a, auto b, float t) { return a + (b - a) * t; };
-  const auto x00 = lerp(corner(0, 0, 0), corner(1, 0, 0), f.x);
-  const auto x10 = lerp(corner(0, 1, 0), corner(1, 1, 0), f.x);
-  const auto x01 = lerp(corner(0, 0, 1), corner(1, 0, 1), f.x);
-  const auto x11 = lerp(corner(0, 1, 1), corner(1, 1, 1), f.x);
-  return lerp(lerp(x00, x10, f.y), lerp(x01, x11, f.y), f.z);
+  return interpolate(bilinearInPlane(cell, corner, 0), bilinearInPlane(cell, corner, 1), cell.frac.z);
 }
 
 // Offsets to a cell's far corners; 0 along an axis of one voxel (then both corners coincide).
