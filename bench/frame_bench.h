@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/blocked_volume.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
@@ -45,6 +46,7 @@ struct BenchReport {
   double accelerationMiB = 0;     // slice tiles + classification
   double preprocessMs = 0;        // building the slice tiles for the axis
   double classifyMs = 0;          // classifying them for the TF
+  BlockingReport blocking;        // the blocked volume (built and classified, not rendered from)
   // A high-quality frame cancelled at a random moment: cancel flag set -> renderFast returned.
   double interruptMedianMs = 0, interruptMaxMs = 0;
   int interrupts = 0;

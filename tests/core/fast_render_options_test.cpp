@@ -73,5 +73,30 @@ TEST(FastRenderOptions, EachSkippingLevelAloneKeepsTheImage) {
   }
 }
 
+// Row bundles (rows reading the same voxels share one pass) against every row on its own: the
+// same bits, for the filters that bundle (trilinear: per-row fractions; nearest: copied rows),
+// DVR and MIP, about two axes (k has the shared-plane interpolation, i the general one).
+TEST(FastRenderOptions, RowBundlesKeepTheImage) {
+  const Scene scene;
+  for (Axis axis : {Axis::k, Axis::i}) {
+    const SliceTiles tiles = buildSliceTiles(scene.volume, axis);
+    const std::vector<std::uint8_t> visible = classifyTiles(tiles, scene.table);
+    for (Quality quality : {Quality::medium, Quality::high})
+      for (Compositing mode : {Compositing::dvr, Compositing::mip}) {
+        RenderParams p;
+        p.axis = axis;
+        p.angleDeg = 57;
+        p.sampling = qualitySampling(quality);
+        p.compositing = mode;
+        FastRenderOptions separate;
+        separate.shareRows = false;
+        const Image bundled = renderFast(scene.volume, tiles, visible, scene.table, p);
+        ASSERT_TRUE(showsSomething(bundled));
+        EXPECT_TRUE(renderFast(scene.volume, tiles, visible, scene.table, p, separate).pixels == bundled.pixels)
+            << toString(axis) << " " << toString(quality) << (mode == Compositing::mip ? " mip" : " dvr");
+      }
+  }
+}
+
 }  // namespace
 }  // namespace angio
