@@ -96,15 +96,6 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
   }
 }
 
-// A tile (or group) may be skipped when no sample in it can change the pixel: nothing visible
-// there (DVR), or nothing denser than the maximum so far (MIP).
-bool maySkip(bool enabled, const Frame& f, std::uint8_t visible, std::uint16_t maxDensity,
-             float mipMaximum) {
-  if (!enabled) return false;
-  if (f.params.compositing == Compositing::mip) return float(maxDensity) <= mipMaximum;
-  return !visible;
-}
-
 // Rows whose samples read the same voxels: consecutive rows with the same cell base (trilinear)
 // or nearest voxel (nearest, mean) along the rotation axis a. Their in-plane sample positions are
 // the same (the rendering model's rays differ only by v e_a from row to row), so they meet the
@@ -209,14 +200,21 @@ struct BundleRay {
   }
 };
 
+// What the inner loop is compiled for: MIP or DVR, with or without VesselGlyph regions.
+template <bool Mip, bool Regions>
+struct Compiled {
+  static constexpr bool mip = Mip;
+  static constexpr bool regions = Regions;
+};
+
 // One sample k of one lane, after the bundle's sampler moved to it.
-template <bool Mip, class Sampler>
+template <class Mode, class Sampler>
 void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRay<Sampler>& b) {
   Lane& lane = b.lanes[l];
   const double t = double(k) * f.view.sampleMm;
-  const Region region = lane.regions.at(t);
+  const Region region = Mode::regions ? lane.regions.at(t) : Region::outside;
   const SampleTable* table = f.tables.of(region);
-  if (!table) {
+  if (Mode::regions && !table) {
     // A clipped region (VesselGlyph): leap to just before its end. The sample there is
     // classified as every other one, so the leap needs no exact division.
     const double change = lane.regions.nextChange(t);
@@ -228,10 +226,11 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
     return;
   }
   Sampler& sampler = b.sampler;
-  if constexpr (Mip) {
+  if constexpr (Mode::mip) {
     lane.mipMaximum = std::max(lane.mipMaximum, sampler.density(bundle.fracA[l]));
   } else {
-    if (f.skipCells && !sampler.mayBeVisible(*f.tfOf(region))) return;
+    // (Without regions the sampler's cell already passed this test for every lane.)
+    if (Mode::regions && f.skipCells && !sampler.mayBeVisible(*f.tfOf(region))) return;
     const glm::vec4 rgba = (*table)[tableIndex(sampler.density(bundle.fracA[l]))];
     if (rgba.a <= 0.f) return;
     const float shade = f.params.shading.enabled
@@ -246,15 +245,15 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
 // The samples of one tile run, composited into each lane's ray (DVR) or maximum (MIP). Returns
 // true when every lane is done. Samples the sampler proves invisible for every lane (or, in MIP,
 // not above any lane's maximum) are skipped without interpolation; they could not change a pixel.
-template <bool Mip, class Sampler>
-bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, BundleRay<Sampler>& b) {
+template <class Mode, class Sampler>
+bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, long first, BundleRay<Sampler>& b) {
   const bool skip = f.skipCells;
   const int lanes = bundle.lanes;
   Sampler& sampler = b.sampler;
   const long end = run.firstSample + run.count;
-  for (long k = std::max(run.firstSample, b.resumeAt(lanes)); k < end; ++k) {
+  for (long k = first; k < end; ++k) {
     sampler.moveTo(b.positions.at(k));
-    if constexpr (Mip) {
+    if constexpr (Mode::mip) {
       if (skip && sampler.maxDensity() <= b.mipFloor(lanes)) {
         k += sampler.samplesLeftInCell();
         continue;
@@ -266,10 +265,10 @@ bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, Bund
       }
     }
     for (int l = 0; l < lanes; ++l)
-      if (!b.lanes[l].done && k >= b.lanes[l].resumeAt) sampleLane<Mip>(f, bundle, l, k, b);
+      if (!b.lanes[l].done && k >= b.lanes[l].resumeAt) sampleLane<Mode>(f, bundle, l, k, b);
     if (b.live == 0) return true;
     // Every lane in a clipped stretch: leap to the first sample one of them needs.
-    if (f.regionTables.regions) {
+    if constexpr (Mode::regions) {
       const long next = b.resumeAt(lanes);
       if (next > k + 1) k = next - 1;
     }
@@ -289,23 +288,34 @@ struct RowScratch {
   std::vector<std::optional<BundleRay<Sampler>>> rays;
 };
 
+// May the tile (or group) change a pixel of the bundle's column: something visible there (DVR), or
+// something denser than the smallest maximum so far (MIP)?
+template <class Mode, class Sampler>
+bool mayShow(std::uint8_t visible, std::uint16_t maxDensity, const BundleRay<Sampler>& b, int lanes) {
+  if constexpr (Mode::mip) return float(maxDensity) > b.mipFloor(lanes);
+  else return visible != 0;
+}
+
 // The samples of one column's passage through a tile group. Returns true if every lane is done.
-template <bool Mip, class Sampler>
+// (DVR: the caller has already skipped the groups no ray sees in this bundle.)
+template <class Mode, class Sampler>
 bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, const GroupRun& group,
                 BundleRay<Sampler>& b, std::uint64_t& samples) {
-  const float mipFloor = Mip ? b.mipFloor(bundle.lanes) : 0.f;
-  if (maySkip(f.skipGroups, f, row.groupVisible[group.group], row.groupMaxDensity[group.group], mipFloor))
+  if (Mode::mip && f.skipGroups &&
+      !mayShow<Mode>(row.groupVisible[group.group], row.groupMaxDensity[group.group], b, bundle.lanes))
     return false;
   for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
     const TileRun& run = f.templates.runs[r];
-    const long end = run.firstSample + run.count;
-    const long resumeAt = b.resumeAt(bundle.lanes);
-    if (end <= resumeAt) continue;
-    if (maySkip(f.skipTiles, f, row.visible[run.tile], row.maxDensity[run.tile],
-                Mip ? b.mipFloor(bundle.lanes) : 0.f))
+    if (f.skipTiles && !mayShow<Mode>(row.visible[run.tile], row.maxDensity[run.tile], b, bundle.lanes))
       continue;
-    samples += std::uint64_t(end - std::max(run.firstSample, resumeAt)) * bundle.rows;
-    if (sampleRun<Mip>(f, bundle, run, b)) return true;
+    const long end = run.firstSample + run.count;
+    long first = run.firstSample;
+    if constexpr (Mode::regions) {
+      first = std::max(first, b.resumeAt(bundle.lanes));
+      if (end <= first) continue;
+    }
+    samples += std::uint64_t(end - first) * bundle.rows;
+    if (sampleRun<Mode>(f, bundle, run, first, b)) return true;
   }
   return false;
 }
@@ -319,23 +329,23 @@ BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   return b;
 }
 
-template <bool Mip, class Sampler>
+template <class Mode, class Sampler>
 void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampler>& scratch, Image& image) {
   const RayTemplates& templates = f.templates;
   for (int r = 0; r < bundle.rows; ++r) {
     const int y = bundle.firstRow + r, l = std::min(r, bundle.lanes - 1);
     for (int x = 0; x < f.view.width; ++x) {
       const auto& b = scratch.rays[x];
-      if (!b) image.at(x, y) = Mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
+      if (!b) image.at(x, y) = Mode::mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
                                    ? mipPixel(0.f, f.params.mip) : glm::vec4(0.f);
-      else image.at(x, y) = Mip ? mipPixel(b->lanes[l].mipMaximum, f.params.mip) : b->lanes[l].ray.pixel();
+      else image.at(x, y) = Mode::mip ? mipPixel(b->lanes[l].mipMaximum, f.params.mip) : b->lanes[l].ray.pixel();
     }
   }
 }
 
 // Renders one bundle of rows group by group in front-to-back order (RayTemplates::visits), each
 // column keeping its state in between; returns false if cancelled part-way (checked every 4 groups).
-template <bool Mip, class Sampler>
+template <class Mode, class Sampler>
 bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& scratch, Image& image,
                   std::uint64_t& samples) {
   if (bundle.outside) {
@@ -353,26 +363,26 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
   for (std::size_t rank = 0; rank + 1 < templates.rankBegin.size(); ++rank) {
     if (rank % 4 == 3 && cancelRequested(f.options)) return false;
     const std::int32_t group = templates.rankGroup[rank];
-    if (!Mip && maySkip(f.skipGroups, f, scratch.tiles.groupVisible[group], 0, 0.f)) continue;
+    if (!Mode::mip && f.skipGroups && !scratch.tiles.groupVisible[group]) continue;
     for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
       if (!state) state.emplace(startColumn<Sampler>(f, bundle, int(visit.column)));
       else if (state->live == 0) continue;
-      visitGroup<Mip>(f, bundle, scratch.tiles, templates.groups[visit.groupRun], *state, samples);
+      visitGroup<Mode>(f, bundle, scratch.tiles, templates.groups[visit.groupRun], *state, samples);
     }
   }
-  writePixels<Mip>(f, bundle, scratch, image);
+  writePixels<Mode>(f, bundle, scratch, image);
   return true;
 }
 
 // Renders bundles [first, end); returns false if cancelled.
-template <bool Mip, class Sampler>
+template <class Mode, class Sampler>
 bool renderRows(const Frame& f, const RowBundle* first, const RowBundle* end, Image& image,
                 std::uint64_t& samples) {
   RowScratch<Sampler> scratch;
   for (const RowBundle* bundle = first; bundle != end; ++bundle) {
-    if (!renderBundle<Mip>(f, *bundle, scratch, image, samples)) return false;
+    if (!renderBundle<Mode>(f, *bundle, scratch, image, samples)) return false;
     if (f.options.rowsDone) f.options.rowsDone->fetch_add(bundle->rows, std::memory_order_relaxed);
   }
   return true;
@@ -380,20 +390,22 @@ bool renderRows(const Frame& f, const RowBundle* first, const RowBundle* end, Im
 
 using RowFunction = bool (*)(const Frame&, const RowBundle*, const RowBundle*, Image&, std::uint64_t&);
 
-template <bool Mip>
+template <class Mode>
 RowFunction rowFunctionFor(Filter filter) {
   switch (filter) {
-    case Filter::nearest: return renderRows<Mip, NearestRaySampler>;
-    case Filter::mean: return renderRows<Mip, MeanRaySampler>;
-    case Filter::trilinear: return renderRows<Mip, TrilinearRaySampler>;
+    case Filter::nearest: return renderRows<Mode, NearestRaySampler>;
+    case Filter::mean: return renderRows<Mode, MeanRaySampler>;
+    case Filter::trilinear: return renderRows<Mode, TrilinearRaySampler>;
   }
-  return renderRows<Mip, NearestRaySampler>;
+  return renderRows<Mode, NearestRaySampler>;
 }
 
-// The row renderer compiled for the frame's filter and compositing.
-RowFunction rowFunctionFor(const RenderParams& params) {
-  return params.compositing == Compositing::mip ? rowFunctionFor<true>(params.sampling.filter)
-                                                 : rowFunctionFor<false>(params.sampling.filter);
+// The row renderer compiled for the frame's filter, compositing and regions.
+RowFunction rowFunctionFor(const RenderParams& params, bool regions) {
+  const bool mip = params.compositing == Compositing::mip;
+  const Filter filter = params.sampling.filter;
+  if (regions) return mip ? rowFunctionFor<Compiled<true, true>>(filter) : rowFunctionFor<Compiled<false, true>>(filter);
+  return mip ? rowFunctionFor<Compiled<true, false>>(filter) : rowFunctionFor<Compiled<false, false>>(filter);
 }
 
 // The frame's image: every pixel is written by its row, so recycled memory needs no clearing.
@@ -466,7 +478,7 @@ Image renderFast(const Volume& volume, const SliceTiles& tiles,
   }
 
   Image image = frameImage(f.view, options.recycle);
-  const RowFunction renderRowsFn = rowFunctionFor(params);
+  const RowFunction renderRowsFn = rowFunctionFor(params, tables.regions != nullptr);
   std::atomic<std::uint64_t> samples{0};
   std::atomic<bool> cancelled{false};
   const std::vector<RowBundle> bundles = rowBundles(f);
