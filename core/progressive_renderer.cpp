@@ -310,7 +310,7 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image, do
 }
 
 // One level: plain DVR with the request's table, or VesselGlyph with the regions of this level's
-// view (built here, so their time counts in the level's).
+// view (built here, so their time counts in the level's) and the source's finish step.
 Image ProgressiveRenderer::renderLevel(const Job& job, const RenderParams& params,
                                        FastRenderStats& stats) {
   FastRenderOptions options;
@@ -325,10 +325,13 @@ Image ProgressiveRenderer::renderLevel(const Job& job, const RenderParams& param
   options.recycle = &recycled;
   const RegionSource* regions = job.request.regions.get();
   if (!regions) return renderFast(volume_, *tiles_, visibleTiles_, *job.request.table, params, options, &stats);
-  regions->build(makeViewGeometry(volume_, params), regionScratch_);
+  const ViewGeometry view = makeViewGeometry(volume_, params);
+  regions->build(view, regionScratch_);
   const RegionTables tables{&regionScratch_, regions->focus.get(), regions->context.get(),
                             regions->outside.get()};
-  return renderFast(volume_, *tiles_, visibleTiles_, tables, params, options, &stats);
+  Image image = renderFast(volume_, *tiles_, visibleTiles_, tables, params, options, &stats);
+  if (regions->finish && !stats.cancelled) regions->finish(view, regionScratch_, image);
+  return image;
 }
 
 void ProgressiveRenderer::runJob(const Job& job) {

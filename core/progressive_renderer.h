@@ -51,6 +51,11 @@ struct RegionSource {
   std::shared_ptr<const TfTable> focus;    // null: the focus is not rendered
   std::shared_ptr<const TfTable> context;  // null: no context
   std::shared_ptr<const TfTable> outside;  // null: the outside is clipped
+  // Optional: called on the worker after each level's render (not after a cancelled one), with
+  // that level's view and regions, before the frame is made from the image; may change the image
+  // in place (the app's DVR+CPR hybrid composites the projected CPR into the focus footprint).
+  // Its time counts in the level's.
+  std::function<void(const ViewGeometry& view, const RayRegions& regions, Image& image)> finish;
 };
 
 struct ProgressiveRequest {

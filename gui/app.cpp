@@ -72,6 +72,7 @@ App::App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<v
     vessel_.path = state_.centerlinesFile;
     loadVesselCenterlines(vessel_.path);
   }
+  if (state_.cpr.hybrid) vessel_.enabled = true;  // a session's hybrid: VesselGlyph's focus is the cut
 }
 
 App::~App() {

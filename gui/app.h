@@ -28,6 +28,7 @@
 #include "gui/app_vessel.h"
 #include "gui/tf_editor.h"
 #include "gui/viewport.h"
+#include "io/render_sidecar.h"
 #include "io/session_file.h"
 #include "io/tf_file.h"
 
@@ -131,6 +132,16 @@ class App {
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
   nlohmann::json cprReport() const;
+  // DVR+CPR hybrid (gui/app_hybrid.cpp): its controls in the CPR section, and the finish step
+  // the progressive renderer runs on each VesselGlyph image when it is on.
+  void drawHybridControls();
+  std::function<void(const ViewGeometry&, const RayRegions&, Image&)> hybridFinishStep();
+  nlohmann::json hybridReport() const;
+  // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it.
+  std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
+  std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
+  RenderSidecar exportRecipe() const;  // of what the last request rendered
+  Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
   TransferFunction& editedTf();  // the TF the TF editor edits: main, focus or context
   std::string& editedPreset();
   void applyTf(const TransferFunction& tf, const std::string& preset);

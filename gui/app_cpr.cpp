@@ -21,6 +21,7 @@ constexpr float kCprShare = 0.35f;  // of the room left of the side panel
 constexpr double kMaxCprPixelMm = 1.0;  // finer than coarse volumes' DVR pixels, for the ruler
 constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
 constexpr const char* kColourings[] = {"CTA lumen", "calcium", "focus TF"};
+constexpr const char* kColouringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
 constexpr float kClickReachPx = 12;  // a click this near a projected centerline moves the cursor
 
 std::shared_ptr<const ProgressiveFrame> textureFrameOf(Image image) {
@@ -87,32 +88,35 @@ void App::moveCprCursorOnClick() {
 }
 
 float App::cprViewWidth() const {
-  if (!cprView_.shown || !vessel_.physical) return 0;
+  if (!state_.cpr.shown || !vessel_.physical) return 0;
   return std::floor(std::max(ImGui::GetIO().DisplaySize.x - kPanelWidth, 0.f) * kCprShare);
 }
 
 void App::drawCprSection() {
   if (!vessel_.physical || !sectionHeader("CPR")) return;  // the section needs centerlines
   CprViewPanel& panel = cprView_;
-  ImGui::Checkbox("CPR view beside the image", &panel.shown);
+  ImGui::Checkbox("CPR view beside the image", &state_.cpr.shown);
   noteRect("cpr_shown");
   for (std::size_t n = 0; n < std::size(kModes); ++n) {
     if (n) ImGui::SameLine();
-    if (ImGui::RadioButton(toString(kModes[n]), panel.mode == kModes[n])) panel.mode = kModes[n];
+    if (ImGui::RadioButton(toString(kModes[n]), state_.cpr.mode == kModes[n])) state_.cpr.mode = kModes[n];
     noteRect(std::string("cpr_mode_") + toString(kModes[n]));
   }
   ImGui::SetNextItemWidth(220);
-  if (ImGui::BeginCombo("path##cpr", pathLabel(*vessel_.physical, panel.path).c_str())) {
+  if (ImGui::BeginCombo("path##cpr", pathLabel(*vessel_.physical, state_.cpr.path).c_str())) {
     for (int n = -1; n < int(vessel_.physical->paths.size()); ++n)
-      if (ImGui::Selectable(pathLabel(*vessel_.physical, n).c_str(), panel.path == n)) panel.path = n;
+      if (ImGui::Selectable(pathLabel(*vessel_.physical, n).c_str(), state_.cpr.path == n)) state_.cpr.path = n;
     ImGui::EndCombo();
   }
+  noteRect("cpr_path");
   ImGui::TextUnformatted("colour");
   for (int n = 0; n < 3; ++n) {
     ImGui::SameLine();
-    if (ImGui::RadioButton(kColourings[n], int(panel.colouring) == n)) panel.colouring = CprColouring(n);
+    if (ImGui::RadioButton(kColourings[n], int(state_.cpr.colouring) == n)) state_.cpr.colouring = CprColouring(n);
+    noteRect(std::string("cpr_colour_") + kColouringKeys[n]);
   }
   if (!panel.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", panel.error.c_str());
+  drawHybridControls();
 }
 
 // Recomputes the CPR when its inputs changed (not while a slider or a spin changes them every
@@ -129,22 +133,22 @@ void App::updateCpr() {
   ensureVesselTfs();
   char view[96];
   std::snprintf(view, sizeof view, "%s %.17g %d %d %d", toString(state_.view.axis), state_.view.angleDeg,
-                int(panel.mode), panel.path, int(panel.colouring));
+                int(state_.cpr.mode), state_.cpr.path, int(state_.cpr.colouring));
   const std::string key = vessel_.framedFor + " " + vessel_.file + " " + view +
-                          (panel.colouring == CprColouring::focusTf ? toJson(vessel_.focusTf) : "");
+                          (state_.cpr.colouring == CprColouring::focusTf ? toJson(vessel_.focusTf) : "");
   if (key == panel.madeFor) return;
   if (panel.cpr && (ImGui::IsAnyItemActive() || state_.view.autoSpin)) return;
   panel.madeFor = key;
   panel.hovered.reset();
   try {
-    const auto paths = selectPaths(*centerlines, panel.path < 0 ? "all" : std::to_string(panel.path));
+    const auto paths = selectPaths(*centerlines, state_.cpr.path < 0 ? "all" : std::to_string(state_.cpr.path));
     // The high level's pixel size, so a projected CPR registers with the DVR image (issue 6 item 1).
     const double pixelMm = std::min(state_.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm);
     const ViewGeometry geometry = cprView(data_.volume, state_.view.axis, state_.view.angleDeg, pixelMm);
-    Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{panel.mode, {}});
+    Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{state_.cpr.mode, {}});
     CprDisplay display;
-    if (panel.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
-    if (panel.colouring == CprColouring::focusTf) display.tf = vessel_.focusTf;
+    if (state_.cpr.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
+    if (state_.cpr.colouring == CprColouring::focusTf) display.tf = vessel_.focusTf;
     panel.frame = textureFrameOf(displayCpr(cpr.layout, cpr.hu, display));
     panel.texture.begin(panel.frame);
     while (!panel.texture.step(std::size_t(64) << 20)) {
@@ -172,7 +176,7 @@ void App::drawCprView() {
   ImGui::Begin("##cpr", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::Text("CPR %s, %s", toString(panel.mode), pathLabel(*vessel_.physical, panel.path).c_str());
+  ImGui::Text("CPR %s, %s", toString(state_.cpr.mode), pathLabel(*vessel_.physical, state_.cpr.path).c_str());
   const ImVec2 hoverLine = ImGui::GetCursorScreenPos();
   ImGui::NewLine();
   if (!panel.error.empty()) ImGui::TextWrapped("%s", panel.error.c_str());
@@ -205,8 +209,8 @@ void App::drawCprView() {
     std::snprintf(text, sizeof text, "hover the CPR: arc length, HU");
   draw->AddText(hoverLine, panel.hovered ? IM_COL32(255, 230, 90, 255) : IM_COL32(150, 150, 150, 255), text);
   panel.cursorPixel.reset();
-  if (panel.cursor && (panel.path < 0 || panel.path == panel.cursor->path))
-    panel.cursorPixel = cprPixelOf(panel.cpr->layout, panel.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
+  if (panel.cursor && (state_.cpr.path < 0 || state_.cpr.path == panel.cursor->path))
+    panel.cursorPixel = cprPixelOf(panel.cpr->layout, state_.cpr.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
   if (panel.cursorPixel) {
     const ImVec2 mark(panel.imageMin.x + float(panel.cursorPixel->x + 0.5) * scale,
                       panel.imageMin.y + float(panel.cursorPixel->y + 0.5) * scale);
@@ -242,8 +246,8 @@ nlohmann::json App::cprReport() const {
   }
   return {{"shown", cprViewWidth() > 0},
           {"cursor", cursor},
-          {"mode", toString(panel.mode)},
-          {"path", panel.path},
+          {"mode", toString(state_.cpr.mode)},
+          {"path", state_.cpr.path},
           {"width", panel.cpr ? panel.cpr->layout.width : 0},
           {"height", panel.cpr ? panel.cpr->layout.height : 0},
           {"pixel_mm", panel.cpr ? panel.cpr->layout.pixelMm : 0.0},

@@ -10,11 +10,10 @@
 #include <imgui.h>
 
 #include "gui/app_gl.h"
+#include "io/session_file.h"
 #include "vessel/cpr.h"
 
 namespace angio {
-
-enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
 
 // A point of a centerline: the CPR view's cursor.
 struct CenterlinePlace {
@@ -26,11 +25,7 @@ struct CenterlinePlace {
 struct CprViewPanel {
   explicit CprViewPanel(const GlApi& gl) : texture(gl) {}
 
-  // What the user set.
-  bool shown = false;
-  CprMode mode = CprMode::straightened;
-  int path = -1;  // index into the centerlines, -1 = all side by side
-  CprColouring colouring = CprColouring::ctaLumen;
+  // What the user set is the session's (AppState::cpr: shown, mode, path, colouring, hybrid).
 
   // What is shown.
   StreamedTexture texture;

@@ -142,6 +142,7 @@ void App::drawTfSection() {
 
   ImGui::SetNextItemWidth(230);
   ImGui::InputText("##tfpath", &tfPath_);
+  noteRect("tf_path");
   ImGui::SameLine();
   if (ImGui::Button("load")) {
     try {
@@ -151,6 +152,7 @@ void App::drawTfSection() {
       message_ = error.what();
     }
   }
+  noteRect("tf_load");
   ImGui::SameLine();
   if (ImGui::Button("save")) {
     try {
@@ -211,12 +213,11 @@ void App::drawExportSection() {
     return;
   }
   if (ImGui::Button("Export image")) {
-    const RenderDescription description = exportDescription(state_, data_.name, export_.isd);
     export_.cancel = std::make_shared<std::atomic<bool>>(false);
     export_.started = Clock::now();
-    export_.job = std::async(std::launch::async, [this, description, tf = state_.tf,
+    export_.job = std::async(std::launch::async, [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
                                                   path = export_.path, cancel = export_.cancel] {
-      return exportView(data_.volume, tf, description, path, cancel.get());
+      return exportView(data_.volume, centerlines, recipe, path, cancel.get());
     });
     message_ = "exporting " + export_.path;
   }

@@ -56,12 +56,12 @@ void App::drawSeriesExport() {
     return;
   }
   if (ImGui::Button("Export rotation series")) {
-    const RenderDescription base = exportDescription(state_, data_.name, export_.isd);
-    seriesJob_.start([this, base, spec, tf = state_.tf, folder = series_.folder](JobControl& control) {
+    seriesJob_.start([this, base = exportRecipe(), centerlines = exportCenterlines(), spec,
+                      folder = series_.folder](JobControl& control) {
       SeriesCallbacks callbacks;
       callbacks.cancel = &control.cancel;
       callbacks.progress = [&control](int done, int total) { control.progress.store(double(done) / total); };
-      return exportRotationSeries(data_.volume, tf, base, spec, folder, callbacks);
+      return exportRotationSeries(data_.volume, centerlines, base, spec, folder, callbacks);
     });
     message_ = "exporting a rotation series to " + series_.folder;
   }

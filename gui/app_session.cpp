@@ -37,6 +37,7 @@ Session App::session() const {
 void App::applySession(const Session& session) {
   tfHistory_.push(state_.tf);
   applySessionState(state_, session);  // the dataset changes when its load succeeds
+  if (state_.cpr.hybrid) vessel_.enabled = true;  // the hybrid is VesselGlyph's (its focus is the cut)
   panelsToApply_ = session.panelsOpen;
   if (session.dataset == data_.name || session.dataset.empty()) return;
   if (isPhantomName(session.dataset))

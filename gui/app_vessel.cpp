@@ -49,6 +49,14 @@ void regionTfCombo(const char* label, const std::vector<Preset>& presets, Transf
   ImGui::EndCombo();
 }
 
+// What the hybrid's finish step depends on beyond the regions and the focus TF ("" = off).
+std::string hybridSettingsKey(const SessionCpr& cpr) {
+  if (!cpr.hybrid) return "";
+  char key[96];
+  std::snprintf(key, sizeof key, "%d %d %.17g", cpr.path, int(cpr.colouring), cpr.transitionMm);
+  return key;
+}
+
 std::size_t pointCount(const Centerlines& centerlines) {
   std::size_t n = 0;
   for (const CenterlinePath& path : centerlines.paths) n += path.points.size();
@@ -266,6 +274,8 @@ std::shared_ptr<const RegionSource> App::vesselRegions() {
   refresh(vg.contextTable, vg.contextTableTf, vg.contextTf);
   const std::shared_ptr<const TfTable> outside = vg.outsideRendered ? table_ : nullptr;
   if (outside != vg.outsideTable) vg.outsideTable = outside, changed = true;
+  const std::string hybrid = hybridSettingsKey(state_.cpr);
+  if (hybrid != vg.hybridFor) vg.hybridFor = hybrid, changed = true;
   if (!changed) return vg.source;
 
   auto source = std::make_shared<RegionSource>();
@@ -276,6 +286,7 @@ std::shared_ptr<const RegionSource> App::vesselRegions() {
   source->focus = vg.focusTable;
   source->context = vg.contextTable;
   source->outside = vg.outsideTable;
+  source->finish = hybridFinishStep();  // the DVR+CPR hybrid, if on (gui/app_hybrid.cpp)
   return vg.source = std::move(source);
 }
 
@@ -319,7 +330,8 @@ nlohmann::json App::vesselReport() const {
           {"tf_editing", kTargetNames[int(vg.editing)]},
           {"error", vg.error},
           {"problem", vg.problem},
-          {"cpr", cprReport()}};
+          {"cpr", cprReport()},
+          {"hybrid", hybridReport()}};
 }
 
 }  // namespace angio

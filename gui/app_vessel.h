@@ -55,6 +55,8 @@ struct VesselGlyphPanel {
   TransferFunction focusTableTf, contextTableTf;
   std::shared_ptr<const RegionSource> source;  // what the last request got (null: plain DVR)
   std::string problem;                   // why VG is not rendered although enabled
+  std::string hybridFor;                 // the hybrid settings `source` was made with ("": none)
+  std::string hybridProblem;             // why the hybrid is not rendered although on
 };
 
 // Continuous pixel coordinates (x right, y down; pixel n spans [n, n + 1)) of a volume-frame

@@ -9,11 +9,11 @@
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "core/fast_raycaster.h"
 #include "core/slice_tiles.h"
 #include "core/view_geometry.h"
 #include "gui/app_export.h"
 #include "gui/render_job.h"
+#include "gui/sidecar_render.h"
 #include "io/input_error.h"
 
 namespace angio {
@@ -103,8 +103,8 @@ std::vector<double> seriesAngles(double startDeg, double arcDeg, int count) {
   return angles;
 }
 
-SeriesResult exportRotationSeries(const Volume& volume, const TransferFunction& tf,
-                                  const RenderDescription& base, const SeriesSpec& spec,
+SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& centerlines,
+                                  const RenderSidecar& base, const SeriesSpec& spec,
                                   const fs::path& folder, const SeriesCallbacks& callbacks) {
   checkSpec(spec, folder);
   std::error_code error;
@@ -112,30 +112,26 @@ SeriesResult exportRotationSeries(const Volume& volume, const TransferFunction& 
   if (error || !fs::is_directory(folder)) throw InputError(folder, "cannot create the folder" + (error ? ": " + error.message() : ""));
   const auto cancelled = [&] { return callbacks.cancel && callbacks.cancel->load(); };
 
-  // Shared by every view: the axis's slice tiles and the TF's visible tiles.
-  const TfTable table = buildTable(tf);
-  const SliceTiles tiles = buildSliceTiles(volume, base.params.axis);
-  const std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
+  const SliceTiles tiles = buildSliceTiles(volume, base.params.axis);  // shared by every view
   const std::vector<double> angles = seriesAngles(spec.startDeg, spec.arcDeg, spec.count);
 
   SeriesResult result;
   std::unique_ptr<MovieWriter> movie;
   for (int n = 0; n < spec.count && !result.cancelled; ++n) {
-    RenderDescription description = base;
-    description.params.angleDeg = angles[n];
-    const ViewGeometry view = makeViewGeometry(volume, description.params);
+    RenderSidecar sidecar = base;
+    sidecar.params.angleDeg = angles[n];
+    const ViewGeometry view = makeViewGeometry(volume, sidecar.params);
     if (long(view.width) * view.height > kMaxImagePixels)
       throw InputError(folder, "images of " + std::to_string(view.width) + "x" + std::to_string(view.height) +
                                    " pixels are too large; use a larger isd");
-    FastRenderStats stats;
-    const Image image = renderFast(volume, tiles, visible, table, description.params,
-                                   FastRenderOptions{.cancel = callbacks.cancel}, &stats);
-    if (stats.cancelled || cancelled()) {
+    bool stopped = false;
+    const Image image = renderSidecarImage(volume, centerlines, sidecar, {&tiles, callbacks.cancel, &stopped});
+    if (stopped || cancelled()) {
       result.cancelled = true;
       break;
     }
     const fs::path file = folder / numbered(spec, n);
-    writeImageAndSidecar(image, file, tf, description);
+    writeImageAndSidecar(image, file, sidecar);
     result.images.push_back(file);
     if (spec.movie && !movie) movie = std::make_unique<MovieWriter>(folder, spec.prefix, spec.movieFps, image.width, image.height);
     if (movie && movie->open()) movie->add(image);

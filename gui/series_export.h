@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "core/transfer_function.h"
 #include "core/volume.h"
-#include "io/render_metadata.h"
+#include "io/render_sidecar.h"
+#include "vessel/centerline.h"
 
 namespace angio {
 
@@ -50,9 +50,12 @@ struct SeriesResult {
 };
 
 // Writes into `folder` (created if missing). `base` gives everything but the angle (its sampling
-// is the one rendered). Throws InputError/runtime_error (one line) on bad input or write errors.
-SeriesResult exportRotationSeries(const Volume& volume, const TransferFunction& tf,
-                                  const RenderDescription& base, const SeriesSpec& spec,
+// is the one rendered): plain DVR/MIP, VesselGlyph or the DVR+CPR hybrid (io/render_sidecar.h),
+// each view rendered as `angioray render --params` of its sidecar renders it; `centerlines`
+// (volume frame) are used iff base.vesselGlyph is set. Throws InputError/runtime_error (one
+// line) on bad input or write errors.
+SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& centerlines,
+                                  const RenderSidecar& base, const SeriesSpec& spec,
                                   const std::filesystem::path& folder, const SeriesCallbacks& callbacks);
 
 }  // namespace angio

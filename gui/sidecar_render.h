@@ -3,19 +3,28 @@
 // DVR/MIP, VesselGlyph focus+context (issue 5) or the DVR+CPR hybrid (issue 6 item 5) - export the
 // image with its metadata and write the sidecar beside it. The same function serves fresh renders
 // and `--params` re-renders, so a sidecar reproduces its image byte for byte.
+#include <atomic>
 #include <filesystem>
 
 #include "core/image.h"
+#include "core/slice_tiles.h"
 #include "core/volume.h"
 #include "io/render_sidecar.h"
 #include "vessel/centerline.h"
 
 namespace angio {
 
+// For renders of many views (a rotation series) and renders that may be stopped (GUI exports).
+struct SidecarRenderOptions {
+  const SliceTiles* tiles = nullptr;          // built for params.axis; null: built here
+  const std::atomic<bool>* cancel = nullptr;  // set: the fast raycaster stops within a row
+  bool* cancelled = nullptr;                  // set to whether it stopped (the image is then partial)
+};
+
 // The image of the sidecar's parameters; `centerlines` (volume frame) are needed iff
-// sidecar.vesselGlyph is set. Throws std::invalid_argument for a bad hybrid path selection.
+// sidecar.vesselGlyph is set. Throws InputError for a bad hybrid path selection.
 Image renderSidecarImage(const Volume& volume, const Centerlines& centerlines,
-                         const RenderSidecar& sidecar);
+                         const RenderSidecar& sidecar, const SidecarRenderOptions& options = {});
 
 // Loads the volume (and centerlines), renders, exports to `out` and writes sidecarPathFor(out)
 // with image = out. Returns the render time in seconds.

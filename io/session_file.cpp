@@ -22,6 +22,15 @@ namespace {
 constexpr const char* kFormat = "angioray-session";
 constexpr int kVersion = 1;
 
+constexpr const char* kColourings[] = {"cta-lumen", "calcium", "focus-tf"};
+constexpr double kMaxTransitionMm = 100;
+
+Json cprJson(const SessionCpr& cpr) {
+  return {{"shown", cpr.shown}, {"mode", toString(cpr.mode)}, {"path", cpr.path},
+          {"colouring", kColourings[int(cpr.colouring)]}, {"hybrid", cpr.hybrid},
+          {"transition_mm", cpr.transitionMm}};
+}
+
 Json samplingJson(const Sampling& sampling) {
   return {{"isd", sampling.isd}, {"osd", sampling.osd}, {"filter", toString(sampling.filter)},
           {"ert", sampling.ert}};
@@ -93,6 +102,27 @@ struct SessionReader {
     return sampling;
   }
 
+  SessionCpr cpr(const Json& c) const {
+    SessionCpr cpr;
+    cpr.shown = flag(c, "shown", cpr.shown);
+    if (c.contains("mode")) {
+      const auto mode = parseCprMode(text(c, "mode"));
+      if (!mode) fail("cpr mode is not projected, stretched or straightened");
+      cpr.mode = *mode;
+    }
+    if (c.contains("path") && !c["path"].is_number_integer()) fail("cpr path is not a path index or -1 (all)");
+    cpr.path = int(number(c, "path", -1, 1e6, cpr.path));
+    if (c.contains("colouring")) {
+      const std::string colouring = text(c, "colouring");
+      const auto known = std::find(std::begin(kColourings), std::end(kColourings), colouring);
+      if (known == std::end(kColourings)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
+      cpr.colouring = CprColouring(known - std::begin(kColourings));
+    }
+    cpr.hybrid = flag(c, "hybrid", cpr.hybrid);
+    cpr.transitionMm = number(c, "transition_mm", 0, kMaxTransitionMm, cpr.transitionMm);
+    return cpr;
+  }
+
   Session session(const Json& json) const {
     if (!json.is_object()) fail("a session is a JSON object");
     if (json.contains("format") && text(json, "format") != kFormat) fail("is not an angioray session");
@@ -114,6 +144,7 @@ struct SessionReader {
     const Json& levels = section(json, "levels");
     for (int q = 0; q < kQualityLevels; ++q)
       session.levels[q] = sampling(section(levels, toString(Quality(q))), session.levels[q]);
+    session.cpr = cpr(section(json, "cpr"));
     for (const auto& [name, open] : section(json, "panels").items()) {
       if (!open.is_boolean()) fail("panels " + name + " is not true or false");
       session.panelsOpen[name] = open.get<bool>();
@@ -155,6 +186,7 @@ std::string toJson(const Session& session) {
       {"mode", session.mode == Compositing::mip ? "mip" : "dvr"},
       {"shading", {{"enabled", session.shading.enabled}, {"ka", session.shading.ka}, {"kd", session.shading.kd}}},
       {"levels", levels},
+      {"cpr", cprJson(session.cpr)},
       {"panels", panels},
       {"recent_files", session.recentFiles},
   };

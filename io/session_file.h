@@ -1,7 +1,8 @@
 #pragma once
 // Session files: what the workstation needs to come back to where the user left it (dataset,
 // rotation axis and angle, zoom/pan, the full transfer function with its MIP window, shading,
-// the quality levels' sampling, which side-panel sections are open, recently opened files), as
+// the quality levels' sampling, the CPR view and DVR+CPR hybrid settings, which side-panel
+// sections are open, recently opened files), as
 // JSON. Written atomically; every problem reading one is an InputError, one line naming the file.
 // The window app writes the last session to lastSessionPath() when it quits.
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "core/progressive_renderer.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
+#include "vessel/cpr_layout.h"
 
 namespace angio {
 
@@ -29,6 +31,22 @@ struct SessionView {
   double spinDegreesPerSecond = 30;
 };
 
+// How the CPR section colours a CPR: grey through the CTA-lumen or calcium window
+// (vessel/cpr_display.h), or through the VesselGlyph focus TF.
+enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
+
+// The CPR section (issue 6 items 4-6): the view beside the image and the DVR+CPR hybrid in the
+// image share the path and the colouring. (The VesselGlyph settings the hybrid builds on -
+// centerlines, shapes, region TFs - are not kept in sessions.)
+struct SessionCpr {
+  bool shown = false;  // the CPR view beside the image
+  CprMode mode = CprMode::straightened;
+  int path = -1;       // centerline path index, -1 = all paths
+  CprColouring colouring = CprColouring::ctaLumen;
+  bool hybrid = false;       // the DVR+CPR hybrid (needs VesselGlyph on)
+  double transitionMm = 0;   // the hybrid's transition band, 0 = hard edge
+};
+
 struct Session {
   std::string dataset;  // file or folder; "phantom IxJxK" for the generated phantom
   SessionView view;
@@ -37,6 +55,7 @@ struct Session {
   Compositing mode = Compositing::dvr;
   Shading shading;
   LevelSamplings levels = defaultLevelSamplings();
+  SessionCpr cpr;
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 };

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <OpenImageIO/imagebuf.h>
 
+#include "tests/gui/phantom_folder_test.h"
 #include "tests/gui/run_angioray.h"
 
 namespace {
@@ -38,26 +39,9 @@ struct Box {
   }
 };
 
-class GuiVessel : public ::testing::Test {
+class GuiVessel : public angio::test_support::PhantomFolderTest {
  protected:
-  void SetUp() override {
-    // The process id too: another build's test run may run the same test at the same time.
-    dir = fs::temp_directory_path() /
-          ("angioray-gui-vessel-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-           "-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const auto run = runAngioray("phantom " + file("phantom.nrrd") + " --size 96x96x200 --centerlines " +
-                                 file("phantom.csv"));
-    ASSERT_EQ(run.exitCode, 0) << run.output;
-  }
-  void TearDown() override { fs::remove_all(dir); }
-
-  std::string file(const std::string& name) const { return (dir / name).string(); }
-  Json readJson(const std::string& name) const {
-    std::ifstream in(dir / name);
-    return Json::parse(in);
-  }
+  const char* folderPrefix() const override { return "gui-vessel"; }
 
   // The app on the phantom (plus `extra` options) until the high image shows; its state.
   Json startState(const std::string& extra) {
@@ -72,7 +56,6 @@ class GuiVessel : public ::testing::Test {
                        file("script.json"));
   }
 
-  fs::path dir;
 };
 
 bool isOverlayColour(const float* rgb) { return rgb[0] < 0.45f && rgb[1] > 0.7f && rgb[2] > 0.8f; }

@@ -17,22 +17,59 @@
 #include "core/fast_raycaster.h"
 #include "core/phantom.h"
 #include "core/slice_tiles.h"
+#include "core/view_geometry.h"
+#include "gui/sidecar_render.h"
 #include "io/input_error.h"
 #include "io/render_sidecar.h"
 #include "io/tf_file.h"
+#include "vessel/centerline.h"
+#include "vessel/cpr_hybrid.h"
+#include "vessel/cpr_layout.h"
+#include "vessel/cpr_resample.h"
+#include "vessel/vessel_glyph.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
 
-const Volume& smallPhantom() {
-  static const Volume volume = [] {
+const Phantom& smallPhantomWithPaths() {
+  static const Phantom phantom = [] {
     PhantomOptions options;
     options.dims = {32, 32, 64};
-    return generatePhantom(options).volume;
+    return generatePhantom(options);
   }();
-  return volume;
+  return phantom;
+}
+
+const Volume& smallPhantom() { return smallPhantomWithPaths().volume; }
+
+// The DVR+CPR hybrid of one view made the plain way (vessel/cpr_hybrid.h compositeHybrid of the
+// whole displayed CPR, not the in-place step the exports run): VesselGlyph DVR of all paths,
+// their projected CPR in the focus footprint.
+Image referenceHybrid(const Volume& volume, const Centerlines& centerlines, const RenderSidecar& s) {
+  const VesselGlyphRecipe& vg = *s.vesselGlyph;
+  const ViewGeometry view = makeViewGeometry(volume, s.params);
+  const RayRegions regions = buildRayRegions(volume, view, centerlines, vg.settings);
+  const TfTable focus = buildTable(vg.focusTf), context = buildTable(vg.contextTf);
+  const RegionTables tables{&regions, &focus, &context, nullptr};
+  const SliceTiles tiles = buildSliceTiles(volume, s.params.axis);
+  const Image dvr = renderFast(volume, tiles, classifyTiles(tiles, tables), tables, s.params);
+  const CprLayout layout = layoutCpr(centerlines.paths, view, {CprMode::projected});
+  CprDisplay display;
+  display.centerlineMarker = display.ruler = false;
+  display.windowLevel = *s.hybrid->grey;
+  const Image cpr = displayCpr(layout, resampleCpr(volume, layout), display);
+  return compositeHybrid(dvr, cpr, focusFootprint(regions), {s.hybrid->transitionMm, view.pixelMm});
+}
+
+std::vector<std::uint8_t> filePixels(const fs::path& file, int width, int height) {
+  OIIO::ImageBuf image(file.string());
+  EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::UINT8));
+  EXPECT_EQ(image.spec().width, width);
+  std::vector<std::uint8_t> pixels(std::size_t(width) * height * 3);
+  image.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, pixels.data());
+  return pixels;
 }
 
 class SeriesExport : public ::testing::Test {
@@ -43,7 +80,7 @@ class SeriesExport : public ::testing::Test {
     fs::remove_all(dir_);
     tf_ = loadPresetOrFile("cta-vessels-bone");
     base_.dataset = "phantom 32x32x64";
-    base_.transferFunction = tf_.name;
+    base_.tf = tf_;
     base_.quality = Quality::high;
     base_.params.axis = Axis::k;
     base_.params.sampling = {1.0, 1.0, Filter::trilinear, 0.98};
@@ -60,7 +97,7 @@ class SeriesExport : public ::testing::Test {
 
   fs::path dir_;
   TransferFunction tf_;
-  RenderDescription base_;
+  RenderSidecar base_;
 };
 
 TEST(SeriesAngles, FullTurnLeavesOutTheEndAndAnArcKeepsBothEnds) {
@@ -80,7 +117,7 @@ TEST_F(SeriesExport, WritesNumberedImagesWhoseSidecarsHoldTheirAngles) {
     EXPECT_EQ(total, 4);
     lastDone = done;
   };
-  const SeriesResult result = exportRotationSeries(smallPhantom(), tf_, base_, spec, dir_, callbacks);
+  const SeriesResult result = exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, callbacks);
   EXPECT_FALSE(result.cancelled);
   ASSERT_EQ(result.images.size(), 4u);
   EXPECT_EQ(filesWithExtension(".png").size(), 4u);
@@ -110,6 +147,32 @@ TEST_F(SeriesExport, WritesNumberedImagesWhoseSidecarsHoldTheirAngles) {
   }
 }
 
+TEST_F(SeriesExport, HybridSeriesHoldsTheHybridOfEachViewAndItsRecipe) {
+  const Centerlines centerlines = toVolumeFrame(centerlinesFromPhantom(smallPhantomWithPaths().paths), smallPhantom());
+  RenderSidecar base = base_;
+  base.vesselGlyph = VesselGlyphRecipe{"phantom.csv", {}, tf_, loadPresetOrFile("soft-tissue-context"), std::nullopt};
+  base.hybrid = HybridCprRecipe{"all", 2.0, kCtaLumenWindow};
+  SeriesSpec spec;
+  spec.count = 3;
+  const SeriesResult result = exportRotationSeries(smallPhantom(), centerlines, base, spec, dir_, {});
+  ASSERT_EQ(result.images.size(), 3u);
+  long differFromPlain = 0;
+  for (int n = 0; n < 3; ++n) {
+    const RenderSidecar sidecar = loadRenderSidecar(sidecarPathFor(result.images[n]));
+    ASSERT_TRUE(sidecar.hybrid.has_value()) << n;
+    EXPECT_DOUBLE_EQ(sidecar.hybrid->transitionMm, 2.0);
+    ASSERT_TRUE(sidecar.hybrid->grey.has_value());
+    EXPECT_DOUBLE_EQ(sidecar.params.angleDeg, n * 120.0);
+    const Image expected = referenceHybrid(smallPhantom(), centerlines, sidecar);
+    EXPECT_EQ(filePixels(result.images[n], expected.width, expected.height), toRgb8(expected)) << n;
+    RenderSidecar plain = sidecar;
+    plain.hybrid.reset();
+    const std::vector<std::uint8_t> vesselGlyph = toRgb8(renderSidecarImage(smallPhantom(), centerlines, plain));
+    differFromPlain += vesselGlyph != toRgb8(expected);
+  }
+  EXPECT_EQ(differFromPlain, 3);  // every view shows the CPR somewhere
+}
+
 TEST_F(SeriesExport, CancelStopsTheSeries) {
   SeriesSpec spec;
   spec.count = 10;
@@ -119,7 +182,7 @@ TEST_F(SeriesExport, CancelStopsTheSeries) {
   callbacks.progress = [&](int done, int) {
     if (done == 2) cancel.store(true);
   };
-  const SeriesResult result = exportRotationSeries(smallPhantom(), tf_, base_, spec, dir_, callbacks);
+  const SeriesResult result = exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, callbacks);
   EXPECT_TRUE(result.cancelled);
   EXPECT_EQ(result.images.size(), 2u);
   EXPECT_EQ(filesWithExtension(".png").size(), 2u);
@@ -131,7 +194,7 @@ TEST_F(SeriesExport, MovieHoldsEveryView) {
   spec.count = 6;
   spec.format = "tif";
   spec.movie = true;
-  const SeriesResult result = exportRotationSeries(smallPhantom(), tf_, base_, spec, dir_, {});
+  const SeriesResult result = exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, {});
   EXPECT_EQ(filesWithExtension(".tif").size(), 6u);
   if (result.movie.empty()) GTEST_SKIP() << result.movieNote;
   ASSERT_TRUE(fs::exists(result.movie));
@@ -147,14 +210,14 @@ TEST_F(SeriesExport, BadSpecIsAnInputErrorNamingTheFolder) {
   SeriesSpec spec;
   spec.count = 0;
   try {
-    exportRotationSeries(smallPhantom(), tf_, base_, spec, dir_, {});
+    exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, {});
     ADD_FAILURE() << "accepted 0 views";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find(dir_.string()), std::string::npos) << error.what();
   }
   spec.count = 3;
   spec.format = "gif";
-  EXPECT_THROW(exportRotationSeries(smallPhantom(), tf_, base_, spec, dir_, {}), InputError);
+  EXPECT_THROW(exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, {}), InputError);
 }
 
 }  // namespace

@@ -71,6 +71,7 @@ Session unusualSession() {
   s.shading = {false, 0.45, 0.55};
   s.levels[0] = {2.0, 1.5, Filter::nearest, 0.9};
   s.levels[2] = {0.25, 0.125, Filter::mean, 1.0};
+  s.cpr = {true, CprMode::projected, 1, CprColouring::focusTf, true, 3.5};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
   return s;
@@ -109,6 +110,12 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
     EXPECT_EQ(loaded.levels[q].filter, saved.levels[q].filter) << q;
     EXPECT_DOUBLE_EQ(loaded.levels[q].ert, saved.levels[q].ert) << q;
   }
+  EXPECT_TRUE(loaded.cpr.shown);
+  EXPECT_EQ(loaded.cpr.mode, CprMode::projected);
+  EXPECT_EQ(loaded.cpr.path, 1);
+  EXPECT_EQ(loaded.cpr.colouring, CprColouring::focusTf);
+  EXPECT_TRUE(loaded.cpr.hybrid);
+  EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
   EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
   // Atomic write: nothing but the session in its folder.
@@ -123,6 +130,8 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
   EXPECT_EQ(loaded.view.axis, defaults.view.axis);
   EXPECT_DOUBLE_EQ(loaded.view.zoom, defaults.view.zoom);
   EXPECT_DOUBLE_EQ(loaded.levels[2].isd, defaults.levels[2].isd);
+  EXPECT_FALSE(loaded.cpr.hybrid);
+  EXPECT_EQ(loaded.cpr.path, -1);
 }
 
 TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
@@ -135,6 +144,12 @@ TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
   expectRejected(R"({"mode": "xray"})", "mode");
   expectRejected(R"({"levels": {"high": {"filter": "cubic"}}})", "filter");
   expectRejected(R"({"panels": {"Data": 1}})", "panels Data");
+  expectRejected(R"({"cpr": {"colouring": "purple"}})", "cpr colouring");
+  expectRejected(R"({"cpr": {"mode": "curved"}})", "cpr mode");
+  expectRejected(R"({"cpr": {"path": 1.5}})", "cpr path");
+  expectRejected(R"({"cpr": {"path": -2}})", "path");
+  expectRejected(R"({"cpr": {"transition_mm": -1}})", "transition_mm");
+  expectRejected(R"({"cpr": {"hybrid": "yes"}})", "hybrid is not true or false");
   expectRejected(R"({"transfer_function": {"name": "t", "points": [{"hu": 0}]}})", "point 1");
 }
 
