@@ -2,9 +2,11 @@
 // The accelerated raycaster: the reference's samples, minus those provably transparent.
 // Empty-space skipping by slice tiles and tile groups (core/slice_tiles.h) walked through per-view
 // ray templates (core/ray_templates.h), each row group by group in front-to-back order so a
-// group's voxels are read from the cache by all rays through it; cell transparency and the cell's
-// gradients cached per ray (core/ray_samplers.h); early ray termination; rows in parallel (oneTBB,
-// dynamic balance).
+// group's voxels are read from the cache by all rays through it; row bundles: consecutive rows
+// that read the same voxels (same cell or nearest voxel along the rotation axis) walk each column
+// together, so a cell's corners, transparency and gradients serve all of them (at the high level
+// about 2.5 rows share a slice pair: 2x); cell transparency and the cell's gradients cached per ray
+// (core/ray_samplers.h); early ray termination; bundles in parallel (oneTBB, dynamic balance).
 // Every evaluated sample uses the reference's arithmetic (core/compositing.h), so the image is the
 // reference's, bit for bit, for every filter, mode, axis and angle.
 #include <atomic>
