@@ -323,7 +323,7 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
 template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   BundleRay<Sampler> b{RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
-                       Sampler(f.volume, f.rayStepQ, f.view.axis), {}, bundle.lanes};
+                       Sampler(f.volume, f.rayStepQ, f.view.axis, f.skipCells), {}, bundle.lanes};
   for (int l = 0; l < bundle.lanes; ++l)
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
   return b;

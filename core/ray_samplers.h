@@ -38,7 +38,7 @@ enum class VoxelFilter { nearest, mean };
 template <VoxelFilter Filter>
 class VoxelRaySampler {
  public:
-  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int) : volume_(volume) {}
+  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int, bool) : volume_(volume) {}
 
   void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
@@ -60,18 +60,28 @@ using MeanRaySampler = VoxelRaySampler<VoxelFilter::mean>;
 
 class TrilinearRaySampler {
  public:
-  // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a.
-  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis)
-      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)), axis_(axis) {
+  // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a
+  // (step[axis] = 0); `cellRanges`: keep each cell's density range (for mayBeVisible, maxDensity).
+  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis, bool cellRanges)
+      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)), axis_(axis),
+        cellRanges_(cellRanges) {
     for (int axis = 0; axis < 3; ++axis) {
       forward_[axis] = step[axis] > 0;
       inverseStep_[axis] = step[axis] != 0 ? 1.0 / std::abs(step[axis]) : 0.0;
     }
   }
 
+  // The ray does not move along a, so the cell's base and fraction along a are those of the
+  // first sample; only the two in-plane axes are computed per sample (the same values cellAt
+  // gives).
   void moveTo(const glm::dvec3& q) {
     q_ = q;
-    cell_ = cellAt(volume_, q);
+    if (!axisSet_) {
+      cellAlong(volume_, q[axis_], axis_, cell_);
+      axisSet_ = true;
+    }
+    cellAlong(volume_, q[(axis_ + 1) % 3], (axis_ + 1) % 3, cell_);
+    cellAlong(volume_, q[(axis_ + 2) % 3], (axis_ + 2) % 3, cell_);
     densityPlanesReady_ = gradientPlanesReady_ = false;
     if (cell_.base != cached_) load();
   }
@@ -136,17 +146,14 @@ class TrilinearRaySampler {
     cached_ = cell_.base;
     gradientsLoaded_ = false;
     const Voxel* base = volume_.voxels.data() + volume_.indexOf(cached_.x, cached_.y, cached_.z);
-    int lo = 4095, hi = 0;
     for (int dz = 0; dz < 2; ++dz)
       for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) {
-          const int d = densityOf(base[dx * steps_.x + dy * steps_.y + dz * steps_.z]);
-          corners_[corner(dx, dy, dz)] = float(d);
-          lo = std::min(lo, d);
-          hi = std::max(hi, d);
-        }
-    lo_ = lo;
-    hi_ = hi;
+        for (int dx = 0; dx < 2; ++dx)
+          corners_[corner(dx, dy, dz)] = float(densityOf(base[dx * steps_.x + dy * steps_.y + dz * steps_.z]));
+    if (!cellRanges_) return;
+    const auto [lo, hi] = std::minmax_element(corners_.begin(), corners_.end());
+    lo_ = int(*lo);
+    hi_ = int(*hi);
   }
 
   // As trilinearGradient computes each corner's central differences (volume_sampling.h). Inside
@@ -187,6 +194,8 @@ class TrilinearRaySampler {
   const glm::ivec3 steps_;
   const Box interior_;
   const int axis_;
+  const bool cellRanges_;
+  bool axisSet_ = false;
   glm::dvec3 inverseStep_{0.0};  // 1 / |step| per axis, 0 where the ray does not move along it
   glm::bvec3 forward_{false};
   Cell cell_;

@@ -71,14 +71,17 @@ struct Cell {
   glm::vec3 frac{0.f};
 };
 
+// One axis of cellAt: the base and fraction along `axis` for the coordinate q along it.
+inline void cellAlong(const Volume& volume, double q, int axis, Cell& cell) {
+  const int lastBase = std::max(volume.dims[axis] - 2, 0);
+  const double clamped = std::clamp(q, 0.0, double(volume.dims[axis] - 1));
+  cell.base[axis] = std::min(int(std::floor(clamped)), lastBase);
+  cell.frac[axis] = float(clamped - cell.base[axis]);
+}
+
 inline Cell cellAt(const Volume& volume, glm::dvec3 q) {
   Cell cell;
-  for (int axis = 0; axis < 3; ++axis) {
-    const int lastBase = std::max(volume.dims[axis] - 2, 0);
-    const double clamped = std::clamp(q[axis], 0.0, double(volume.dims[axis] - 1));
-    cell.base[axis] = std::min(int(std::floor(clamped)), lastBase);
-    cell.frac[axis] = float(clamped - cell.base[axis]);
-  }
+  for (int axis = 0; axis < 3; ++axis) cellAlong(volume, q[axis], axis, cell);
   return cell;
 }
 
