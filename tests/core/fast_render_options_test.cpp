@@ -2,6 +2,8 @@
 // the skipping switches the bench turns off one at a time.
 #include <atomic>
 
+#include <tbb/global_control.h>
+
 #include <gtest/gtest.h>
 
 #include "core/fast_raycaster.h"
@@ -95,6 +97,21 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
         EXPECT_TRUE(renderFast(scene.volume, tiles, visible, scene.table, p, separate).pixels == bundled.pixels)
             << toString(axis) << " " << toString(quality) << (mode == Compositing::mip ? " mip" : " dvr");
       }
+  }
+}
+
+// Rows and bundles are split among threads as oneTBB likes; each pixel must not care.
+TEST(FastRenderOptions, SameBytesWhateverTheThreadCount) {
+  const Scene scene;
+  for (Quality quality : {Quality::fast, Quality::medium, Quality::high}) {
+    Image oneThread;
+    {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+      oneThread = scene.render(quality, 200);
+    }
+    ASSERT_TRUE(showsSomething(oneThread));
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 4);
+    EXPECT_TRUE(scene.render(quality, 200).pixels == oneThread.pixels) << toString(quality);
   }
 }
 
