@@ -16,12 +16,44 @@ namespace angio {
 
 namespace {
 
-constexpr int kBackgroundNice = 10;
+// Below the process's own priority (nice steps; relative, so under `nice -n -10` the gaps stay).
+constexpr int kFastNiceSteps = 5;
+constexpr int kBackgroundNiceSteps = 10;
 
-// Lowers the calling thread's priority (Linux: nice is per thread). Raising it back would need
-// privileges, so threads stay lowered; in the GUI process every oneTBB thread is background work.
-void lowerThisThreadsPriority() {
-  setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), kBackgroundNice);
+id_t thisThread() { return id_t(syscall(SYS_gettid)); }
+
+// Thread priorities (Linux: nice is per thread), measured with bench/input_latency.sh.
+// The fast level is what a user moving the mouse waits for. Below the UI thread, so that the UI's
+// own drawing (software GL rasterises on threads of the UI's priority) finishes first when both
+// want the cores - at the UI's priority both took 2-3x longer and input -> screen doubled - but
+// only a little: at an absolute nice 10 (20 steps below a `nice -n -10` UI) it waited behind the
+// UI and everything else on a loaded machine, 0.1-1 s from input to screen.
+// The levels above fast are background work, lower still - but only where a thread can be raised
+// back (RLIMIT_NICE or CAP_SYS_NICE): oneTBB threads move between the two arenas, and a thread left
+// lowered would render the next fast level at background priority. Without that right both
+// levels render at the fast level's priority; a high render still yields to input, which cancels
+// it within a row.
+struct ThreadPriorities {
+  int fast = 0, background = 0;
+
+  static ThreadPriorities probe() {
+    const int process = getpriority(PRIO_PROCESS, thisThread());
+    ThreadPriorities p;
+    p.fast = p.background = std::min(process + kFastNiceSteps, 19);
+    const int lowered = std::min(process + kBackgroundNiceSteps, 19);
+    bool restorable = false;
+    std::thread([&] {  // a throw-away thread: lowering it is harmless if raising fails
+      restorable = setpriority(PRIO_PROCESS, thisThread(), lowered) == 0 &&
+                   setpriority(PRIO_PROCESS, thisThread(), p.fast) == 0;
+    }).join();
+    if (restorable) p.background = lowered;
+    return p;
+  }
+};
+
+const ThreadPriorities& priorities() {
+  static const ThreadPriorities instance = ThreadPriorities::probe();
+  return instance;
 }
 
 using Ms = std::chrono::duration<double, std::milli>;
@@ -49,21 +81,27 @@ bool sameLevels(const LevelSamplings& a, const LevelSamplings& b) {
   return true;
 }
 
-// The oneTBB arena all progressive renders run in: every thread entering it is lowered.
-struct BackgroundArena {
+// A oneTBB arena whose threads (oneTBB's and the progressive worker) run at `nice` while in it.
+struct PriorityArena {
   struct Observer : tbb::task_scheduler_observer {
-    explicit Observer(tbb::task_arena& arena) : tbb::task_scheduler_observer(arena) { observe(true); }
-    void on_scheduler_entry(bool) override { lowerThisThreadsPriority(); }
+    Observer(tbb::task_arena& arena, int nice) : tbb::task_scheduler_observer(arena), nice(nice) { observe(true); }
+    void on_scheduler_entry(bool) override {
+      if (getpriority(PRIO_PROCESS, thisThread()) != nice) setpriority(PRIO_PROCESS, thisThread(), nice);
+    }
+    int nice;
   };
+  explicit PriorityArena(int nice) : observer(arena, nice) {}
   tbb::task_arena arena;
-  Observer observer{arena};
+  Observer observer;
 };
 
-// One for the process, never destroyed: oneTBB threads keep references to the observer until
-// they exit, which is at process exit.
-tbb::task_arena& backgroundArena() {
-  static BackgroundArena* const instance = new BackgroundArena;
-  return instance->arena;
+// Where a level renders: fast just below the UI, the others in the background. One pair
+// for the process, never destroyed: oneTBB threads keep references to the observers until they
+// exit, which is at process exit.
+tbb::task_arena& arenaFor(Quality level) {
+  static PriorityArena* const foreground = new PriorityArena(priorities().fast);
+  static PriorityArena* const background = new PriorityArena(priorities().background);
+  return (level == Quality::fast ? foreground : background)->arena;
 }
 
 int lastLevel(const ProgressiveRequest& request) {
@@ -145,7 +183,8 @@ std::uint64_t ProgressiveRenderer::request(ProgressiveRequest request) {
       cancelRequestedAt_ = Clock::now();
       cancel_.store(true);
     }
-    pending_ = Job{id, std::move(request)};
+    pending_ = Job{id, std::move(request), {}};
+    pending_->timeline.requested = Clock::now();
     status_.request = id;
     status_.busy = true;
     status_.levels = {};
@@ -194,15 +233,18 @@ bool ProgressiveRenderer::waitForLevel(std::uint64_t id, Quality level,
 }
 
 void ProgressiveRenderer::workerLoop() {
-  lowerThisThreadsPriority();
+  priorities();  // probed before the first request, not on its time
   for (;;) {
     Job job;
+    const Clock::time_point free = Clock::now();
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return quit_ || pending_; });
       if (quit_) return;
       job = std::move(*pending_);
       pending_.reset();
+      job.timeline.workerFree = free;
+      job.timeline.pickedUp = Clock::now();
       current_ = job;
       // Cleared under the lock that request() sets it under: a cancel meant for the previous
       // job cannot leak into this one, and one meant for this job cannot be lost.
@@ -260,6 +302,7 @@ int ProgressiveRenderer::firstLevelToRender(const Job& job) {
   if (!same) return 0;
   auto relabelled = std::make_shared<ProgressiveFrame>(*latest_);
   relabelled->request = job.id;
+  relabelled->timeline = job.timeline;  // not rendered for this request: no render times
   latest_ = relabelled;
   if (status_.request == job.id)
     status_.levels[shown] = {true, relabelled->renderMs, relabelled->samples};
@@ -276,8 +319,9 @@ bool ProgressiveRenderer::beginLevel(Quality level) {
   return true;
 }
 
-void ProgressiveRenderer::publish(const Job& job, Quality level, Image image, double ms,
-                                  std::uint64_t samples) {
+void ProgressiveRenderer::publish(const Job& job, Quality level, Image image,
+                                  const RequestTimeline& timeline, std::uint64_t samples) {
+  const double ms = Ms(timeline.renderEnd - timeline.renderStart).count();
   auto frame = std::make_shared<ProgressiveFrame>();
   frame->request = job.id;
   frame->level = level;
@@ -290,6 +334,7 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image, do
   frame->image = images_->share(std::move(image));
   frame->renderMs = ms;
   frame->samples = samples;
+  frame->timeline = timeline;
   {
     std::lock_guard lock(mutex_);
     frame->serial = ++nextSerial_;
@@ -297,6 +342,7 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image, do
   if (callbacks_.beforePublish) callbacks_.beforePublish(*frame);
   {
     std::lock_guard lock(mutex_);
+    frame->timeline.published = Clock::now();
     latest_ = frame;
     lastLevelMs_[int(level)] = ms;
     status_.rendering.reset();
@@ -335,25 +381,27 @@ Image ProgressiveRenderer::renderLevel(const Job& job, const RenderParams& param
 }
 
 void ProgressiveRenderer::runJob(const Job& job) {
-  backgroundArena().execute([&] { prepare(job); });
+  arenaFor(Quality::fast).execute([&] { prepare(job); });
   for (int q = firstLevelToRender(job); q <= lastLevel(job.request); ++q) {
     const Quality level = Quality(q);
     if (!beginLevel(level)) return;
     RenderParams params = job.request.params;
     params.sampling = job.request.levels[q];
     FastRenderStats stats;
-    const auto start = Clock::now();
+    RequestTimeline timeline = job.timeline;
+    timeline.renderStart = Clock::now();
     Image image;
-    backgroundArena().execute([&] { image = renderLevel(job, params, stats); });
-    const double ms = Ms(Clock::now() - start).count();
+    arenaFor(level).execute([&] { image = renderLevel(job, params, stats); });
+    timeline.renderEnd = Clock::now();
     if (stats.cancelled) {
       images_->giveBack(std::move(image));
       std::lock_guard lock(mutex_);
-      status_.lastInterruptMs = Ms(Clock::now() - cancelRequestedAt_).count();
+      status_.lastInterruptMs = Ms(timeline.renderEnd - cancelRequestedAt_).count();
       status_.rendering.reset();
+      if (pending_) pending_->timeline.cancelSeen = timeline.renderEnd;
       return;
     }
-    publish(job, level, std::move(image), ms, stats.samples);
+    publish(job, level, std::move(image), timeline, stats.samples);
   }
 }
 

@@ -5,9 +5,11 @@
 // cancel flag (checked before each image row, so the render returns within one row's time) and
 // the worker starts over at fast. Interactive requests (dragging, spinning) render only fast.
 //
-// Rendering is background work: the worker and the oneTBB threads rendering for it run at a lower
-// scheduling priority (nice +10), so the UI thread gets a core when it needs one even while both
-// cores render.
+// Priorities: the fast level is what a hand on the mouse waits for; its threads run 5 nice steps
+// below the process (the UI's own drawing, the last step to the screen, goes first, but the render
+// is not starved by other work on the machine). The levels above it are background work: 10 steps
+// below, where the OS lets a thread be raised back for the next fast level, else at fast's
+// priority (progressive_renderer.cpp). The UI thread gets a core when it needs one.
 //
 // Hand-off: the UI thread polls latestFrame() (a shared pointer swapped under a mutex) and never
 // waits for the worker. waitForLevel() is for tests and scripts only.
@@ -78,6 +80,19 @@ struct Rgb8Image {
 // starting with the first half: the mipmap levels above level 0 of a texture.
 std::vector<Rgb8Image> halvedLevels(const std::vector<std::uint8_t>& rgb8, int width, int height);
 
+// When a frame's request passed each step of the hand-off (steady clock; a default time point:
+// did not happen). Cheap (a few clock reads per level): always recorded, for the latency
+// breakdown the UI reports (gui/latency_trace.h).
+struct RequestTimeline {
+  using TimePoint = std::chrono::steady_clock::time_point;
+  TimePoint requested;   // request() returned the id
+  TimePoint workerFree;  // the worker was ready for it: done with (or cancelled) what it ran
+  TimePoint pickedUp;    // the worker took it
+  TimePoint cancelSeen;  // the render this request interrupted returned (none interrupted: unset)
+  TimePoint renderStart, renderEnd;  // this frame's level, in renderFast (with regions, finish)
+  TimePoint published;   // 8-bit image and mipmaps made, latestFrame() returns the frame
+};
+
 // One finished level of one request.
 struct ProgressiveFrame {
   std::uint64_t request = 0;  // the id request() returned
@@ -91,6 +106,7 @@ struct ProgressiveFrame {
   std::vector<Rgb8Image> mipmaps;      // halvedLevels(rgb8): made here, off the UI thread
   double renderMs = 0;
   std::uint64_t samples = 0;
+  RequestTimeline timeline;  // a re-labelled frame's: its request's up to pickedUp, no render
 };
 
 struct LevelTiming {
@@ -152,6 +168,7 @@ class ProgressiveRenderer {
   struct Job {
     std::uint64_t id = 0;
     ProgressiveRequest request;
+    RequestTimeline timeline;  // up to pickedUp
   };
 
   void workerLoop();
@@ -159,7 +176,8 @@ class ProgressiveRenderer {
   void prepare(const Job& job);
   int firstLevelToRender(const Job& job);
   bool beginLevel(Quality level);
-  void publish(const Job& job, Quality level, Image image, double ms, std::uint64_t samples);
+  void publish(const Job& job, Quality level, Image image, const RequestTimeline& timeline,
+               std::uint64_t samples);
   bool isInProgress(const ProgressiveRequest& request) const;
   bool runningLevelStaysUseful(const ProgressiveRequest& request) const;
   Image renderLevel(const Job& job, const RenderParams& params, FastRenderStats& stats);

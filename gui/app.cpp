@@ -68,11 +68,14 @@ App::App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<v
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
   ImGui::StyleColorsDark();
   startSession();
-  if (!state_.centerlinesFile.empty()) {
+  if (!state_.centerlinesFile.empty()) {  // `gui --centerlines` rather than a session's file
     vessel_.path = state_.centerlinesFile;
-    loadVesselCenterlines(vessel_.path);
+    state_.vesselGlyph.centerlines = state_.vesselGlyph.centerlinesAbsolute = "";
+    loadVesselCenterlines({vessel_.path, "", CenterlineLoad::From::panel});
+  } else {
+    loadSessionCenterlines();
   }
-  if (state_.cpr.hybrid) vessel_.enabled = true;  // a session's hybrid: VesselGlyph's focus is the cut
+  if (state_.cpr.hybrid) state_.vesselGlyph.enabled = true;  // a session's hybrid: VesselGlyph's focus is the cut
 }
 
 App::~App() {
@@ -86,6 +89,7 @@ void App::noteRect(const std::string& name) {
 }
 
 void App::frame(double previousFrameMs) {
+  frameStart_ = Clock::now();
   if (previousFrameMs > 0) {
     lastFrameMs_ = previousFrameMs;
     frameTimes_.all.add(previousFrameMs);
@@ -116,6 +120,8 @@ void App::frame(double previousFrameMs) {
   requestRender(interacting);
 }
 
+void App::framePresented() { latency_.presented(Clock::now()); }
+
 void App::pollHistogram() {
   if (!histogramJob_.valid() ||
       histogramJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
@@ -135,10 +141,12 @@ void App::pollRenderer() {
   if (frame && frame != shown_ && frame != incoming_) {
     if (shown_ && frame->serial == shown_->serial && !incoming_) {
       shown_ = frame;
+      latency_.shown(*frame, Clock::now());
     } else if (incoming_ && frame->serial == incoming_->serial) {
       incoming_ = frame;
     } else {
       incoming_ = frame;
+      latency_.seen(*frame, Clock::now());
       texture_.begin(frame);
     }
   }
@@ -150,6 +158,7 @@ void App::pollRenderer() {
   if (!complete) return;
   shown_ = std::move(incoming_);
   incoming_.reset();
+  latency_.shown(*shown_, Clock::now());
   // Input -> first image of the request that input made (whatever its level).
   const auto asked = std::find_if(requestTimes_.begin(), requestTimes_.end(),
                                   [&](const auto& entry) { return entry.first == shown_->request; });
@@ -175,6 +184,7 @@ void App::requestRender(bool interactive) {
   request.levels = state_.levels;
   if (lastRequest_ && sameRequest(*lastRequest_, request)) return;
   lastRequestId_ = renderer_->request(request);
+  latency_.requested(lastRequestId_, frameStart_);
   lastRequest_ = request;
   requestTimes_.emplace_back(lastRequestId_, Clock::now());
   if (requestTimes_.size() > kRememberedRequests) requestTimes_.pop_front();
@@ -289,6 +299,7 @@ nlohmann::json App::report() const {
         {"startup_to_first_image_ms", startupImageMs_},
         {"input_to_first_image_ms", {{"last", lastFirstImageMs_}, {"count", firstImage_.frames},
                                      {"mean", firstImage_.meanMs()}, {"max", firstImage_.maxMs}}},
+        {"latency", latency_.report()},
         {"texture_upload_ms", {{"last", lastUploadMs_}, {"max", maxUploadMs_}}},
         {"ui_frame_ms", {{"all", statsJson(frameTimes_.all)}, {"while_high", statsJson(frameTimes_.whileHigh)}}},
         {"orientation", {{"right", std::string(1, letters.right)}, {"left", std::string(1, letters.left)},

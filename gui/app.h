@@ -22,6 +22,7 @@
 #include "gui/app_gl.h"
 #include "gui/background_job.h"
 #include "gui/file_browser.h"
+#include "gui/latency_trace.h"
 #include "gui/series_export.h"
 #include "gui/app_state.h"
 #include "gui/app_cpr.h"
@@ -71,6 +72,8 @@ class App {
   // One UI frame: ImGui::NewFrame() .. ImGui::Render(). `previousFrameMs` is how long the platform
   // took for the previous frame in all (app, ImGui rendering, buffer swap).
   void frame(double previousFrameMs);
+  // The platform presented the frame (after the buffer swap; headless: after glFinish).
+  void framePresented();
 
   // True once the newest request's frame at `level` (or better) is on screen, or the renderer has
   // finished that request without reaching it (interactive requests stop at fast).
@@ -119,7 +122,10 @@ class App {
   void drawVesselSection();
   void drawTfTargetSelector();
   void drawCenterlineOverlay();
-  void loadVesselCenterlines(const std::string& path);
+  void loadVesselCenterlines(const CenterlineLoad& request);  // in the background
+  void loadSessionCenterlines();  // state_.vesselGlyph's file (none: the loaded ones go)
+  void pollCenterlineLoad();
+  void dropCenterlines();
   const Centerlines* framedCenterlines();
   void ensureVesselTfs();
   std::shared_ptr<const RegionSource> vesselRegions();
@@ -165,6 +171,8 @@ class App {
   // Request -> its first image on screen: the start-up request (slice tiles built first) apart.
   double startupImageMs_ = -1, lastFirstImageMs_ = -1, lastUploadMs_ = 0, maxUploadMs_ = 0;
   FrameTimes::Stats firstImage_;
+  LatencyTrace latency_;          // input -> image on screen, stage by stage
+  Clock::time_point frameStart_;  // this UI frame's: the platform applied its input just before
   FrameTimes frameTimes_;
   double lastFrameMs_ = 0;
   ProgressiveStatus status_;  // this frame's snapshot

@@ -135,7 +135,7 @@ void App::updateCpr() {
   std::snprintf(view, sizeof view, "%s %.17g %d %d %d", toString(state_.view.axis), state_.view.angleDeg,
                 int(state_.cpr.mode), state_.cpr.path, int(state_.cpr.colouring));
   const std::string key = vessel_.framedFor + " " + vessel_.file + " " + view +
-                          (state_.cpr.colouring == CprColouring::focusTf ? toJson(vessel_.focusTf) : "");
+                          (state_.cpr.colouring == CprColouring::focusTf ? toJson(state_.vesselGlyph.focusTf) : "");
   if (key == panel.madeFor) return;
   if (panel.cpr && (ImGui::IsAnyItemActive() || state_.view.autoSpin)) return;
   panel.madeFor = key;
@@ -148,7 +148,7 @@ void App::updateCpr() {
     Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{state_.cpr.mode, {}});
     CprDisplay display;
     if (state_.cpr.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
-    if (state_.cpr.colouring == CprColouring::focusTf) display.tf = vessel_.focusTf;
+    if (state_.cpr.colouring == CprColouring::focusTf) display.tf = state_.vesselGlyph.focusTf;
     panel.frame = textureFrameOf(displayCpr(cpr.layout, cpr.hu, display));
     panel.texture.begin(panel.frame);
     while (!panel.texture.step(std::size_t(64) << 20)) {

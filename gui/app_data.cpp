@@ -51,7 +51,7 @@ void App::openDataset(const std::string& path) {
   message_ = "loading " + loadPath_;
 }
 
-bool App::backgroundBusy() const { return load_.running() || seriesJob_.running(); }
+bool App::backgroundBusy() const { return load_.running() || seriesJob_.running() || vessel_.load.running(); }
 
 void App::pollBackgroundJobs() {
   if (load_.ready()) {
@@ -69,6 +69,7 @@ void App::pollBackgroundJobs() {
       message_.clear();
     }
   }
+  pollCenterlineLoad();  // after the dataset: centerlines are checked against the one shown
   if (seriesJob_.ready()) {
     try {
       const SeriesResult result = seriesJob_.take();
@@ -93,6 +94,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   incoming_.reset();
   lastRequest_.reset();
   requestTimes_.clear();
+  latency_.restart();
   data_ = std::move(dataset);
   state_.dataset = data_.name;
   state_.view.zoom = 1;

@@ -25,7 +25,7 @@ constexpr const char* kColouringNames[] = {"cta-lumen", "calcium", "focus-tf"};
 void App::drawHybridControls() {
   SessionCpr& cpr = state_.cpr;
   ImGui::Separator();
-  if (ImGui::Checkbox("DVR+CPR hybrid", &cpr.hybrid) && cpr.hybrid) vessel_.enabled = true;
+  if (ImGui::Checkbox("DVR+CPR hybrid", &cpr.hybrid) && cpr.hybrid) state_.vesselGlyph.enabled = true;
   noteRect("cpr_hybrid");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The projected CPR of the path above, coloured as above, in the VesselGlyph "
@@ -37,7 +37,7 @@ void App::drawHybridControls() {
   ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm");
   noteRect("cpr_transition");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Width of the band over which the CPR fades into the DVR (0: hard edge)");
-  if (!vessel_.enabled)
+  if (!state_.vesselGlyph.enabled)
     ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "the hybrid needs VesselGlyph on (its focus is the cut)");
   if (!vessel_.hybridProblem.empty())
     ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", vessel_.hybridProblem.c_str());

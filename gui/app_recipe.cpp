@@ -15,10 +15,10 @@ std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe() const {
   VesselGlyphRecipe recipe;
   std::error_code error;
   recipe.centerlines = std::filesystem::absolute(vg.file, error).lexically_normal().string();
-  recipe.settings = vg.settings;
-  recipe.focusTf = vg.focusTf;
-  recipe.contextTf = vg.contextTf;
-  if (vg.outsideRendered) recipe.outsideTf = state_.tf;  // what vesselRegions renders it with
+  recipe.settings = state_.vesselGlyph.settings;
+  recipe.focusTf = state_.vesselGlyph.focusTf;
+  recipe.contextTf = state_.vesselGlyph.contextTf;
+  if (state_.vesselGlyph.outsideRendered) recipe.outsideTf = state_.tf;  // what vesselRegions renders it with
   return recipe;
 }
 

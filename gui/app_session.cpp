@@ -35,9 +35,10 @@ Session App::session() const {
 }
 
 void App::applySession(const Session& session) {
-  tfHistory_.push(state_.tf);
+  tfHistory_.push(editedTf());
   applySessionState(state_, session);  // the dataset changes when its load succeeds
-  if (state_.cpr.hybrid) vessel_.enabled = true;  // the hybrid is VesselGlyph's (its focus is the cut)
+  loadSessionCenterlines();            // checked against the session's dataset once that is there
+  if (state_.cpr.hybrid) state_.vesselGlyph.enabled = true;  // the hybrid is VesselGlyph's (its focus is the cut)
   panelsToApply_ = session.panelsOpen;
   if (session.dataset == data_.name || session.dataset.empty()) return;
   if (isPhantomName(session.dataset))

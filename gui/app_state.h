@@ -19,7 +19,8 @@ namespace angio {
 using ViewState = SessionView;
 
 // What a session keeps (dataset, view, TF with its MIP window, tfPreset, mode, shading, levels,
-// cpr (the CPR view's and the DVR+CPR hybrid's settings), panelsOpen, recentFiles:
+// cpr (the CPR view's and the DVR+CPR hybrid's settings), vesselGlyph (the VesselGlyph panel's
+// settings and TFs, its centerline file), panelsOpen, recentFiles:
 // io/session_file.h), and what only this run needs.
 struct AppState : Session {
   std::string centerlinesFile;  // centerlines to load at start (`gui --centerlines`), if any

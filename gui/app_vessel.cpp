@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -15,6 +16,8 @@
 #include "vessel/vessel_glyph_spec.h"
 
 namespace angio {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -86,27 +89,78 @@ bool sameGlyphSettings(const VesselGlyphSettings& a, const VesselGlyphSettings& 
          a.simplifyToleranceMm == b.simplifyToleranceMm;
 }
 
-void App::loadVesselCenterlines(const std::string& path) {
+// Reads the file off the UI thread; pollCenterlineLoad takes the result.
+void App::loadVesselCenterlines(const CenterlineLoad& request) {
   VesselGlyphPanel& vg = vessel_;
-  try {
-    std::string warnings;
+  vg.loading = request;
+  vg.error.clear();
+  message_ = "loading centerlines " + request.given;
+  vg.load.start([request](JobControl&) {
+    // A session's absolute path first (it works from any folder), else the file as given; when
+    // neither exists, the error names the absolute one.
+    std::error_code error;
+    const bool absoluteThere = !request.absolute.empty() && fs::exists(request.absolute, error);
+    LoadedCenterlines loaded;
+    loaded.file = absoluteThere || (!request.absolute.empty() && !fs::exists(request.given, error))
+                      ? request.absolute
+                      : request.given;
     CenterlineLoadOptions options;
-    options.warn = [&](const std::string& warning) { warnings += warning + "\n"; };
-    Centerlines loaded = loadCenterlines(path, options);
-    checkCenterlinesInside(loaded, data_.volume, options);
+    options.warn = [&loaded](const std::string& warning) { loaded.warnings += warning + "\n"; };
+    loaded.physical = loadCenterlines(loaded.file, options);
+    return loaded;
+  });
+}
+
+// The session's centerline file (state_.vesselGlyph), loaded in the background; no file: none.
+void App::loadSessionCenterlines() {
+  const SessionVesselGlyph& set = state_.vesselGlyph;
+  vessel_.load.stop();
+  dropCenterlines();
+  if (set.centerlines.empty() && set.centerlinesAbsolute.empty()) return;
+  vessel_.path = set.centerlines.empty() ? set.centerlinesAbsolute : set.centerlines;
+  loadVesselCenterlines({vessel_.path, set.centerlinesAbsolute, CenterlineLoad::From::session});
+}
+
+void App::dropCenterlines() {
+  VesselGlyphPanel& vg = vessel_;
+  vg.physical.reset();
+  vg.file.clear();
+  vg.warnings.clear();
+  vg.error.clear();
+  vg.inVolume.reset();
+  vg.framedFor.clear();
+  vg.builder.reset();
+}
+
+// Once loaded and no dataset load is running (the points are checked against the shown dataset).
+void App::pollCenterlineLoad() {
+  VesselGlyphPanel& vg = vessel_;
+  if (!vg.load.ready() || load_.running()) return;
+  SessionVesselGlyph& set = state_.vesselGlyph;
+  try {
+    LoadedCenterlines loaded = vg.load.take();
+    CenterlineLoadOptions options;
+    options.warn = [&loaded](const std::string& warning) { loaded.warnings += warning + "\n"; };
+    checkCenterlinesInside(loaded.physical, data_.volume, options);
     char summary[160];
     std::snprintf(summary, sizeof summary, "loaded %zu centerline paths (%zu points) from ",
-                  loaded.paths.size(), pointCount(loaded));
-    vg.physical = std::move(loaded);
-    vg.file = path;
-    vg.warnings = warnings;
+                  loaded.physical.paths.size(), pointCount(loaded.physical));
+    message_ = summary + loaded.file;
+    vg.physical = std::move(loaded.physical);
+    vg.file = loaded.file;
+    vg.warnings = std::move(loaded.warnings);
     vg.error.clear();
     vg.inVolume.reset();
     vg.builder.reset();
-    message_ = summary + path;
+    set.centerlines = vg.loading.given;
+    std::error_code error;
+    const fs::path absolute = fs::absolute(vg.file, error);
+    set.centerlinesAbsolute = error ? vg.file : absolute.lexically_normal().string();
   } catch (const std::exception& error) {
     vg.error = error.what();
     message_ = error.what();
+    // A session's file that is gone or broken: the rest of the session stands, VesselGlyph is off.
+    if (vg.loading.from == CenterlineLoad::From::session) set.enabled = false;
   }
 }
 
@@ -127,8 +181,8 @@ const Centerlines* App::framedCenterlines() {
 
 TransferFunction& App::editedTf() {
   switch (vessel_.editing) {
-    case TfTarget::focus: return vessel_.focusTf;
-    case TfTarget::context: return vessel_.contextTf;
+    case TfTarget::focus: return state_.vesselGlyph.focusTf;
+    case TfTarget::context: return state_.vesselGlyph.contextTf;
     case TfTarget::main: break;
   }
   return state_.tf;
@@ -136,18 +190,18 @@ TransferFunction& App::editedTf() {
 
 std::string& App::editedPreset() {
   switch (vessel_.editing) {
-    case TfTarget::focus: return vessel_.focusPreset;
-    case TfTarget::context: return vessel_.contextPreset;
+    case TfTarget::focus: return state_.vesselGlyph.focusPreset;
+    case TfTarget::context: return state_.vesselGlyph.contextPreset;
     case TfTarget::main: break;
   }
   return state_.tfPreset;
 }
 
 void App::ensureVesselTfs() {
-  VesselGlyphPanel& vg = vessel_;
+  SessionVesselGlyph& set = state_.vesselGlyph;
   try {
-    if (vg.focusTf.points.empty()) vg.focusTf = loadPresetOrFile(vg.focusPreset);
-    if (vg.contextTf.points.empty()) vg.contextTf = loadPresetOrFile(vg.contextPreset);
+    if (set.focusTf.points.empty()) set.focusTf = loadPresetOrFile(set.focusPreset);
+    if (set.contextTf.points.empty()) set.contextTf = loadPresetOrFile(set.contextPreset);
   } catch (const std::exception& error) {
     message_ = error.what();
   }
@@ -177,13 +231,17 @@ void App::drawTfTargetSelector() {
 void App::drawVesselSection() {
   if (!sectionHeader("VesselGlyph")) return;
   VesselGlyphPanel& vg = vessel_;
+  SessionVesselGlyph& set = state_.vesselGlyph;
   ensureVesselTfs();
   ImGui::SetNextItemWidth(230);
   ImGui::InputText("##vgpath", &vg.path);
   noteRect("vg_path");
   ImGui::SameLine();
-  if (ImGui::Button("Load centerlines...")) loadVesselCenterlines(vg.path);
+  ImGui::BeginDisabled(vg.load.running());
+  if (ImGui::Button("Load centerlines...")) loadVesselCenterlines({vg.path, "", CenterlineLoad::From::panel});
+  ImGui::EndDisabled();
   noteRect("vg_load");
+  if (vg.load.running()) ImGui::TextDisabled("loading %s ...", vg.loading.given.c_str());
   if (!vg.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", vg.error.c_str());
   if (vg.physical)
     ImGui::TextDisabled("%zu paths, %zu points: %s", vg.physical->paths.size(),
@@ -191,21 +249,23 @@ void App::drawVesselSection() {
   if (!vg.warnings.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "%s", vg.warnings.c_str());
   if (!vg.physical) return;  // the rest once there are centerlines
 
-  ImGui::Checkbox("VesselGlyph on", &vg.enabled);
+  ImGui::Checkbox("VesselGlyph on", &set.enabled);
   noteRect("vg_enable");
   ImGui::SameLine();
-  ImGui::Checkbox("centerline overlay", &vg.overlay);
+  ImGui::Checkbox("centerline overlay", &set.overlay);
   noteRect("vg_overlay");
   if (!vg.problem.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", vg.problem.c_str());
 
-  VesselGlyphSettings& s = vg.settings;
+  VesselGlyphSettings& s = set.settings;
   ImGui::TextUnformatted("focus radius");
   ImGui::SameLine();
   if (ImGui::RadioButton("x vessel radius", s.focus.mode == RadiusMode::kVesselFactor))
     s.focus = {RadiusMode::kVesselFactor, 2.0, 0.0};
+  noteRect("vg_focus_factor");
   ImGui::SameLine();
   if (ImGui::RadioButton("mm##focus", s.focus.mode == RadiusMode::kConstant))
     s.focus = {RadiusMode::kConstant, 5.0, 0.0};
+  noteRect("vg_focus_mm");
   if (s.focus.mode == RadiusMode::kVesselFactor) {
     ImGui::SetNextItemWidth(180);
     const double lo = 0.5, hi = 6;
@@ -213,6 +273,7 @@ void App::drawVesselSection() {
   } else {
     sliderMm("radius##focus", s.focus.value, 0.5, 40);
   }
+  noteRect("vg_focus_radius");
 
   ImGui::TextUnformatted("context");
   for (int n = 0; n < 3; ++n) {
@@ -220,6 +281,7 @@ void App::drawVesselSection() {
     char label[32];
     std::snprintf(label, sizeof label, "%s##context", kContextNames[n]);
     if (ImGui::RadioButton(label, int(s.context) == n)) s.context = ContextShape(n);
+    noteRect(std::string("vg_context_") + kContextNames[n]);
   }
   if (s.context == ContextShape::kSlab) {
     sliderMm("in front (d1)", s.slab.frontMm, 0, 200);
@@ -231,17 +293,17 @@ void App::drawVesselSection() {
   }
   ImGui::TextUnformatted("outside");
   ImGui::SameLine();
-  if (ImGui::RadioButton("clipped", !vg.outsideRendered)) vg.outsideRendered = false;
+  if (ImGui::RadioButton("clipped", !set.outsideRendered)) set.outsideRendered = false;
   ImGui::SameLine();
-  if (ImGui::RadioButton("main TF", vg.outsideRendered)) vg.outsideRendered = true;
+  if (ImGui::RadioButton("main TF", set.outsideRendered)) set.outsideRendered = true;
   noteRect("vg_outside_main");
   ImGui::Checkbox("foreground cleft", &s.cleft);
   noteRect("vg_cleft");
   ImGui::SameLine();
   ImGui::Checkbox("half vessel", &s.halfVessel);
   noteRect("vg_half_vessel");
-  regionTfCombo("focus TF", presets_, vg.focusTf, vg.focusPreset, message_);
-  regionTfCombo("context TF", presets_, vg.contextTf, vg.contextPreset, message_);
+  regionTfCombo("focus TF", presets_, set.focusTf, set.focusPreset, message_);
+  regionTfCombo("context TF", presets_, set.contextTf, set.contextPreset, message_);
   ImGui::TextDisabled("edit them in the TF editor: \"TF editor edits\" above it");
 }
 
@@ -249,14 +311,15 @@ void App::drawVesselSection() {
 // a new source whenever the shape, a region TF or the outside TF changed, else the last one.
 std::shared_ptr<const RegionSource> App::vesselRegions() {
   VesselGlyphPanel& vg = vessel_;
+  SessionVesselGlyph& set = state_.vesselGlyph;
   vg.problem.clear();
-  if (!vg.enabled || !vg.physical) return vg.source = nullptr;
+  if (!set.enabled || !vg.physical) return vg.source = nullptr;
   ensureVesselTfs();
   bool changed = !vg.source;
   try {
     const Centerlines* centerlines = framedCenterlines();
-    if (!vg.builder || !sameGlyphSettings(vg.builder->builder.settings(), vg.settings)) {
-      vg.builder = std::make_shared<GuardedRegionBuilder>(*centerlines, vg.settings);
+    if (!vg.builder || !sameGlyphSettings(vg.builder->builder.settings(), set.settings)) {
+      vg.builder = std::make_shared<GuardedRegionBuilder>(*centerlines, set.settings);
       changed = true;
     }
   } catch (const std::exception& error) {
@@ -270,9 +333,9 @@ std::shared_ptr<const RegionSource> App::vesselRegions() {
     builtFrom = tf;
     changed = true;
   };
-  refresh(vg.focusTable, vg.focusTableTf, vg.focusTf);
-  refresh(vg.contextTable, vg.contextTableTf, vg.contextTf);
-  const std::shared_ptr<const TfTable> outside = vg.outsideRendered ? table_ : nullptr;
+  refresh(vg.focusTable, vg.focusTableTf, set.focusTf);
+  refresh(vg.contextTable, vg.contextTableTf, set.contextTf);
+  const std::shared_ptr<const TfTable> outside = set.outsideRendered ? table_ : nullptr;
   if (outside != vg.outsideTable) vg.outsideTable = outside, changed = true;
   const std::string hybrid = hybridSettingsKey(state_.cpr);
   if (hybrid != vg.hybridFor) vg.hybridFor = hybrid, changed = true;
@@ -292,7 +355,7 @@ std::shared_ptr<const RegionSource> App::vesselRegions() {
 
 // The centerlines projected with the shown frame's view, over the image (follows zoom and pan).
 void App::drawCenterlineOverlay() {
-  if (!vessel_.overlay || !vessel_.physical || !shown_ || !viewport_.hasImage) return;
+  if (!state_.vesselGlyph.overlay || !vessel_.physical || !shown_ || !viewport_.hasImage) return;
   const Centerlines* centerlines = nullptr;
   try {
     centerlines = framedCenterlines();
@@ -315,18 +378,19 @@ void App::drawCenterlineOverlay() {
 
 nlohmann::json App::vesselReport() const {
   const VesselGlyphPanel& vg = vessel_;
-  return {{"enabled", vg.enabled},
+  const SessionVesselGlyph& set = state_.vesselGlyph;
+  return {{"enabled", set.enabled},
           {"rendering", vg.source != nullptr},
-          {"overlay", vg.overlay},
+          {"overlay", set.overlay},
           {"centerlines", vg.file},
           {"paths", vg.physical ? vg.physical->paths.size() : 0},
-          {"focus", focusSpecText(vg.settings.focus)},
-          {"context", contextSpecText(vg.settings)},
-          {"outside", vg.outsideRendered ? "main-tf" : "clip"},
-          {"cleft", vg.settings.cleft},
-          {"half_vessel", vg.settings.halfVessel},
-          {"focus_tf", vg.focusPreset.empty() ? vg.focusTf.name : vg.focusPreset},
-          {"context_tf", vg.contextPreset.empty() ? vg.contextTf.name : vg.contextPreset},
+          {"focus", focusSpecText(set.settings.focus)},
+          {"context", contextSpecText(set.settings)},
+          {"outside", set.outsideRendered ? "main-tf" : "clip"},
+          {"cleft", set.settings.cleft},
+          {"half_vessel", set.settings.halfVessel},
+          {"focus_tf", set.focusPreset.empty() ? set.focusTf.name : set.focusPreset},
+          {"context_tf", set.contextPreset.empty() ? set.contextTf.name : set.contextPreset},
           {"tf_editing", kTargetNames[int(vg.editing)]},
           {"error", vg.error},
           {"problem", vg.problem},

@@ -1,7 +1,8 @@
 #pragma once
-// The VesselGlyph panel's state (issue 5 item 7; thesis ch. 5): the centerlines, the region shapes
-// and the focus / context TFs the user picked, and what the progressive renderer got from them
-// (core's RegionSource, made anew whenever any of it changes). Drawn by gui/app_vessel.cpp.
+// The VesselGlyph panel's runtime state (issue 5 item 7; thesis ch. 5): the loaded centerlines and
+// what the progressive renderer got from them (core's RegionSource, made anew whenever any of it
+// changes). What the user set (centerline file, shapes, focus / context TFs) is the session's
+// SessionVesselGlyph, App's state_.vesselGlyph. Drawn by gui/app_vessel.cpp.
 #include <array>
 #include <memory>
 #include <mutex>
@@ -11,6 +12,7 @@
 #include "core/progressive_renderer.h"
 #include "core/transfer_function.h"
 #include "core/view_geometry.h"
+#include "gui/background_job.h"
 #include "gui/tf_editor.h"
 #include "vessel/centerline.h"
 #include "vessel/vessel_glyph.h"
@@ -29,17 +31,27 @@ struct GuardedRegionBuilder {
   RayRegionBuilder builder;
 };
 
+// A centerline file being read off the UI thread: the panel's button, `gui --centerlines`, a
+// session (which names the file as given and as an absolute path: the first that exists is read).
+struct CenterlineLoad {
+  std::string given;     // as the user or the session named it
+  std::string absolute;  // the session's absolute path, "" = make it from `given`
+  enum class From { panel, session } from = From::panel;  // a session's failure turns VesselGlyph off
+};
+struct LoadedCenterlines {
+  Centerlines physical;
+  std::string file;      // the file read
+  std::string warnings;  // one per line
+};
+
 struct VesselGlyphPanel {
-  // What the user set.
   std::string path = "centerlines.csv";  // the "Load centerlines..." field
-  bool enabled = false;
-  bool overlay = true;                   // the projected centerlines over the image
-  VesselGlyphSettings settings;
-  bool outsideRendered = false;          // the outside: rendered with the main TF, else clipped
-  TransferFunction focusTf, contextTf;   // loaded from the presets below on first use
-  std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";
   TfTarget editing = TfTarget::main;
   std::array<TfHistory, 3> histories;    // undo stacks of the targets not being edited
+
+  // Loading (pollCenterlineLoad takes the result once the dataset is there to check it against).
+  CenterlineLoad loading;
+  BackgroundJob<LoadedCenterlines> load;
 
   // What was loaded.
   std::optional<Centerlines> physical;   // as the file holds them (LPS mm)

@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
-#include <thread>
 
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
@@ -125,19 +124,29 @@ int runWindow(LoadedDataset dataset, AppState state, const WindowOptions& option
   glfwSetDropCallback(window.handle(), openDropped);
   const auto opened = Clock::now();
   double previousFrameMs = 0;
+  Clock::time_point previousStart{};
   bool closing = false;
   while (!closing) {
     closing = glfwWindowShouldClose(window.handle()) || app.wantsToQuit() || closeRequested.load() ||
               (options.quitAfterSeconds > 0 &&
                Ms(Clock::now() - opened).count() > options.quitAfterSeconds * 1000);
     // Draw at display rate only while something moves; otherwise sleep until input or a new
-    // frame from the renderer (it wakes us), with a slow tick for the progress bar.
+    // frame from the renderer (it wakes us), with a slow tick for the progress bar. Without vsync
+    // (e.g. Xvfb) the display rate is about 60 frames per second, and input or a published frame
+    // ends that wait too: sleeping through either would add up to a display frame to what the
+    // hand waits for.
     switch (app.pacing()) {
-      case FramePacing::continuous: glfwPollEvents(); break;
+      case FramePacing::continuous: {
+        const double rest = kFrameMs - Ms(Clock::now() - previousStart).count();
+        if (rest > 0) glfwWaitEventsTimeout(rest / 1000);
+        else glfwPollEvents();
+        break;
+      }
       case FramePacing::progress: glfwWaitEventsTimeout(0.1); break;
       case FramePacing::idle: glfwWaitEventsTimeout(0.5); break;
     }
     const auto start = Clock::now();
+    previousStart = start;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     app.frame(previousFrameMs);
@@ -148,9 +157,7 @@ int runWindow(LoadedDataset dataset, AppState state, const WindowOptions& option
     previousFrameMs = Ms(Clock::now() - start).count();
     if (closing && !options.screenshot.empty()) writeScreenshot(options.screenshot, window.gl(), width, height);
     glfwSwapBuffers(window.handle());
-    // Without vsync (e.g. Xvfb) keep to about 60 frames per second.
-    const double rest = kFrameMs - Ms(Clock::now() - start).count();
-    if (rest > 0) std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(rest));
+    app.framePresented();
   }
   if (!options.stateOut.empty()) writeReport(options.stateOut, app);
   saveLastSession(app);

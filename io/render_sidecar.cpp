@@ -12,6 +12,7 @@
 #include "io/input_error.h"
 #include "io/render_metadata.h"
 #include "io/tf_file.h"
+#include "io/vessel_glyph_json.h"
 #include "vessel/vessel_glyph_spec.h"
 
 namespace angio {
@@ -27,33 +28,14 @@ constexpr int kSidecarVersion = 1;
 
 Json tfJson(const TransferFunction& tf) { return Json::parse(toJson(tf)); }
 
-Json radiusJson(const TubeRadius& radius) {
-  return {{"radius_mode", radius.mode == RadiusMode::kVesselFactor ? "factor" : "mm"},
-          {"radius", radius.value},
-          {"margin_mm", radius.marginMm}};
-}
-
-Json contextJson(const VesselGlyphSettings& s) {
-  const char* shapes[] = {"none", "slab", "tube"};
-  Json json = {{"shape", shapes[int(s.context)]}, {"front_mm", s.slab.frontMm}, {"back_mm", s.slab.backMm}};
-  if (std::isinf(s.slab.halfWidthMm)) json["half_width_mm"] = "inf";
-  else json["half_width_mm"] = s.slab.halfWidthMm;
-  json["tube"] = radiusJson(s.contextTube);
-  return json;
-}
-
 Json vesselGlyphJson(const VesselGlyphRecipe& vg) {
-  const VesselGlyphSettings& s = vg.settings;
-  return {{"centerlines", vg.centerlines},
-          {"focus", radiusJson(s.focus)},
-          {"context", contextJson(s)},
-          {"cleft", s.cleft},
-          {"half_vessel", s.halfVessel},
-          {"unknown_vessel_radius_mm", s.unknownVesselRadiusMm},
-          {"simplify_tolerance_mm", s.simplifyToleranceMm},
-          {"focus_tf", tfJson(vg.focusTf)},
-          {"context_tf", tfJson(vg.contextTf)},
-          {"outside_tf", vg.outsideTf ? tfJson(*vg.outsideTf) : Json(nullptr)}};
+  Json json = {{"centerlines", vg.centerlines}};
+  const Json settings = vesselGlyphSettingsJson(vg.settings);
+  for (const auto& [key, value] : settings.items()) json[key] = value;
+  json["focus_tf"] = tfJson(vg.focusTf);
+  json["context_tf"] = tfJson(vg.contextTf);
+  json["outside_tf"] = vg.outsideTf ? tfJson(*vg.outsideTf) : Json(nullptr);
+  return json;
 }
 
 Json hybridJson(const HybridCprRecipe& hybrid) {
@@ -110,11 +92,7 @@ struct Reader {
 
 TubeRadius readRadius(const Reader& r, const Json& json, const std::string& where) {
   TubeRadius radius;
-  radius.mode = r.choice(json, "radius_mode", [](const std::string& m) -> std::optional<RadiusMode> {
-    if (m == "factor") return RadiusMode::kVesselFactor;
-    if (m == "mm") return RadiusMode::kConstant;
-    return std::nullopt;
-  }, where);
+  radius.mode = r.choice(json, "radius_mode", parseRadiusMode, where);
   radius.value = r.number(json, "radius", where);
   radius.marginMm = r.number(json, "margin_mm", where);
   return radius;
@@ -122,12 +100,7 @@ TubeRadius readRadius(const Reader& r, const Json& json, const std::string& wher
 
 void readContext(const Reader& r, const Json& json, VesselGlyphSettings& s) {
   const std::string where = "vessel_glyph.context.";
-  s.context = r.choice(json, "shape", [](const std::string& m) -> std::optional<ContextShape> {
-    if (m == "none") return ContextShape::kNone;
-    if (m == "slab") return ContextShape::kSlab;
-    if (m == "tube") return ContextShape::kTube;
-    return std::nullopt;
-  }, where);
+  s.context = r.choice(json, "shape", parseContextShape, where);
   s.slab.frontMm = r.number(json, "front_mm", where);
   s.slab.backMm = r.number(json, "back_mm", where);
   const Json& width = r.at(json, "half_width_mm", where);

@@ -21,7 +21,8 @@
 //        "margin_mm"}, "context": {"shape": "none" | "slab" | "tube", "front_mm", "back_mm",
 //        "half_width_mm" (number or "inf"), "tube": {focus-like}}, "cleft", "half_vessel",
 //        "unknown_vessel_radius_mm", "simplify_tolerance_mm", "focus_tf": {TF}, "context_tf": {TF},
-//        "outside_tf": {TF} | null (clipped)},
+//        "outside_tf": {TF} | null (clipped)}  (the settings' keys: io/vessel_glyph_json.h, which
+//        session files share),
 //    "hybrid_cpr": null | {"path": "all" | "N", "transition_mm", "display": "tf" | "grey",
 //        "window", "level"}}
 #include <filesystem>

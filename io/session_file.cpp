@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include "io/atomic_write.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
+#include "io/vessel_glyph_json.h"
 
 namespace angio {
 
@@ -31,6 +33,19 @@ Json cprJson(const SessionCpr& cpr) {
           {"transition_mm", cpr.transitionMm}};
 }
 
+Json vesselGlyphJson(const SessionVesselGlyph& vg) {
+  const auto tfOrNull = [](const TransferFunction& tf) { return tf.points.empty() ? Json(nullptr) : Json::parse(toJson(tf)); };
+  Json json = {{"centerlines", vg.centerlines}, {"centerlines_absolute", vg.centerlinesAbsolute},
+               {"enabled", vg.enabled}, {"overlay", vg.overlay}};
+  json.update(Json::parse(vesselGlyphSettingsJson(vg.settings).dump()));
+  json["outside"] = vg.outsideRendered ? "main-tf" : "clip";
+  json["focus_tf"] = tfOrNull(vg.focusTf);
+  json["context_tf"] = tfOrNull(vg.contextTf);
+  json["focus_preset"] = vg.focusPreset;
+  json["context_preset"] = vg.contextPreset;
+  return json;
+}
+
 Json samplingJson(const Sampling& sampling) {
   return {{"isd", sampling.isd}, {"osd", sampling.osd}, {"filter", toString(sampling.filter)},
           {"ert", sampling.ert}};
@@ -39,33 +54,102 @@ Json samplingJson(const Sampling& sampling) {
 // Reads one session file: every key optional (defaults stay), every present key checked.
 struct SessionReader {
   const fs::path& source;
+  std::string where = "";  // the keys' section in messages, e.g. "vessel_glyph.focus."
 
   [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, problem); }
+  SessionReader in(const char* key) const { return {source, where + key + "."}; }
 
   double number(const Json& object, const char* key, double lo, double hi, double fallback) const {
     if (!object.contains(key)) return fallback;
     const Json& value = object[key];
-    if (!value.is_number()) fail(std::string(key) + " is not a number");
+    if (!value.is_number()) fail(where + key + " is not a number");
     const double n = value.get<double>();
     if (!std::isfinite(n) || n < lo || n > hi)
-      fail(std::string(key) + " " + value.dump() + " is out of range");
+      fail(where + key + " " + value.dump() + " is out of range");
     return n;
   }
   bool flag(const Json& object, const char* key, bool fallback) const {
     if (!object.contains(key)) return fallback;
-    if (!object[key].is_boolean()) fail(std::string(key) + " is not true or false");
+    if (!object[key].is_boolean()) fail(where + key + " is not true or false");
     return object[key].get<bool>();
   }
   std::string text(const Json& object, const char* key) const {
     if (!object.contains(key)) return "";
-    if (!object[key].is_string()) fail(std::string(key) + " is not a string");
+    if (!object[key].is_string()) fail(where + key + " is not a string");
     return object[key].get<std::string>();
   }
   const Json& section(const Json& object, const char* key) const {
     static const Json empty = Json::object();
     if (!object.contains(key)) return empty;
-    if (!object[key].is_object()) fail(std::string(key) + " is not an object");
+    if (!object[key].is_object()) fail(where + key + " is not an object");
     return object[key];
+  }
+  // A name from a list (parse gives none for an unknown one); `names` says which there are.
+  template <class Parse>
+  auto choice(const Json& object, const char* key, Parse parse, decltype(parse("")) fallback,
+              const char* names) const {
+    if (!object.contains(key)) return fallback;
+    const auto parsed = parse(text(object, key));
+    if (!parsed) fail(where + key + " is not " + names);
+    return parsed;
+  }
+  // A TF in full, or null / missing: `fallback`.
+  TransferFunction tf(const Json& object, const char* key, const TransferFunction& fallback) const {
+    if (!object.contains(key) || object[key].is_null()) return fallback;
+    if (!object[key].is_object()) fail(where + key + " is not a transfer function (an object) or null");
+    try {
+      return parseTransferFunction(object[key].dump(), source);
+    } catch (const InputError& error) {  // "<source>: <problem>"
+      fail(where + key + ": " + std::string(error.what()).substr(source.string().size() + 2));
+    }
+  }
+
+  TubeRadius radius(const Json& r, TubeRadius radius) const {
+    radius.mode = *choice(r, "radius_mode", parseRadiusMode, radius.mode, "factor or mm");
+    radius.value = number(r, "radius", 1e-6, 1e4, radius.value);
+    radius.marginMm = number(r, "margin_mm", 0, 1e3, radius.marginMm);
+    return radius;
+  }
+
+  // The VesselGlyph section (where = "vessel_glyph.").
+  SessionVesselGlyph vesselGlyph(const Json& v) const {
+    SessionVesselGlyph vg;
+    vg.centerlines = text(v, "centerlines");
+    vg.centerlinesAbsolute = text(v, "centerlines_absolute");
+    vg.enabled = flag(v, "enabled", vg.enabled);
+    vg.overlay = flag(v, "overlay", vg.overlay);
+    VesselGlyphSettings& s = vg.settings;
+    s.focus = in("focus").radius(section(v, "focus"), s.focus);
+    const SessionReader contextReader = in("context");
+    const Json& c = section(v, "context");
+    s.context = *contextReader.choice(c, "shape", parseContextShape, s.context, "none, slab or tube");
+    s.slab.frontMm = contextReader.number(c, "front_mm", 0, 1e4, s.slab.frontMm);
+    s.slab.backMm = contextReader.number(c, "back_mm", 0, 1e4, s.slab.backMm);
+    if (c.contains("half_width_mm") && c["half_width_mm"] == "inf")
+      s.slab.halfWidthMm = std::numeric_limits<double>::infinity();
+    else if (c.contains("half_width_mm") && !c["half_width_mm"].is_number())
+      fail(contextReader.where + "half_width_mm is not a number or \"inf\"");
+    else
+      s.slab.halfWidthMm = contextReader.number(c, "half_width_mm", 0, 1e5, s.slab.halfWidthMm);
+    s.contextTube = contextReader.in("tube").radius(contextReader.section(c, "tube"), s.contextTube);
+    s.cleft = flag(v, "cleft", s.cleft);
+    s.halfVessel = flag(v, "half_vessel", s.halfVessel);
+    s.unknownVesselRadiusMm = number(v, "unknown_vessel_radius_mm", 0, 1e3, s.unknownVesselRadiusMm);
+    s.simplifyToleranceMm = number(v, "simplify_tolerance_mm", 0, 100, s.simplifyToleranceMm);
+    if (const auto problem = settingsProblem(s)) fail("vessel_glyph: " + *problem);
+    if (v.contains("outside")) {
+      const std::string outside = text(v, "outside");
+      if (outside != "clip" && outside != "main-tf") fail(where + "outside is not clip or main-tf");
+      vg.outsideRendered = outside == "main-tf";
+    }
+    vg.focusTf = tf(v, "focus_tf", vg.focusTf);
+    vg.contextTf = tf(v, "context_tf", vg.contextTf);
+    if (v.contains("focus_preset")) vg.focusPreset = text(v, "focus_preset");
+    if (v.contains("context_preset")) vg.contextPreset = text(v, "context_preset");
+    if (vg.focusTf.points.empty() && vg.focusPreset.empty()) fail(where + "focus_tf is null and focus_preset empty");
+    if (vg.contextTf.points.empty() && vg.contextPreset.empty())
+      fail(where + "context_tf is null and context_preset empty");
+    return vg;
   }
 
   SessionView view(const Json& v) const {
@@ -145,6 +229,7 @@ struct SessionReader {
     for (int q = 0; q < kQualityLevels; ++q)
       session.levels[q] = sampling(section(levels, toString(Quality(q))), session.levels[q]);
     session.cpr = cpr(section(json, "cpr"));
+    session.vesselGlyph = in("vessel_glyph").vesselGlyph(section(json, "vessel_glyph"));
     for (const auto& [name, open] : section(json, "panels").items()) {
       if (!open.is_boolean()) fail("panels " + name + " is not true or false");
       session.panelsOpen[name] = open.get<bool>();
@@ -187,6 +272,7 @@ std::string toJson(const Session& session) {
       {"shading", {{"enabled", session.shading.enabled}, {"ka", session.shading.ka}, {"kd", session.shading.kd}}},
       {"levels", levels},
       {"cpr", cprJson(session.cpr)},
+      {"vessel_glyph", vesselGlyphJson(session.vesselGlyph)},
       {"panels", panels},
       {"recent_files", session.recentFiles},
   };

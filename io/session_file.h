@@ -1,9 +1,10 @@
 #pragma once
 // Session files: what the workstation needs to come back to where the user left it (dataset,
 // rotation axis and angle, zoom/pan, the full transfer function with its MIP window, shading,
-// the quality levels' sampling, the CPR view and DVR+CPR hybrid settings, which side-panel
-// sections are open, recently opened files), as
-// JSON. Written atomically; every problem reading one is an InputError, one line naming the file.
+// the quality levels' sampling, the CPR view and DVR+CPR hybrid settings, the VesselGlyph panel
+// (centerline file, region shapes, focus and context TFs in full), which side-panel sections are
+// open, recently opened files), as JSON. Written atomically; every problem reading one is an
+// InputError, one line naming the file and the key.
 // The window app writes the last session to lastSessionPath() when it quits.
 #include <filesystem>
 #include <map>
@@ -16,6 +17,7 @@
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "vessel/cpr_layout.h"
+#include "vessel/vessel_glyph.h"
 
 namespace angio {
 
@@ -36,8 +38,8 @@ struct SessionView {
 enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
 
 // The CPR section (issue 6 items 4-6): the view beside the image and the DVR+CPR hybrid in the
-// image share the path and the colouring. (The VesselGlyph settings the hybrid builds on -
-// centerlines, shapes, region TFs - are not kept in sessions.)
+// image share the path and the colouring. (The VesselGlyph settings the hybrid builds on are
+// SessionVesselGlyph's.)
 struct SessionCpr {
   bool shown = false;  // the CPR view beside the image
   CprMode mode = CprMode::straightened;
@@ -45,6 +47,21 @@ struct SessionCpr {
   CprColouring colouring = CprColouring::ctaLumen;
   bool hybrid = false;       // the DVR+CPR hybrid (needs VesselGlyph on)
   double transitionMm = 0;   // the hybrid's transition band, 0 = hard edge
+};
+
+// The VesselGlyph panel (issue 5 item 7, gui/app_vessel.h): the centerline file and what the user
+// set. JSON "vessel_glyph": {"centerlines", "centerlines_absolute", "enabled", "overlay", the
+// settings in io/vessel_glyph_json.h's form, "outside": "clip" | "main-tf", "focus_tf",
+// "context_tf" (TF JSON or null), "focus_preset", "context_preset"}.
+struct SessionVesselGlyph {
+  std::string centerlines;          // the centerline file as given ("" = none)
+  std::string centerlinesAbsolute;  // the same, absolute when it was loaded (tried first)
+  bool enabled = false;             // VesselGlyph rendering on
+  bool overlay = true;              // the projected centerlines over the image
+  VesselGlyphSettings settings;
+  bool outsideRendered = false;     // the outside: rendered with the main TF, else clipped
+  TransferFunction focusTf, contextTf;  // no points: the presets below, loaded on first use
+  std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";  // "" = edited
 };
 
 struct Session {
@@ -56,6 +73,7 @@ struct Session {
   Shading shading;
   LevelSamplings levels = defaultLevelSamplings();
   SessionCpr cpr;
+  SessionVesselGlyph vesselGlyph;
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 };

@@ -1,5 +1,6 @@
 // The progressive renderer (thesis sec. 4.4): levels in order, interruption, interactive mode,
 // and images identical to renderFast's for the same parameters.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -7,6 +8,10 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <tbb/parallel_for.h>
+#include <unistd.h>
 
 #include "core/fast_raycaster.h"
 #include "core/phantom.h"
@@ -327,6 +332,121 @@ TEST(ProgressiveRenderer, ANewRegionSourceIsANewRenderAndDroppingItGivesPlainDvr
   EXPECT_EQ(frame->regions, nullptr);
   params.sampling = qualitySampling(frame->level);
   EXPECT_TRUE(sameImage(*frame->image, renderDirectly(testVolume(), *table, params)));
+}
+
+}  // namespace
+}  // namespace angio
+
+namespace angio {
+namespace {
+
+// A drag's steps arrive faster than fast renders: the worker finishes the fast render it runs,
+// then renders only the newest step's angle (the steps in between never get a frame), and that
+// frame is the fast level at the newest angle, as renderFast makes it. Its timeline shows the
+// hand-off in order, with the wait for the running render.
+TEST(ProgressiveRenderer, DragStepsDuringAFastRenderRenderOnlyTheNewestAngle) {
+  const auto table = tableFor("cta-vessels");
+  ProgressiveRenderer* renderer = nullptr;
+  std::uint64_t skippedId = 0, newestId = 0;
+  FrameLog log;
+  ProgressiveCallbacks callbacks = log.callbacks();
+  const auto logFrame = callbacks.beforePublish;
+  callbacks.beforePublish = [&](const ProgressiveFrame& frame) {
+    logFrame(frame);
+    if (frame.request != 1) return;
+    // Two more drag steps while the first step's frame is being published.
+    ProgressiveRequest step = requestAt(20, table);
+    step.interactive = true;
+    skippedId = renderer->request(step);
+    step.params.angleDeg = 30;
+    newestId = renderer->request(step);
+  };
+  ProgressiveRenderer instance(testVolume(), callbacks);
+  renderer = &instance;
+  ProgressiveRequest first = requestAt(10, table);
+  first.interactive = true;
+  ASSERT_EQ(renderer->request(first), 1u);
+  // Superseded by the steps its publication brings: waiting ends once they were requested.
+  renderer->waitForLevel(1, Quality::fast, 60s);
+  ASSERT_NE(newestId, 0u);
+  ASSERT_TRUE(renderer->waitForLevel(newestId, Quality::fast, 60s));
+
+  const std::vector<ProgressiveFrame> frames = log.copy();
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].request, 1u);
+  EXPECT_EQ(frames[1].request, newestId);
+  EXPECT_NE(frames[1].request, skippedId);
+  EXPECT_EQ(frames[1].level, Quality::fast);
+  EXPECT_EQ(frames[1].params.angleDeg, 30);
+  RenderParams params = frames[1].params;
+  params.sampling = qualitySampling(Quality::fast);
+  EXPECT_TRUE(sameImage(*frames[1].image, renderDirectly(testVolume(), *table, params)));
+
+  const RequestTimeline t = renderer->latestFrame()->timeline;
+  EXPECT_LE(t.requested, t.workerFree);  // it waited for the first step's render to finish
+  EXPECT_LE(t.workerFree, t.pickedUp);
+  EXPECT_LE(t.pickedUp, t.renderStart);
+  EXPECT_LE(t.renderStart, t.renderEnd);
+  EXPECT_LE(t.renderEnd, t.published);
+  EXPECT_EQ(t.cancelSeen, RequestTimeline::TimePoint{});  // a fast render is not cancelled by a drag
+}
+
+int niceOfThisThread() { return getpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid))); }
+
+// Whether this process may raise a thread lowered to `to` back to `from` (RLIMIT_NICE, CAP_SYS_NICE).
+bool canRaiseBack(int from, int to) {
+  bool can = false;
+  std::thread([&] {
+    can = setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), to) == 0 &&
+          setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), from) == 0;
+  }).join();
+  return can;
+}
+
+// The fast level, what a user moving the mouse waits for, renders 5 nice steps below the process
+// on every thread rendering it, also right after a high render; the levels above it render 10
+// steps below where the threads can be raised back, else at the fast level's priority.
+TEST(ProgressiveRenderer, FastRendersJustBelowTheProcessAndTheOtherLevelsLower) {
+  std::mutex mutex;
+  std::vector<int> running;                           // nice of the threads of the running level
+  std::vector<std::pair<Quality, std::vector<int>>> levels;  // per published frame
+  auto probing = std::make_shared<RegionSource>(*halvesSource(nullptr));
+  probing->finish = [&](const ViewGeometry&, const RayRegions&, Image&) {
+    // On the worker inside the level's arena: the threads a parallel loop there runs on.
+    tbb::parallel_for(0, 64, [&](int) {
+      const int nice = niceOfThisThread();
+      std::this_thread::sleep_for(200us);
+      std::lock_guard lock(mutex);
+      running.push_back(nice);
+    });
+  };
+  ProgressiveCallbacks callbacks;
+  callbacks.beforePublish = [&](const ProgressiveFrame& frame) {
+    std::lock_guard lock(mutex);
+    levels.push_back({frame.level, std::move(running)});
+    running.clear();
+  };
+  ProgressiveRenderer renderer(testVolume(), callbacks);
+  ProgressiveRequest request = requestAt(15, tableFor("cta-vessels-bone"));
+  request.regions = probing;
+  const std::uint64_t first = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(first, Quality::high, 120s));
+  request.params.angleDeg = 25;
+  const std::uint64_t second = renderer.request(request);
+  ASSERT_TRUE(renderer.waitForLevel(second, Quality::fast, 60s));
+
+  const int fast = std::min(niceOfThisThread() + 5, 19), lowered = std::min(niceOfThisThread() + 10, 19);
+  const int background = canRaiseBack(fast, lowered) ? lowered : fast;
+  std::lock_guard lock(mutex);
+  ASSERT_GE(levels.size(), 4u);
+  const Quality expected[] = {Quality::fast, Quality::medium, Quality::high, Quality::fast};
+  for (int n = 0; n < 4; ++n) {
+    SCOPED_TRACE("frame " + std::to_string(n));
+    EXPECT_EQ(levels[n].first, expected[n]);
+    EXPECT_FALSE(levels[n].second.empty());
+    for (int nice : levels[n].second)
+      EXPECT_EQ(nice, levels[n].first == Quality::fast ? fast : background);
+  }
 }
 
 }  // namespace

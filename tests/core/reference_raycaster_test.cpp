@@ -30,6 +30,14 @@ RenderParams plainParams(double isd, double osd, Filter filter) {
   return p;
 }
 
+// Trilinear with the default shading on, viewed at `angleDeg` about k.
+RenderParams shadedParams(double isd, double osd, double angleDeg) {
+  RenderParams p = plainParams(isd, osd, Filter::trilinear);
+  p.shading.enabled = true;
+  p.angleDeg = angleDeg;
+  return p;
+}
+
 // 16 x 32 x 16 voxels of 1 mm; voxels with j in [8, 23] are a slab of kSlabHu, the rest air.
 Volume slabVolume() {
   Volume v = makeVolume({16, 32, 16}, {1, 1, 1});
@@ -153,9 +161,7 @@ TEST(ReferenceRaycaster, SphereSilhouetteWidthMatchesDiameterOnEveryAxisAndAngle
 TEST(ReferenceRaycaster, FullTurnGivesIdenticalBytes) {
   const Volume volume = ballVolume(12.0, {1, 1, 1});
   const TfTable table = buildTable(stepTf(0.3));
-  RenderParams p = plainParams(1.0, 1.0, Filter::trilinear);
-  p.shading.enabled = true;
-  p.angleDeg = 33;
+  RenderParams p = shadedParams(1.0, 1.0, 33);
   const auto first = toRgb8(renderReference(volume, table, p));
   p.angleDeg = 33 + 360;
   EXPECT_EQ(first, toRgb8(renderReference(volume, table, p)));
@@ -180,9 +186,7 @@ TEST(ReferenceRaycaster, HalvingIsdDoublesImageSize) {
 TEST(ReferenceRaycaster, SameBytesWhateverTheThreadCount) {
   const Volume volume = ballVolume(14.0, {0.8, 0.8, 1.0});
   const TfTable table = buildTable(stepTf(0.2));
-  RenderParams p = plainParams(0.7, 0.3, Filter::trilinear);
-  p.shading.enabled = true;
-  p.angleDeg = 17;
+  const RenderParams p = shadedParams(0.7, 0.3, 17);
   std::vector<glm::vec4> oneThread;
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -160,6 +161,44 @@ TEST_F(Gui, LeftDragRotatesAndChangesTheImage) {
   EXPECT_NE(after["runtime"]["shown"]["checksum"], before["runtime"]["shown"]["checksum"]);
   const Rect viewport = rectOf(after["runtime"]["layout"]["viewport"]);
   EXPECT_GT(meanDifference(dir / "before.png", dir / "after.png", viewport), 1.0);
+}
+
+// The latency breakdown (runtime.latency): every request a drag or key made ends up on screen
+// (its own image or a newer one) and the stages of each first frame add up to its input -> screen
+// total. Counts and sums only: no time limits here
+// (bench/input_latency.sh measures).
+TEST_F(Gui, LatencyBreakdownAccountsForEveryInputAndAddsUp) {
+  const GuiRun run = runScript(R"([{"wait_level": "high"}, {"key": "Left"}, {"key": "Left"},
+    {"drag": {"from": [300, 300], "to": [360, 300], "steps": 6}}, {"wait_level": "high"}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json runtime = readJson(dir / "end.json")["runtime"];
+  const Json& latency = runtime["latency"];
+  std::map<std::string, Json> stage;
+  for (const Json& row : latency["stages_ms"]) stage[row["stage"].get<std::string>()] = row;
+  // Request 1 is the start-up image; each later one came from input and is on screen now.
+  const int inputs = runtime["newest_request"].get<int>() - 1;
+  EXPECT_GE(inputs, 8);  // 2 keys, press, 6 moves, release (some may coincide)
+  EXPECT_EQ(stage["input_to_screen"]["count"].get<int>(), inputs);
+  const int traced = stage["total"]["count"].get<int>();
+  ASSERT_GE(traced, 1);
+  EXPECT_LE(traced + latency["superseded_requests"].get<int>(), inputs);
+  int byLevel = 0;
+  for (const char* level : {"fast", "medium", "high"}) byLevel += latency["first_frame_levels"][level].get<int>();
+  EXPECT_EQ(byLevel, traced);
+  EXPECT_GE(latency["first_frame_levels"]["fast"].get<int>(), 1);  // the drag's images
+  double sum = 0;
+  for (const char* name : {"input_to_request", "request_to_pickup", "pickup_to_render", "render", "publish",
+                           "publish_to_ui", "upload", "present"}) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(stage[name]["count"].get<int>(), traced);
+    EXPECT_GE(stage[name]["min"].get<double>(), 0);
+    EXPECT_LE(stage[name]["min"].get<double>(), stage[name]["median"].get<double>());
+    EXPECT_LE(stage[name]["median"].get<double>(), stage[name]["max"].get<double>());
+    sum += stage[name]["mean"].get<double>();
+  }
+  EXPECT_NEAR(sum, stage["total"]["mean"].get<double>(), 1e-6 * stage["total"]["mean"].get<double>());
+  EXPECT_NEAR(stage["worker_busy"]["mean"].get<double>() + stage["wake"]["mean"].get<double>(),
+              stage["request_to_pickup"]["mean"].get<double>(), 1e-6 * (1 + stage["total"]["mean"].get<double>()));
 }
 
 TEST_F(Gui, ArrowKeysTurnByOneAndShiftByTenDegrees) {

@@ -124,7 +124,7 @@ TEST_F(GuiVessel, BrokenCenterlineFileIsReportedAndTheAppKeepsRunning) {
   const std::string steps = R"([
     {"click": )" + Box(layout["vg_path"]).middle() + R"(}, {"key": "Ctrl+A"},
     {"text": ")" + file("phantom.csv") + R"("}, {"key": "Enter"},
-    {"click": )" + Box(layout["vg_load"]).middle() + R"(}, {"wait_ms": 100},
+    {"click": )" + Box(layout["vg_load"]).middle() + R"(}, {"wait_level": "high"},
     {"state": ")" + file("loaded.json") + R"("}])";
   const auto run = runScript(steps, " --centerlines " + file("broken.csv"));
   ASSERT_EQ(run.exitCode, 0) << run.output;

@@ -2,44 +2,28 @@
 #include "io/centerline_csv.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "io/input_error.h"
+#include "tests/support/temp_folder_test.h"
 #include "vessel/centerline.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::fileContents;
 
-class CenterlineCsvTest : public ::testing::Test {
+class CenterlineCsvTest : public test_support::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("angioray_csv_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string read(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   // One path of one point at the origin, radius 1 mm.
   static Centerlines onePoint() {
     Centerlines centerlines;
     centerlines.paths = {{"a", {{{0, 0, 0}, 1}}}};
     return centerlines;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
@@ -48,7 +32,7 @@ TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
       {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
   const fs::path file = dir_ / "centerlines.csv";
   writeCenterlinesCsv(centerlinesFromPhantom(paths), file);
-  EXPECT_EQ(read(file),
+  EXPECT_EQ(fileContents(file),
             "path,x_mm,y_mm,z_mm,radius_mm\n"
             "0,1.000,-2.500,3.250,10.000\n"
             "0,1.000,-2.500,2.250,9.500\n"
@@ -61,7 +45,7 @@ TEST_F(CenterlineCsvTest, HeaderMatchesTheSharedReferenceFile) {
   ASSERT_TRUE(std::getline(reference, header));
   const fs::path file = dir_ / "empty.csv";
   writeCenterlinesCsv({}, file);
-  EXPECT_EQ(read(file), header + "\n");
+  EXPECT_EQ(fileContents(file), header + "\n");
 }
 
 TEST_F(CenterlineCsvTest, UnwritableTargetThrowsInputErrorAndLeavesNothing) {
@@ -79,7 +63,7 @@ TEST_F(CenterlineCsvTest, ReplacesAnExistingFileWhole) {
   const fs::path file = dir_ / "centerlines.csv";
   std::ofstream(file) << "old content that is longer than the new one\n" << std::string(1000, 'x');
   writeCenterlinesCsv(onePoint(), file);
-  EXPECT_EQ(read(file), "path,x_mm,y_mm,z_mm,radius_mm\n0,0.000,0.000,0.000,1.000\n");
+  EXPECT_EQ(fileContents(file), "path,x_mm,y_mm,z_mm,radius_mm\n0,0.000,0.000,0.000,1.000\n");
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include "io/centerline_file.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -12,7 +11,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <numbers>
 #include <optional>
 #include <ostream>
@@ -25,6 +23,7 @@
 #include "io/centerline_vtp.h"
 #include "io/input_error.h"
 #include "io/volume_reader.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
@@ -211,28 +210,7 @@ Polylines branchingFixture() {
 
 // --- Helpers ------------------------------------------------------------------------------------
 
-class CenterlineFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    // Parameterised tests are named "Test/N": flatten the '/' so TearDown removes the whole dir.
-    std::string name = info->name();
-    std::replace(name.begin(), name.end(), '/', '_');
-    dir_ = fs::temp_directory_path() /
-           ("angioray-centerlines-" + std::to_string(::getpid()) + "-" + name);
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& bytes) const {
-    const fs::path file = dir_ / name;
-    std::ofstream(file, std::ios::binary) << bytes;
-    return file;
-  }
-
-  fs::path dir_;
-};
+using CenterlineFiles = test_support::TempFolderTest;
 
 // The InputError message of loading `file`, or "" if it loads.
 std::string loadError(const fs::path& file) {
@@ -290,38 +268,30 @@ VtpStyle style(std::string name, std::string format) {
   return s;
 }
 
+// Every encoding tested: each of VTK's formats with the header words, zlib blocks, byte orders and
+// value types it can write.
 std::vector<VtpStyle> allStyles() {
-  std::vector<VtpStyle> styles;
-  styles.push_back(style("Ascii", "ascii"));
-  styles.push_back(style("AsciiFloat64Int32", "ascii"));
-  styles.back().pointType = "Float64";
-  styles.back().indexType = "Int32";
-  styles.push_back(style("Binary", "binary"));
-  styles.push_back(style("BinaryUInt64Header", "binary"));
-  styles.back().uint64Header = true;
-  styles.push_back(style("BinaryZlib", "binary"));
-  styles.back().zlib = true;
-  styles.push_back(style("BinaryZlibUInt64ManyBlocks", "binary"));
-  styles.back().zlib = styles.back().uint64Header = true;
-  styles.back().blockBytes = 520;  // points and radii fill whole blocks, connectivity does not
-  styles.push_back(style("BinaryZlibBigEndian", "binary"));
-  styles.back().zlib = styles.back().bigEndian = true;
-  styles.back().blockBytes = 300;
-  styles.push_back(style("BinaryFloat64Radius", "binary"));
-  styles.back().pointType = "Float64";
-  styles.back().radiusName = "Radius";
-  styles.push_back(style("AppendedRaw", "appended"));
-  styles.push_back(style("AppendedRawZlib", "appended"));
-  styles.back().zlib = true;
-  styles.back().blockBytes = 256;
-  styles.push_back(style("AppendedRawBigEndianUInt64", "appended"));
-  styles.back().bigEndian = styles.back().uint64Header = true;
-  styles.push_back(style("AppendedBase64", "appended"));
-  styles.back().base64Appended = true;
-  styles.push_back(style("AppendedBase64ZlibUInt64", "appended"));
-  styles.back().base64Appended = styles.back().zlib = styles.back().uint64Header = true;
-  styles.back().blockBytes = 1000;
-  return styles;
+  return {
+      {.name = "Ascii", .format = "ascii"},
+      {.name = "AsciiFloat64Int32", .format = "ascii", .pointType = "Float64", .indexType = "Int32"},
+      {.name = "Binary", .format = "binary"},
+      {.name = "BinaryUInt64Header", .format = "binary", .uint64Header = true},
+      {.name = "BinaryZlib", .format = "binary", .zlib = true},
+      // Points and radii fill whole blocks, connectivity does not.
+      {.name = "BinaryZlibUInt64ManyBlocks", .format = "binary", .zlib = true, .uint64Header = true,
+       .blockBytes = 520},
+      {.name = "BinaryZlibBigEndian", .format = "binary", .zlib = true, .bigEndian = true,
+       .blockBytes = 300},
+      {.name = "BinaryFloat64Radius", .format = "binary", .pointType = "Float64",
+       .radiusName = "Radius"},
+      {.name = "AppendedRaw", .format = "appended"},
+      {.name = "AppendedRawZlib", .format = "appended", .zlib = true, .blockBytes = 256},
+      {.name = "AppendedRawBigEndianUInt64", .format = "appended", .uint64Header = true,
+       .bigEndian = true},
+      {.name = "AppendedBase64", .format = "appended", .base64Appended = true},
+      {.name = "AppendedBase64ZlibUInt64", .format = "appended", .base64Appended = true,
+       .zlib = true, .uint64Header = true, .blockBytes = 1000},
+  };
 }
 
 INSTANTIATE_TEST_SUITE_P(CenterlineVtp, VtpEncodings, ::testing::ValuesIn(allStyles()),

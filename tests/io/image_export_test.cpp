@@ -4,21 +4,23 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "io/input_error.h"
+#include "tests/support/expect_input_error.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::expectInputError;
+using test_support::fileContents;
 
 // An analytic pattern: horizontal and vertical gradients, a checker in blue, and values outside
 // [0, 1] (negative and > 1) that the integer formats must clamp and EXR must keep.
@@ -66,52 +68,34 @@ ReadBack readBack(const fs::path& file) {
   return result;
 }
 
-std::string fileContents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
+// Every channel of every pixel of `image`, read back as `values` (`channels` a pixel), equals
+// `expected(the channel's value in the image)`.
+template <class T, class Expected>
+void expectEveryChannel(const std::vector<T>& values, const Image& image, int channels,
+                        const Expected& expected) {
+  ASSERT_EQ(values.size(), image.pixels.size() * channels);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    for (int c = 0; c < channels; ++c)
+      ASSERT_EQ(values[channels * i + c], expected(image.pixels[i][c]))
+          << "pixel " << i << " channel " << c;
+  }
 }
 
-class ImageExportTest : public ::testing::Test {
+class ImageExportTest : public test_support::TempFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("angioray_export_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::vector<std::string> filesInDir() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
+  // Exports `image` with the metadata to the file `name` in the folder and reads it back.
+  ReadBack exportAndReadBack(const Image& image, const std::string& name) const {
+    const fs::path file = dir_ / name;
+    exportImage(image, file, metadata_);
+    return readBack(file);
   }
 
-  // `call` must throw an InputError whose message names `file` and contains `problem`.
-  template <typename Call>
-  void expectInputError(Call call, const fs::path& file, const std::string& problem) {
-    try {
-      call();
-      ADD_FAILURE() << "no error for " << file;
-    } catch (const InputError& error) {
-      const std::string message = error.what();
-      EXPECT_NE(message.find(file.string()), std::string::npos) << message;
-      EXPECT_NE(message.find(problem), std::string::npos) << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
-  }
-
-  fs::path dir_;
   const ImageMetadata metadata_{{"angle", "30"}, {"tf", "cta-vessels"}, {"quality", "high"}};
 };
 
 TEST_F(ImageExportTest, PngIsEightBitRgbEqualToToRgb8) {
   const Image image = gradientImage();
-  const fs::path file = dir_ / "out.png";
-  exportImage(image, file, metadata_);
-  const ReadBack read = readBack(file);
+  const ReadBack read = exportAndReadBack(image, "out.png");
   EXPECT_EQ(read.spec.width, image.width);
   EXPECT_EQ(read.spec.height, image.height);
   EXPECT_EQ(read.spec.nchannels, 3);
@@ -128,19 +112,12 @@ TEST_F(ImageExportTest, PngIsEightBitRgbEqualToToRgb8) {
 
 TEST_F(ImageExportTest, TiffIsSixteenBitRgb) {
   const Image image = gradientImage();
-  const fs::path file = dir_ / "out.tiff";
-  exportImage(image, file, metadata_);
-  const ReadBack read = readBack(file);
+  const ReadBack read = exportAndReadBack(image, "out.tiff");
   EXPECT_EQ(read.spec.nchannels, 3);
   EXPECT_EQ(read.spec.format, OIIO::TypeDesc::UINT16);
-  ASSERT_EQ(read.shorts.size(), image.pixels.size() * 3);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const double expected =
-          std::round(65535.0 * std::clamp(double(image.pixels[i][c]), 0.0, 1.0));
-      ASSERT_EQ(read.shorts[3 * i + c], expected) << "pixel " << i << " channel " << c;
-    }
-  }
+  ASSERT_NO_FATAL_FAILURE(expectEveryChannel(read.shorts, image, 3, [](float value) {
+    return std::round(65535.0 * std::clamp(double(value), 0.0, 1.0));
+  }));
   EXPECT_EQ(read.shorts[2], 49171);  // 0.7503 * 65535 = 49170.9
   EXPECT_NE(read.spec.get_string_attribute("ImageDescription").find("angle=30"), std::string::npos);
 }
@@ -153,16 +130,11 @@ TEST_F(ImageExportTest, TifExtensionAlsoWorksCaseInsensitively) {
 
 TEST_F(ImageExportTest, ExrIsFloatRgbaKeptExactly) {
   const Image image = gradientImage();
-  const fs::path file = dir_ / "out.exr";
-  exportImage(image, file, metadata_);
-  const ReadBack read = readBack(file);
+  const ReadBack read = exportAndReadBack(image, "out.exr");
   EXPECT_EQ(read.spec.nchannels, 4);
   EXPECT_EQ(read.spec.format, OIIO::TypeDesc::FLOAT);
-  ASSERT_EQ(read.floats.size(), image.pixels.size() * 4);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    for (int c = 0; c < 4; ++c)
-      ASSERT_EQ(read.floats[4 * i + c], image.pixels[i][c]) << "pixel " << i << " channel " << c;
-  }
+  ASSERT_NO_FATAL_FAILURE(
+      expectEveryChannel(read.floats, image, 4, [](float value) { return value; }));
   EXPECT_LT(read.floats[0], 0.f);  // unclamped
   EXPECT_EQ(read.spec.channelnames, (std::vector<std::string>{"R", "G", "B", "A"}));
 }
@@ -170,9 +142,7 @@ TEST_F(ImageExportTest, ExrIsFloatRgbaKeptExactly) {
 TEST_F(ImageExportTest, PngAndExrCarryTheMetadata) {
   for (const char* name : {"meta.png", "meta.exr"}) {
     SCOPED_TRACE(name);
-    const fs::path file = dir_ / name;
-    exportImage(gradientImage(), file, metadata_);
-    const OIIO::ImageSpec spec = readBack(file).spec;
+    const OIIO::ImageSpec spec = exportAndReadBack(gradientImage(), name).spec;
     EXPECT_EQ(spec.get_string_attribute("angioray:angle"), "30");
     EXPECT_EQ(spec.get_string_attribute("angioray:tf"), "cta-vessels");
     EXPECT_EQ(spec.get_string_attribute("ImageDescription"),

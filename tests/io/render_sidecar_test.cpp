@@ -4,14 +4,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "io/input_error.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
@@ -82,17 +81,8 @@ void expectSame(const TubeRadius& a, const TubeRadius& b) {
   EXPECT_EQ(a.marginMm, b.marginMm);
 }
 
-class RenderSidecarFiles : public ::testing::Test {
+class RenderSidecarFiles : public test_support::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("angioray-sidecar-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name, std::ios::binary) << text;
-    return dir_ / name;
-  }
   // The one-line message of loading `file` (empty if it loads).
   static std::string loadError(const fs::path& file) {
     try {
@@ -102,7 +92,6 @@ class RenderSidecarFiles : public ::testing::Test {
     }
     return "";
   }
-  fs::path dir_;
 };
 
 TEST_F(RenderSidecarFiles, EveryFieldSurvivesSaveAndLoadExactly) {

@@ -1,58 +1,49 @@
-// Session files: a saved session loads back field for field; bad files are one-line InputErrors
-// naming the file; the last session lives under XDG_CONFIG_HOME; recent files stay unique and few.
+// Session files: a saved session loads back field for field (the VesselGlyph section too); bad
+// files are one-line InputErrors naming the file and the key; the last session lives under
+// XDG_CONFIG_HOME; recent files stay unique and few.
 #include "io/session_file.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
 #include <string>
 
 #include "io/input_error.h"
+#include "io/tf_file.h"
+#include "tests/support/expect_input_error.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SessionFileTest : public ::testing::Test {
+// The folder, and XDG_CONFIG_HOME restored afterwards.
+class SessionFileTest : public test_support::TempFolderTest {
  protected:
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("angioray_session_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    TempFolderTest::SetUp();
     if (const char* xdg = std::getenv("XDG_CONFIG_HOME")) savedXdg_ = xdg;
   }
   void TearDown() override {
     if (savedXdg_) setenv("XDG_CONFIG_HOME", savedXdg_->c_str(), 1);
     else unsetenv("XDG_CONFIG_HOME");
-    fs::remove_all(dir_);
+    TempFolderTest::TearDown();
   }
 
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path file = dir_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-
-  // Loading `text` must throw one line naming the file and containing `problem`.
+  // Loading `text` must throw one line that starts with the file's name and contains `problem`.
   void expectRejected(const std::string& text, const std::string& problem) {
+    SCOPED_TRACE(text);
     const fs::path file = write("bad-session.json", text);
-    try {
-      loadSession(file);
-      ADD_FAILURE() << "accepted: " << text;
-    } catch (const InputError& error) {
-      const std::string message = error.what();
-      EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
-      EXPECT_NE(message.find(problem), std::string::npos) << "wanted \"" << problem << "\" in " << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    const auto message = test_support::expectInputError([&] { loadSession(file); }, file, problem);
+    if (message) {
+      EXPECT_EQ(message->rfind(file.string() + ": ", 0), 0u) << *message;
     }
   }
 
-  fs::path dir_;
   std::optional<std::string> savedXdg_;
 };
 
@@ -74,7 +65,49 @@ Session unusualSession() {
   s.cpr = {true, CprMode::projected, 1, CprColouring::focusTf, true, 3.5};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
+  SessionVesselGlyph& vg = s.vesselGlyph;
+  vg.centerlines = "cl/aorta.vtp";
+  vg.centerlinesAbsolute = "/data/cta/cl/aorta.vtp";
+  vg.enabled = true;
+  vg.overlay = false;
+  vg.settings.focus = {RadiusMode::kConstant, 3.25, 0.5};
+  vg.settings.context = ContextShape::kTube;
+  vg.settings.slab = {12.5, 7.75, 33};
+  vg.settings.contextTube = {RadiusMode::kVesselFactor, 4.5, 1.25};
+  vg.settings.cleft = true;
+  vg.settings.halfVessel = true;
+  vg.settings.unknownVesselRadiusMm = 1.5;
+  vg.settings.simplifyToleranceMm = 0.125;
+  vg.outsideRendered = true;
+  vg.focusTf.name = "my focus";
+  vg.focusTf.points = {{100, {1.0f, 0.1f, 0.05f}, 0.0}, {400, {1.0f, 0.9f, 0.8f}, 0.95}};
+  vg.focusTf.modulators = {0.5, -20};
+  vg.contextTf.name = "my context";
+  vg.contextTf.points = {{-300, {0.3f, 0.3f, 0.3f}, 0.0}, {50, {0.8f, 0.6f, 0.5f}, 0.02},
+                         {900, {1.0f, 1.0f, 1.0f}, 0.1}};
+  vg.focusPreset = "";
+  vg.contextPreset = "soft-tissue-context";
   return s;
+}
+
+void expectSameTf(const TransferFunction& a, const TransferFunction& b) {
+  EXPECT_EQ(a.name, b.name);
+  ASSERT_EQ(a.points.size(), b.points.size()) << a.name;
+  for (std::size_t n = 0; n < a.points.size(); ++n) {
+    EXPECT_DOUBLE_EQ(a.points[n].hu, b.points[n].hu) << a.name << " point " << n;
+    EXPECT_FLOAT_EQ(a.points[n].color.r, b.points[n].color.r) << a.name << " point " << n;
+    EXPECT_FLOAT_EQ(a.points[n].color.g, b.points[n].color.g) << a.name << " point " << n;
+    EXPECT_FLOAT_EQ(a.points[n].color.b, b.points[n].color.b) << a.name << " point " << n;
+    EXPECT_DOUBLE_EQ(a.points[n].opacity, b.points[n].opacity) << a.name << " point " << n;
+  }
+  EXPECT_DOUBLE_EQ(a.modulators.opacityScale, b.modulators.opacityScale) << a.name;
+  EXPECT_DOUBLE_EQ(a.modulators.huShift, b.modulators.huShift) << a.name;
+}
+
+void expectSameRadius(const TubeRadius& a, const TubeRadius& b, const char* what) {
+  EXPECT_EQ(a.mode, b.mode) << what;
+  EXPECT_DOUBLE_EQ(a.value, b.value) << what;
+  EXPECT_DOUBLE_EQ(a.marginMm, b.marginMm) << what;
 }
 
 TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
@@ -118,6 +151,26 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
   EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
+  const SessionVesselGlyph &vg = loaded.vesselGlyph, &want = saved.vesselGlyph;
+  EXPECT_EQ(vg.centerlines, "cl/aorta.vtp");
+  EXPECT_EQ(vg.centerlinesAbsolute, "/data/cta/cl/aorta.vtp");
+  EXPECT_TRUE(vg.enabled);
+  EXPECT_FALSE(vg.overlay);
+  expectSameRadius(vg.settings.focus, want.settings.focus, "focus");
+  EXPECT_EQ(vg.settings.context, ContextShape::kTube);
+  EXPECT_DOUBLE_EQ(vg.settings.slab.frontMm, 12.5);
+  EXPECT_DOUBLE_EQ(vg.settings.slab.backMm, 7.75);
+  EXPECT_DOUBLE_EQ(vg.settings.slab.halfWidthMm, 33);
+  expectSameRadius(vg.settings.contextTube, want.settings.contextTube, "context tube");
+  EXPECT_TRUE(vg.settings.cleft);
+  EXPECT_TRUE(vg.settings.halfVessel);
+  EXPECT_DOUBLE_EQ(vg.settings.unknownVesselRadiusMm, 1.5);
+  EXPECT_DOUBLE_EQ(vg.settings.simplifyToleranceMm, 0.125);
+  EXPECT_TRUE(vg.outsideRendered);
+  expectSameTf(vg.focusTf, want.focusTf);
+  expectSameTf(vg.contextTf, want.contextTf);
+  EXPECT_EQ(vg.focusPreset, "");
+  EXPECT_EQ(vg.contextPreset, "soft-tissue-context");
   // Atomic write: nothing but the session in its folder.
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "sub"), fs::directory_iterator()), 1);
 }
@@ -132,6 +185,44 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
   EXPECT_DOUBLE_EQ(loaded.levels[2].isd, defaults.levels[2].isd);
   EXPECT_FALSE(loaded.cpr.hybrid);
   EXPECT_EQ(loaded.cpr.path, -1);
+  EXPECT_TRUE(loaded.vesselGlyph.centerlines.empty());
+  EXPECT_FALSE(loaded.vesselGlyph.enabled);
+  EXPECT_EQ(loaded.vesselGlyph.settings.context, ContextShape::kSlab);
+  EXPECT_TRUE(loaded.vesselGlyph.focusTf.points.empty());  // the preset's, loaded by the app
+  EXPECT_EQ(loaded.vesselGlyph.focusPreset, defaults.vesselGlyph.focusPreset);
+}
+
+TEST_F(SessionFileTest, VesselGlyphSectionKeepsDefaultsForMissingKeysAndTakesAnUnboundedSlab) {
+  const Session loaded = loadSession(write("vg.json", R"({"vessel_glyph": {"centerlines": "c.csv",
+      "context": {"half_width_mm": "inf", "back_mm": 5}, "focus": {"radius": 2.5}, "focus_tf": null}})"));
+  const SessionVesselGlyph& vg = loaded.vesselGlyph;
+  const SessionVesselGlyph defaults;
+  EXPECT_EQ(vg.centerlines, "c.csv");
+  EXPECT_TRUE(std::isinf(vg.settings.slab.halfWidthMm));
+  EXPECT_DOUBLE_EQ(vg.settings.slab.backMm, 5);
+  EXPECT_DOUBLE_EQ(vg.settings.slab.frontMm, defaults.settings.slab.frontMm);
+  EXPECT_EQ(vg.settings.focus.mode, defaults.settings.focus.mode);
+  EXPECT_DOUBLE_EQ(vg.settings.focus.value, 2.5);
+  EXPECT_TRUE(vg.focusTf.points.empty());
+  EXPECT_EQ(vg.overlay, defaults.overlay);
+  // Written back as "inf".
+  Session again = loaded;
+  again.tf = unusualSession().tf;  // a session always has a main TF
+  saveSession(again, dir_ / "again.json");
+  EXPECT_TRUE(std::isinf(loadSession(dir_ / "again.json").vesselGlyph.settings.slab.halfWidthMm));
+}
+
+// The settings are written in the render sidecar's form (io/vessel_glyph_json.h): the same keys.
+TEST_F(SessionFileTest, VesselGlyphSettingsUseTheSidecarsKeys) {
+  const fs::path file = dir_ / "s.json";
+  saveSession(unusualSession(), file);
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* key : {"\"vessel_glyph\"", "\"radius_mode\": \"mm\"", "\"radius_mode\": \"factor\"",
+                          "\"shape\": \"tube\"", "\"half_width_mm\"", "\"unknown_vessel_radius_mm\"",
+                          "\"simplify_tolerance_mm\"", "\"focus_tf\"", "\"context_tf\"", "\"outside\": \"main-tf\"",
+                          "\"centerlines_absolute\": \"/data/cta/cl/aorta.vtp\""})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
 }
 
 TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
@@ -151,6 +242,36 @@ TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
   expectRejected(R"({"cpr": {"transition_mm": -1}})", "transition_mm");
   expectRejected(R"({"cpr": {"hybrid": "yes"}})", "hybrid is not true or false");
   expectRejected(R"({"transfer_function": {"name": "t", "points": [{"hu": 0}]}})", "point 1");
+}
+
+TEST_F(SessionFileTest, BadVesselGlyphValuesAreOneLineErrorsNamingTheKey) {
+  const auto vg = [](const std::string& section) { return R"({"vessel_glyph": )" + section + "}"; };
+  expectRejected(vg("[]"), "vessel_glyph is not an object");
+  expectRejected(vg(R"({"centerlines": 3})"), "vessel_glyph.centerlines is not a string");
+  expectRejected(vg(R"({"enabled": "on"})"), "vessel_glyph.enabled is not true or false");
+  expectRejected(vg(R"({"overlay": 1})"), "vessel_glyph.overlay is not true or false");
+  expectRejected(vg(R"({"focus": {"radius": -2}})"), "vessel_glyph.focus.radius -2 is out of range");
+  expectRejected(vg(R"({"focus": {"radius": 0}})"), "vessel_glyph.focus.radius 0 is out of range");
+  expectRejected(vg(R"({"focus": {"radius": "wide"}})"), "vessel_glyph.focus.radius is not a number");
+  expectRejected(vg(R"({"focus": {"radius": "NaN"}})"), "vessel_glyph.focus.radius is not a number");
+  expectRejected(vg(R"({"focus": {"radius": NaN}})"), "not valid JSON");
+  expectRejected(vg(R"({"focus": {"radius_mode": "percent"}})"), "vessel_glyph.focus.radius_mode is not factor or mm");
+  expectRejected(vg(R"({"focus": {"margin_mm": -1}})"), "vessel_glyph.focus.margin_mm");
+  expectRejected(vg(R"({"focus": 2})"), "vessel_glyph.focus is not an object");
+  expectRejected(vg(R"({"context": {"shape": "cone"}})"), "vessel_glyph.context.shape is not none, slab or tube");
+  expectRejected(vg(R"({"context": {"front_mm": -5}})"), "vessel_glyph.context.front_mm -5 is out of range");
+  expectRejected(vg(R"({"context": {"back_mm": null}})"), "vessel_glyph.context.back_mm is not a number");
+  expectRejected(vg(R"({"context": {"half_width_mm": "wide"}})"), "vessel_glyph.context.half_width_mm");
+  expectRejected(vg(R"({"context": {"half_width_mm": -1}})"), "vessel_glyph.context.half_width_mm");
+  expectRejected(vg(R"({"context": {"tube": {"radius": -20}}})"), "vessel_glyph.context.tube.radius -20 is out of range");
+  expectRejected(vg(R"({"cleft": "yes"})"), "vessel_glyph.cleft is not true or false");
+  expectRejected(vg(R"({"half_vessel": 0})"), "vessel_glyph.half_vessel is not true or false");
+  expectRejected(vg(R"({"unknown_vessel_radius_mm": -1})"), "vessel_glyph.unknown_vessel_radius_mm");
+  expectRejected(vg(R"({"simplify_tolerance_mm": "x"})"), "vessel_glyph.simplify_tolerance_mm is not a number");
+  expectRejected(vg(R"({"outside": "dim"})"), "vessel_glyph.outside is not clip or main-tf");
+  expectRejected(vg(R"({"focus_tf": 7})"), "vessel_glyph.focus_tf is not a transfer function");
+  expectRejected(vg(R"({"context_tf": {"name": "t", "points": [{"hu": 0}]}})"), "vessel_glyph.context_tf: ");
+  expectRejected(vg(R"({"focus_tf": null, "focus_preset": ""})"), "vessel_glyph.focus_tf is null and focus_preset empty");
 }
 
 TEST_F(SessionFileTest, MissingFileIsAnInputError) {

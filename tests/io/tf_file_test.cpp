@@ -3,7 +3,6 @@
 #include "io/tf_file.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -11,49 +10,35 @@
 #include <string>
 
 #include "io/input_error.h"
+#include "tests/support/expect_input_error.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TfFileTest : public ::testing::Test {
+class TfFileTest : public test_support::TempFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("angioray_tf_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path file = dir_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-
   // Loading `text` must throw an InputError naming the file and containing `problem`.
   void expectRejected(const std::string& text, const std::string& problem) {
+    SCOPED_TRACE(text);
     const fs::path file = write("bad_tf.json", text);
-    try {
-      loadTransferFunction(file);
-      ADD_FAILURE() << "accepted: " << text;
-    } catch (const InputError& error) {
-      const std::string message = error.what();
-      EXPECT_NE(message.find(file.string()), std::string::npos) << message;
-      EXPECT_NE(message.find(problem), std::string::npos)
-          << "wanted \"" << problem << "\" in " << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    test_support::expectInputError([&] { loadTransferFunction(file); }, file, problem);
   }
-
-  fs::path dir_;
 };
 
 std::string pointsJson(const std::string& points) {
   return R"({"name": "t", "points": [)" + points + "]}";
+}
+
+// One control point, each value given as JSON text; the defaults are valid.
+struct PointText {
+  std::string hu = "5", color = "[0, 0, 0]", opacity = "0";
+};
+
+std::string json(const PointText& p) {
+  return R"({"hu": )" + p.hu + R"(, "color": )" + p.color + R"(, "opacity": )" + p.opacity + "}";
 }
 
 const std::string kGood0 = R"({"hu": -1024, "color": [0, 0, 0], "opacity": 0})";
@@ -244,56 +229,46 @@ TEST_F(TfFileTest, RejectsPointsWithMissingKeys) {
 }
 
 TEST_F(TfFileTest, RejectsBadColors) {
-  expectRejected(pointsJson(R"({"hu": 5, "color": [0, 0], "opacity": 0})"),
-                 "point 1: color is not an array of 3 numbers");
-  expectRejected(pointsJson(R"({"hu": 5, "color": [0, 0, 0, 0], "opacity": 0})"),
-                 "point 1: color is not an array of 3 numbers");
-  expectRejected(pointsJson(R"({"hu": 5, "color": "red", "opacity": 0})"),
-                 "point 1: color is not an array of 3 numbers");
-  expectRejected(pointsJson(R"({"hu": 5, "color": [0, "NaN", 0], "opacity": 0})"),
+  for (const char* color : {"[0, 0]", "[0, 0, 0, 0]", R"("red")"})
+    expectRejected(pointsJson(json({.color = color})),
+                   "point 1: color is not an array of 3 numbers");
+  expectRejected(pointsJson(json({.color = R"([0, "NaN", 0])"})),
                  "point 1: color[1] is not a number");
-  expectRejected(pointsJson(R"({"hu": 5, "color": [0, 0, 1.2], "opacity": 0})"),
+  expectRejected(pointsJson(json({.color = "[0, 0, 1.2]"})),
                  "point 1: color[2] 1.2 outside [0, 1]");
-  expectRejected(pointsJson(R"({"hu": 5, "color": [-0.1, 0, 0], "opacity": 0})"),
+  expectRejected(pointsJson(json({.color = "[-0.1, 0, 0]"})),
                  "point 1: color[0] -0.1 outside [0, 1]");
 }
 
 TEST_F(TfFileTest, RejectsNonNumbersAndNonFiniteValues) {
-  expectRejected(pointsJson(R"({"hu": null, "color": [0, 0, 0], "opacity": 0})"),
-                 "point 1: hu is not a number");
-  expectRejected(pointsJson(R"({"hu": "NaN", "color": [0, 0, 0], "opacity": 0})"),
-                 "point 1: hu is not a number");
-  expectRejected(pointsJson(R"({"hu": 5, "color": [0, 0, 0], "opacity": true})"),
-                 "point 1: opacity is not a number");
+  for (const char* hu : {"null", R"("NaN")"})
+    expectRejected(pointsJson(json({.hu = hu})), "point 1: hu is not a number");
+  expectRejected(pointsJson(json({.opacity = "true"})), "point 1: opacity is not a number");
   // JSON has no infinity; the parser refuses overflowing numbers rather than returning inf.
-  expectRejected(pointsJson(R"({"hu": 1e999, "color": [0, 0, 0], "opacity": 0})"),
+  expectRejected(pointsJson(json({.hu = "1e999"})),
                  "not valid JSON: number overflow parsing '1e999'");
-  expectRejected(pointsJson(kGood0 + R"(, {"hu": 5, "color": [0, 0, 0], "opacity": -1e999})"),
+  expectRejected(pointsJson(kGood0 + ", " + json({.opacity = "-1e999"})),
                  "not valid JSON: number overflow");
 }
 
 TEST_F(TfFileTest, RejectsValuesOutOfRange) {
-  expectRejected(
-      pointsJson(kGood0 + "," + kGood1 + R"(, {"hu": 5, "color": [0, 0, 0], "opacity": 1.5})"),
-      "point 3: opacity 1.5 outside [0, 1]");
-  expectRejected(pointsJson(R"({"hu": 5, "color": [0, 0, 0], "opacity": -0.25})"),
-                 "point 1: opacity -0.25 outside [0, 1]");
-  expectRejected(pointsJson(R"({"hu": 3072, "color": [0, 0, 0], "opacity": 0})"),
-                 "point 1: hu 3072 outside [-1024, 3071]");
-  expectRejected(pointsJson(R"({"hu": -1025, "color": [0, 0, 0], "opacity": 0})"),
-                 "point 1: hu -1025 outside [-1024, 3071]");
+  expectRejected(pointsJson(kGood0 + "," + kGood1 + ", " + json({.opacity = "1.5"})),
+                 "point 3: opacity 1.5 outside [0, 1]");
+  expectRejected(pointsJson(json({.opacity = "-0.25"})), "point 1: opacity -0.25 outside [0, 1]");
+  expectRejected(pointsJson(json({.hu = "3072"})), "point 1: hu 3072 outside [-1024, 3071]");
+  expectRejected(pointsJson(json({.hu = "-1025"})), "point 1: hu -1025 outside [-1024, 3071]");
 }
 
 TEST_F(TfFileTest, RejectsBadOptionalBlocks) {
-  expectRejected(R"({"points": [)" + kGood0 + R"(], "mip": {"window": 0, "level": 1}})",
-                 "mip window must be > 0");
-  expectRejected(R"({"points": [)" + kGood0 + R"(], "mip": {"window": "wide"}})",
-                 "mip window is not a number");
-  expectRejected(R"({"points": [)" + kGood0 + R"(], "mip": 3})", "\"mip\" is not an object");
-  expectRejected(R"({"points": [)" + kGood0 + R"(], "modulators": {"opacity_scale": -1}})",
-                 "opacity_scale must be >= 0");
-  expectRejected(R"({"points": [)" + kGood0 + R"(], "modulators": {"hu_shift": null}})",
-                 "hu_shift is not a number");
+  // One valid point and `keys`.
+  const auto withKeys = [](const std::string& keys) {
+    return R"({"points": [)" + kGood0 + "], " + keys + "}";
+  };
+  expectRejected(withKeys(R"("mip": {"window": 0, "level": 1})"), "mip window must be > 0");
+  expectRejected(withKeys(R"("mip": {"window": "wide"})"), "mip window is not a number");
+  expectRejected(withKeys(R"("mip": 3)"), "\"mip\" is not an object");
+  expectRejected(withKeys(R"("modulators": {"opacity_scale": -1})"), "opacity_scale must be >= 0");
+  expectRejected(withKeys(R"("modulators": {"hu_shift": null})"), "hu_shift is not a number");
 }
 
 TEST_F(TfFileTest, NameDefaultsToTheFileStem) {

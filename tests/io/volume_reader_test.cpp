@@ -3,7 +3,6 @@
 #include "io/volume_reader.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,25 +25,12 @@
 #include "io/input_error.h"
 #include "io/dicom_series.h"
 #include "io/volume_formats.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A fresh folder under the system temp dir, removed afterwards.
-class VolumeReaderTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("angioray-volume-reader-" + std::to_string(::getpid()) + "-" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
 
 struct Placement {
   glm::dvec3 spacing{1.0};
@@ -97,6 +83,48 @@ void writeImage(const Image* image, const fs::path& file, bool compress = true) 
 // A volume with a different value at every voxel: HU = i + 10 j + 100 k - 500.
 short asymmetricHu(std::array<int, 3> i) { return short(i[0] + 10 * i[1] + 100 * i[2] - 500); }
 
+// What readVolume gave, and every warning it reported.
+struct WarnedLoad {
+  LoadedVolume loaded;
+  std::vector<std::string> warnings;
+};
+
+WarnedLoad readCollectingWarnings(const fs::path& path) {
+  WarnedLoad result;
+  ReadOptions options;
+  options.warn = [&](const std::string& w) { result.warnings.push_back(w); };
+  result.loaded = readVolume(path, options);
+  return result;
+}
+
+// The volume's grid: `dims` voxels of `spacingMm`, each spacing within `toleranceMm`.
+void expectGrid(const Volume& v, glm::ivec3 dims, glm::dvec3 spacingMm, double toleranceMm) {
+  EXPECT_EQ(v.dims, dims);
+  EXPECT_NEAR(v.spacing.x, spacingMm.x, toleranceMm);
+  EXPECT_NEAR(v.spacing.y, spacingMm.y, toleranceMm);
+  EXPECT_NEAR(v.spacing.z, spacingMm.z, toleranceMm);
+}
+
+// Exactly one warning, containing each of `texts`.
+void expectOneWarning(const std::vector<std::string>& warnings,
+                      std::initializer_list<std::string> texts) {
+  ASSERT_EQ(warnings.size(), 1u);
+  for (const std::string& text : texts)
+    EXPECT_NE(warnings[0].find(text), std::string::npos) << warnings[0];
+}
+
+// The test's own folder, and the asymmetric test image written into it.
+class VolumeReaderTest : public test_support::TempFolderTest {
+ protected:
+  // Writes the 4 x 3 x 2 asymmetricHu image, stored with `placement`, to the file `name` in the
+  // folder; returns its path.
+  fs::path writeAsymmetric(const std::string& name, const Placement& placement = {}) const {
+    const fs::path file = dir_ / name;
+    writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, placement).GetPointer(), file);
+    return file;
+  }
+};
+
 void writeText(const fs::path& file, const std::string& text) {
   std::ofstream out(file, std::ios::binary);
   out << text;
@@ -147,10 +175,7 @@ TEST_F(VolumeReaderTest, ReadsEveryFormatWithValuesAndGeometry) {
     writeImage(makeImage<short>({5, 4, 3}, asymmetricHu, placement).GetPointer(), file);
     const LoadedVolume loaded = readVolume(file);
     const Volume& v = loaded.volume;
-    EXPECT_EQ(v.dims, glm::ivec3(5, 4, 3));
-    EXPECT_NEAR(v.spacing.x, 0.5, 1e-6);
-    EXPECT_NEAR(v.spacing.y, 0.75, 1e-6);
-    EXPECT_NEAR(v.spacing.z, 2.0, 1e-6);
+    expectGrid(v, {5, 4, 3}, {0.5, 0.75, 2.0}, 1e-6);
     EXPECT_NEAR(glm::length(v.origin - placement.origin), 0.0, 1e-4);
     EXPECT_EQ(v.direction, glm::dmat3(1.0));
     EXPECT_NE(loaded.description.find("int16"), std::string::npos) << loaded.description;
@@ -186,9 +211,7 @@ TEST_F(VolumeReaderTest, FlippedAxesComeOutLpsAlignedWithVoxelsMoved) {
   const Placement stored{{0.8, 0.9, 1.5},
                          {-100.0, -20.0, 7.0},
                          glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(0, 0, 1))};
-  const fs::path file = dir_ / "flipped.mha";
-  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
-  const Volume v = readVolume(file).volume;
+  const Volume v = readVolume(writeAsymmetric("flipped.mha", stored)).volume;
   EXPECT_EQ(v.dims, glm::ivec3(4, 3, 2));
   EXPECT_EQ(v.direction, glm::dmat3(1.0));
   // New voxel (0,0,0) is the stored (3,2,0): the one furthest right and anterior.
@@ -203,13 +226,8 @@ TEST_F(VolumeReaderTest, PermutedAxesComeOutLpsAlignedWithSpacingPermuted) {
   const Placement stored{{0.5, 0.7, 2.0},
                          {5.0, 6.0, 7.0},
                          glm::dmat3(glm::dvec3(0, 0, 1), glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0))};
-  const fs::path file = dir_ / "permuted.nrrd";
-  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
-  const Volume v = readVolume(file).volume;
-  EXPECT_EQ(v.dims, glm::ivec3(3, 2, 4));
-  EXPECT_NEAR(v.spacing.x, 0.7, 1e-9);
-  EXPECT_NEAR(v.spacing.y, 2.0, 1e-9);
-  EXPECT_NEAR(v.spacing.z, 0.5, 1e-9);
+  const Volume v = readVolume(writeAsymmetric("permuted.nrrd", stored)).volume;
+  expectGrid(v, {3, 2, 4}, {0.7, 2.0, 0.5}, 1e-9);
   EXPECT_EQ(v.direction, glm::dmat3(1.0));
   // New (i, j, k) = stored (k, 2 - i, j).
   EXPECT_EQ(v.densityAt(0, 1, 3), asymmetricHu({3, 2, 1}) + 1024);
@@ -226,15 +244,9 @@ TEST_F(VolumeReaderTest, ObliqueVolumeIsSnappedWithWarningAndKeepsTrueRotation) 
   // 10 degrees about S, and the first axis flipped: snapped to +L/+P/+S, residual kept.
   Placement stored{{1.0, 1.2, 2.0}, {3.0, 4.0, 5.0}, rotationAboutZ(10.0)};
   stored.direction[0] = -stored.direction[0];
-  const fs::path file = dir_ / "oblique.mha";
-  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
-  std::vector<std::string> warnings;
-  ReadOptions options;
-  options.warn = [&](const std::string& w) { warnings.push_back(w); };
-  const Volume v = readVolume(file, options).volume;
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("10.0 degrees"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[0].find("oblique.mha"), std::string::npos) << warnings[0];
+  const WarnedLoad read = readCollectingWarnings(writeAsymmetric("oblique.mha", stored));
+  ASSERT_NO_FATAL_FAILURE(expectOneWarning(read.warnings, {"10.0 degrees", "oblique.mha"}));
+  const Volume& v = read.loaded.volume;
   EXPECT_EQ(v.dims, glm::ivec3(4, 3, 2));
   const glm::dmat3 residual = v.direction;
   EXPECT_NEAR(residual[0][0], std::cos(glm::radians(10.0)), 1e-6);  // +L axis, rotated 10 degrees
@@ -244,24 +256,16 @@ TEST_F(VolumeReaderTest, ObliqueVolumeIsSnappedWithWarningAndKeepsTrueRotation) 
 
 TEST_F(VolumeReaderTest, SlightlyObliqueVolumeKeepsRotationWithoutWarning) {
   const Placement stored{{1.0, 1.0, 1.0}, {0.0, 0.0, 0.0}, rotationAboutZ(0.5)};
-  const fs::path file = dir_ / "slight.nii.gz";
-  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
-  std::vector<std::string> warnings;
-  ReadOptions options;
-  options.warn = [&](const std::string& w) { warnings.push_back(w); };
-  const Volume v = readVolume(file, options).volume;
-  EXPECT_TRUE(warnings.empty());
-  EXPECT_NEAR(v.direction[0][1], std::sin(glm::radians(0.5)), 1e-5);
+  const WarnedLoad read = readCollectingWarnings(writeAsymmetric("slight.nii.gz", stored));
+  EXPECT_TRUE(read.warnings.empty());
+  EXPECT_NEAR(read.loaded.volume.direction[0][1], std::sin(glm::radians(0.5)), 1e-5);
 }
 
 TEST_F(VolumeReaderTest, AortaLoadsReorientedWithValuesAsStored) {
   const fs::path file = fs::path(ANGIORAY_SHARED_DATA) / "aorta.mha";
   const LoadedVolume loaded = readVolume(file);
   const Volume& v = loaded.volume;
-  EXPECT_EQ(v.dims, glm::ivec3(157, 393, 34));
-  EXPECT_NEAR(v.spacing.x, 0.878906, 1e-6);
-  EXPECT_NEAR(v.spacing.y, 0.878906, 1e-6);
-  EXPECT_NEAR(v.spacing.z, 1.50009, 1e-6);
+  expectGrid(v, {157, 393, 34}, {0.878906, 0.878906, 1.50009}, 1e-6);
   EXPECT_EQ(v.direction, glm::dmat3(1.0));
   EXPECT_NE(loaded.description.find("float32"), std::string::npos);
   // Stored direction diag(-1,-1,1), origin (-156.445, -24.6094, 0): new voxel 0 is stored (156, 392, 0).
@@ -300,21 +304,17 @@ TEST_F(VolumeReaderTest, NanAndInfinityBecomeMinus1024WithWarning) {
                               })
                  .GetPointer(),
              file);
-  std::vector<std::string> warnings;
-  ReadOptions options;
-  options.warn = [&](const std::string& w) { warnings.push_back(w); };
-  const Volume v = readVolume(file, options).volume;
+  const WarnedLoad read = readCollectingWarnings(file);
+  const Volume& v = read.loaded.volume;
   EXPECT_EQ(v.densityAt(0, 0, 0), 0);
   EXPECT_EQ(v.densityAt(2, 1, 1), 0);
   EXPECT_EQ(v.densityAt(1, 0, 1), 0);
   EXPECT_EQ(v.densityAt(1, 1, 0), 40 + 1024);
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("3 voxels"), std::string::npos) << warnings[0];
+  expectOneWarning(read.warnings, {"3 voxels"});
 }
 
 TEST_F(VolumeReaderTest, ReportsProgressFromStartToEnd) {
-  const fs::path file = dir_ / "p.mha";
-  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu).GetPointer(), file);
+  const fs::path file = writeAsymmetric("p.mha");
   std::vector<double> reports;
   ReadOptions options;
   options.progress = [&](double p) { reports.push_back(p); };
@@ -457,10 +457,7 @@ TEST_F(VolumeReaderTest, DicomSeriesLoadsInPositionOrderWithRescaleApplied) {
   writeDicomSeries(dir_, {0, 1, 2, 3, 4, 5, 6, 7}, "1.2.826.0.1.3680043.2.1125.777.1", 42);
   const LoadedVolume loaded = readVolume(dir_);
   const Volume& v = loaded.volume;
-  EXPECT_EQ(v.dims, glm::ivec3(16, 16, 8));
-  EXPECT_NEAR(v.spacing.x, 0.7, 1e-6);
-  EXPECT_NEAR(v.spacing.y, 0.7, 1e-6);
-  EXPECT_NEAR(v.spacing.z, 2.5, 1e-6);
+  expectGrid(v, {16, 16, 8}, {0.7, 0.7, 2.5}, 1e-6);
   EXPECT_NEAR(glm::length(v.origin - glm::dvec3(-12, 30.5, 5)), 0.0, 1e-6);
   EXPECT_EQ(v.direction, glm::dmat3(1.0));
   EXPECT_NE(loaded.description.find("8 slices"), std::string::npos) << loaded.description;
@@ -478,15 +475,10 @@ TEST_F(VolumeReaderTest, DicomSeriesWithMissingSlicesNamesThePositions) {
 TEST_F(VolumeReaderTest, DicomFolderWithTwoSeriesLoadsTheBiggerAndWarns) {
   writeDicomSeries(dir_, {0, 1, 2}, "1.2.826.0.1.3680043.2.1125.777.2", 1);
   writeDicomSeries(dir_, {0, 1, 2, 3, 4, 5}, "1.2.826.0.1.3680043.2.1125.777.3", 2);
-  std::vector<std::string> warnings;
-  ReadOptions options;
-  options.warn = [&](const std::string& w) { warnings.push_back(w); };
-  const LoadedVolume loaded = readVolume(dir_, options);
-  EXPECT_EQ(loaded.volume.dims.z, 6);
-  EXPECT_NE(loaded.description.find("777.3"), std::string::npos) << loaded.description;
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("1.2.826.0.1.3680043.2.1125.777.2 (3 slices)"), std::string::npos)
-      << warnings[0];
+  const WarnedLoad read = readCollectingWarnings(dir_);
+  EXPECT_EQ(read.loaded.volume.dims.z, 6);
+  EXPECT_NE(read.loaded.description.find("777.3"), std::string::npos) << read.loaded.description;
+  expectOneWarning(read.warnings, {"1.2.826.0.1.3680043.2.1125.777.2 (3 slices)"});
 }
 
 TEST_F(VolumeReaderTest, DicomSeriesWithMixedOrientationsIsAnError) {
@@ -534,15 +526,9 @@ TEST(DicomSlicePositions, FindsMissingSlicesAndRejectsIrregularSteps) {
 TEST_F(VolumeReaderTest, StronglyObliqueVolumeStillMapsEveryVoxel) {
   // 44 degrees about S: each stored axis still gets its own LPS axis.
   const Placement stored{{0.9, 1.1, 1.3}, {1.0, 2.0, 3.0}, rotationAboutZ(44.0)};
-  const fs::path file = dir_ / "steep.nrrd";
-  writeImage(makeImage<short>({4, 3, 2}, asymmetricHu, stored).GetPointer(), file);
-  std::vector<std::string> warnings;
-  ReadOptions options;
-  options.warn = [&](const std::string& w) { warnings.push_back(w); };
-  const Volume v = readVolume(file, options).volume;
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("44.0 degrees"), std::string::npos) << warnings[0];
-  expectSamePhysicalVoxels(v, {4, 3, 2}, stored, asymmetricHu);
+  const WarnedLoad read = readCollectingWarnings(writeAsymmetric("steep.nrrd", stored));
+  ASSERT_NO_FATAL_FAILURE(expectOneWarning(read.warnings, {"44.0 degrees"}));
+  expectSamePhysicalVoxels(read.loaded.volume, {4, 3, 2}, stored, asymmetricHu);
 }
 
 // ---- bad input -------------------------------------------------------------------------------

@@ -2,10 +2,7 @@
 #include "io/volume_writer.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -13,32 +10,15 @@
 #include "io/input_error.h"
 #include "io/volume_formats.h"
 #include "io/volume_reader.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::fileContents;
 
-class VolumeWriterTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("angioray-volume-writer-" + std::to_string(::getpid()) + "-" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::vector<std::string> filesInDir() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir_))
-      names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-  fs::path dir_;
-};
+using VolumeWriterTest = test_support::TempFolderTest;
 
 // Densities covering the whole 12-bit range, different at every voxel, with a label in some.
 Volume testVolume() {
@@ -53,11 +33,6 @@ Volume testVolume() {
   v.voxels[v.indexOf(6, 4, 2)] = 4095;
   v.voxels[v.indexOf(0, 0, 0)] = 0;
   return v;
-}
-
-std::string fileBytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 TEST_F(VolumeWriterTest, RoundTripsEveryFormatWithoutLabels) {
@@ -110,7 +85,7 @@ TEST_F(VolumeWriterTest, CompressesWhereTheFormatAllows) {
     writeVolume(uniform, dir_ / name);
     EXPECT_LT(fs::file_size(dir_ / name), raw / 20) << name;
   }
-  EXPECT_EQ(fileBytes(dir_ / "u.nii.gz").substr(0, 2), "\x1f\x8b");
+  EXPECT_EQ(fileContents(dir_ / "u.nii.gz").substr(0, 2), "\x1f\x8b");
   writeVolume(uniform, dir_ / "u.nii");
   EXPECT_GT(fs::file_size(dir_ / "u.nii"), raw);  // plain NIfTI is uncompressed by definition
 }
@@ -127,8 +102,8 @@ TEST_F(VolumeWriterTest, LeavesOnlyTheTargetFiles) {
   EXPECT_EQ(files[1], "b.mhd");
   EXPECT_EQ(files[3], "c.nhdr");
   // The detached headers name their data files by final name.
-  EXPECT_NE(fileBytes(dir_ / "b.mhd").find("ElementDataFile = " + files[2]), std::string::npos);
-  EXPECT_NE(fileBytes(dir_ / "c.nhdr").find(files[4]), std::string::npos);
+  EXPECT_NE(fileContents(dir_ / "b.mhd").find("ElementDataFile = " + files[2]), std::string::npos);
+  EXPECT_NE(fileContents(dir_ / "c.nhdr").find(files[4]), std::string::npos);
 }
 
 TEST_F(VolumeWriterTest, UnknownExtensionIsAnErrorAndWritesNothing) {

@@ -78,6 +78,20 @@ VesselGlyphSettings exactFocusOnly() {
   return settings;
 }
 
+// exactFocusOnly(), simplified with `toleranceMm`.
+VesselGlyphSettings simplifiedFocusOnly(double toleranceMm) {
+  VesselGlyphSettings settings = exactFocusOnly();
+  settings.simplifyToleranceMm = toleranceMm;
+  return settings;
+}
+
+// Simplified collinear points keep one segment per piece of 256 points, the piece ends kept: one
+// chain of (points - 1) / 255 + 2 points.
+void expectOneSegmentPerPiece(const GlyphTubes& tubes, std::size_t points) {
+  ASSERT_EQ(tubes.chains.size(), 1u);
+  EXPECT_EQ(tubes.chains[0].size(), (points - 1) / 255 + 2);
+}
+
 struct Pixel {
   int x, y;
 };
@@ -567,12 +581,10 @@ TEST(VesselGlyph, SharedTrunkIsCountedOnce) {
 }
 
 TEST(VesselGlyph, SimplificationMergesCollinearPointsAndStaysWithinTolerance) {
-  VesselGlyphSettings settings = exactFocusOnly();
-  settings.simplifyToleranceMm = 0.1;
+  const VesselGlyphSettings settings = simplifiedFocusOnly(0.1);
   const GlyphTubes straight = prepareGlyphTubes(
       inVolumeFrame({straightPath("dense", {10, 10, 10}, {50, 50, 60}, 1000, 3.0)}), settings);
-  ASSERT_EQ(straight.chains.size(), 1u);
-  EXPECT_EQ(straight.chains[0].size(), 999u / 255 + 2);  // one segment per piece of 256 points
+  ASSERT_NO_FATAL_FAILURE(expectOneSegmentPerPiece(straight, 1000));
   EXPECT_NEAR(straight.chains[0][0].focusRadiusMm, 3.1, 1e-12);  // grown by the tolerance
 
   const GlyphTubes tortuous = prepareGlyphTubes(inVolumeFrame({tortuousPath()}), settings);
@@ -586,13 +598,10 @@ TEST(VesselGlyph, SimplificationMergesCollinearPointsAndStaysWithinTolerance) {
 }
 
 TEST(VesselGlyph, LongPathsAreSimplifiedPieceByPiece) {
-  VesselGlyphSettings settings = exactFocusOnly();
-  settings.simplifyToleranceMm = 0.1;
-  // 2000 collinear points: one segment per piece of 256 points, the piece ends kept.
   const GlyphTubes tubes = prepareGlyphTubes(
-      inVolumeFrame({straightPath("long", {10, 10, 5}, {50, 50, 70}, 2000, 2.0)}), settings);
-  ASSERT_EQ(tubes.chains.size(), 1u);
-  EXPECT_EQ(tubes.chains[0].size(), 1999u / 255 + 2);
+      inVolumeFrame({straightPath("long", {10, 10, 5}, {50, 50, 70}, 2000, 2.0)}),
+      simplifiedFocusOnly(0.1));
+  expectOneSegmentPerPiece(tubes, 2000);
 }
 
 TEST(VesselGlyph, NoCenterlinesOrSinglePointsGiveEmptyRaysOrBalls) {
