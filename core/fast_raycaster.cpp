@@ -63,8 +63,8 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
   row.span = span;
   const std::size_t perSlice = f.tiles.tilesPerSlice();
   const bool mip = f.params.compositing == Compositing::mip;
-  if (mip) row.maxDensity.assign(perSlice, 0);
-  else row.visible.assign(perSlice, 0);
+  row.maxDensity.assign(perSlice, 0);
+  row.visible.assign(perSlice, 0);
   const bool wide = f.params.sampling.filter == Filter::mean;
   const auto& sliceMax = wide ? f.tiles.wideMaxDensity : f.tiles.maxDensity;
   const std::uint8_t bit = visibilityBit(f.params.sampling.filter);
@@ -81,8 +81,8 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
     }
   }
   const std::size_t groups = std::size_t(f.tiles.groupsB()) * f.tiles.groupsC();
-  if (mip) row.groupMaxDensity.assign(groups, 0);
-  else row.groupVisible.assign(groups, 0);
+  row.groupVisible.assign(groups, 0);
+  row.groupMaxDensity.assign(groups, 0);
   // Tile rows in order, each tile into its group (kGroupTiles^2 tiles): no index table.
   const int tilesB = f.tiles.tilesB, groupsB = f.tiles.groupsB();
   for (int tc = 0; tc < f.tiles.tilesC; ++tc) {
@@ -291,10 +291,9 @@ struct RowScratch {
 // May the tile (or group) change a pixel of the bundle's column: something visible there (DVR), or
 // something denser than the smallest maximum so far (MIP)?
 template <class Mode, class Sampler>
-bool mayShow(const std::vector<std::uint8_t>& visible, const std::vector<std::uint16_t>& maxDensity,
-             std::size_t n, const BundleRay<Sampler>& b, int lanes) {
-  if constexpr (Mode::mip) return float(maxDensity[n]) > b.mipFloor(lanes);
-  else return visible[n] != 0;
+bool mayShow(std::uint8_t visible, std::uint16_t maxDensity, const BundleRay<Sampler>& b, int lanes) {
+  if constexpr (Mode::mip) return float(maxDensity) > b.mipFloor(lanes);
+  else return visible != 0;
 }
 
 // The samples of one column's passage through a tile group. Returns true if every lane is done.
@@ -303,11 +302,11 @@ template <class Mode, class Sampler>
 bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, const GroupRun& group,
                 BundleRay<Sampler>& b, std::uint64_t& samples) {
   if (Mode::mip && f.skipGroups &&
-      !mayShow<Mode>(row.groupVisible, row.groupMaxDensity, group.group, b, bundle.lanes))
+      !mayShow<Mode>(row.groupVisible[group.group], row.groupMaxDensity[group.group], b, bundle.lanes))
     return false;
   for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
     const TileRun& run = f.templates.runs[r];
-    if (f.skipTiles && !mayShow<Mode>(row.visible, row.maxDensity, run.tile, b, bundle.lanes))
+    if (f.skipTiles && !mayShow<Mode>(row.visible[run.tile], row.maxDensity[run.tile], b, bundle.lanes))
       continue;
     const long end = run.firstSample + run.count;
     long first = run.firstSample;
@@ -324,7 +323,7 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
 template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   BundleRay<Sampler> b{RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
-                       Sampler(f.volume, f.rayStepQ, f.view.axis, f.skipCells), {}, bundle.lanes};
+                       Sampler(f.volume, f.rayStepQ, f.view.axis), {}, bundle.lanes};
   for (int l = 0; l < bundle.lanes; ++l)
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
   return b;

@@ -38,60 +38,21 @@ enum class VoxelFilter { nearest, mean };
 template <VoxelFilter Filter>
 class VoxelRaySampler {
  public:
-  // `axis`: the rotation axis a, along which the ray does not move.
-  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int axis, bool)
-      : volume_(volume), strides_(voxelStrides(volume)), axis_(axis), axisB_((axis + 1) % 3),
-        axisC_((axis + 2) % 3) {}
+  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int) : volume_(volume) {}
 
-  // nearestVoxel's index, the one along a computed once per ray.
-  void moveTo(const glm::dvec3& q) {
-    if (!axisSet_) {
-      setNearest(q, axis_);
-      interiorA_ = hasNeighbours(axis_);
-      axisSet_ = true;
-    }
-    setNearest(q, axisB_);
-    setNearest(q, axisC_);
-    interior_ = interiorA_ && hasNeighbours(axisB_) && hasNeighbours(axisC_);
-    at_ = volume_.voxels.data() + volume_.indexOf(voxel_.x, voxel_.y, voxel_.z);
-  }
+  void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
-  // As meanDensity / the nearest voxel's density (volume_sampling.h), through pointer offsets
-  // inside the volume: the same voxels summed in the same order.
   float density(float) const {
-    if constexpr (Filter == VoxelFilter::mean) {
-      if (!interior_) return meanDensity(volume_, voxel_);
-      float sum = float(densityOf(*at_));
-      for (int axis = 0; axis < 3; ++axis)
-        sum += float(densityOf(at_[-strides_[axis]])) + float(densityOf(at_[strides_[axis]]));
-      return sum / 7.f;
-    } else {
-      return float(densityOf(*at_));
-    }
+    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, voxel_);
+    else return float(volume_.densityAt(voxel_.x, voxel_.y, voxel_.z));
   }
-  glm::vec3 gradient(float) const {
-    if (!interior_) return voxelGradient(volume_, voxel_);
-    return voxelGradientInterior(at_, strides_, volume_.spacing);
-  }
+  glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_); }
 
  private:
-  void setNearest(const glm::dvec3& q, int axis) {
-    componentOf(voxel_, axis) =
-        std::clamp(int(std::floor(componentOf(q, axis) + 0.5)), 0, componentOf(volume_.dims, axis) - 1);
-  }
-  bool hasNeighbours(int axis) const {
-    const int v = componentOf(voxel_, axis);
-    return v >= 1 && v + 1 < componentOf(volume_.dims, axis);
-  }
-
   const Volume& volume_;
-  const glm::ivec3 strides_;
-  const int axis_, axisB_, axisC_;  // a and the in-plane axes b, c
-  bool axisSet_ = false, interiorA_ = false, interior_ = false;
   glm::ivec3 voxel_{0};
-  const Voxel* at_ = nullptr;
 };
 
 using NearestRaySampler = VoxelRaySampler<VoxelFilter::nearest>;
@@ -99,28 +60,18 @@ using MeanRaySampler = VoxelRaySampler<VoxelFilter::mean>;
 
 class TrilinearRaySampler {
  public:
-  // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a
-  // (step[axis] = 0); `cellRanges`: keep each cell's density range (for mayBeVisible, maxDensity).
-  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis, bool cellRanges)
-      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)), axis_(axis),
-        axisB_((axis + 1) % 3), axisC_((axis + 2) % 3), cellRanges_(cellRanges) {
+  // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a.
+  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis)
+      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)), axis_(axis) {
     for (int axis = 0; axis < 3; ++axis) {
       forward_[axis] = step[axis] > 0;
       inverseStep_[axis] = step[axis] != 0 ? 1.0 / std::abs(step[axis]) : 0.0;
     }
   }
 
-  // The ray does not move along a, so the cell's base and fraction along a are those of the
-  // first sample; only the two in-plane axes are computed per sample (the same values cellAt
-  // gives).
   void moveTo(const glm::dvec3& q) {
     q_ = q;
-    if (!axisSet_) {
-      cellAlong(volume_, componentOf(q, axis_), axis_, cell_);
-      axisSet_ = true;
-    }
-    cellAlong(volume_, componentOf(q, axisB_), axisB_, cell_);
-    cellAlong(volume_, componentOf(q, axisC_), axisC_, cell_);
+    cell_ = cellAt(volume_, q);
     densityPlanesReady_ = gradientPlanesReady_ = false;
     if (cell_.base != cached_) load();
   }
@@ -168,7 +119,7 @@ class TrilinearRaySampler {
   // The current cell as one row of the bundle sees it.
   Cell rowCell(float fracA) const {
     Cell cell = cell_;
-    componentOf(cell.frac, axis_) = fracA;
+    cell.frac[axis_] = fracA;
     return cell;
   }
 
@@ -185,14 +136,17 @@ class TrilinearRaySampler {
     cached_ = cell_.base;
     gradientsLoaded_ = false;
     const Voxel* base = volume_.voxels.data() + volume_.indexOf(cached_.x, cached_.y, cached_.z);
+    int lo = 4095, hi = 0;
     for (int dz = 0; dz < 2; ++dz)
       for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx)
-          corners_[corner(dx, dy, dz)] = float(densityOf(base[dx * steps_.x + dy * steps_.y + dz * steps_.z]));
-    if (!cellRanges_) return;
-    const auto [lo, hi] = std::minmax_element(corners_.begin(), corners_.end());
-    lo_ = int(*lo);
-    hi_ = int(*hi);
+        for (int dx = 0; dx < 2; ++dx) {
+          const int d = densityOf(base[dx * steps_.x + dy * steps_.y + dz * steps_.z]);
+          corners_[corner(dx, dy, dz)] = float(d);
+          lo = std::min(lo, d);
+          hi = std::max(hi, d);
+        }
+    lo_ = lo;
+    hi_ = hi;
   }
 
   // As trilinearGradient computes each corner's central differences (volume_sampling.h). Inside
@@ -232,9 +186,7 @@ class TrilinearRaySampler {
   const Volume& volume_;
   const glm::ivec3 steps_;
   const Box interior_;
-  const int axis_, axisB_, axisC_;  // a and the in-plane axes b, c
-  const bool cellRanges_;
-  bool axisSet_ = false;
+  const int axis_;
   glm::dvec3 inverseStep_{0.0};  // 1 / |step| per axis, 0 where the ray does not move along it
   glm::bvec3 forward_{false};
   Cell cell_;

@@ -8,19 +8,11 @@
 #include <cstddef>
 
 #include <glm/glm.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "core/render_params.h"
 #include "core/volume.h"
 
 namespace angio {
-
-// A vector component by an index known only at run time: glm's operator[] compiles to a switch
-// there, which costs more than the rest of a hot path; this indexes the components' storage.
-template <class Vec>
-auto& componentOf(Vec& v, int axis) {
-  return glm::value_ptr(v)[axis];
-}
 
 inline glm::ivec3 clampIndex(const Volume& volume, glm::ivec3 index) {
   return glm::clamp(index, glm::ivec3(0), volume.dims - 1);
@@ -79,19 +71,14 @@ struct Cell {
   glm::vec3 frac{0.f};
 };
 
-// One axis of cellAt: the base and fraction along `axis` for the coordinate q along it.
-inline void cellAlong(const Volume& volume, double q, int axis, Cell& cell) {
-  const int n = componentOf(volume.dims, axis);
-  const int lastBase = std::max(n - 2, 0);
-  const double clamped = std::clamp(q, 0.0, double(n - 1));
-  const int base = std::min(int(std::floor(clamped)), lastBase);
-  componentOf(cell.base, axis) = base;
-  componentOf(cell.frac, axis) = float(clamped - base);
-}
-
 inline Cell cellAt(const Volume& volume, glm::dvec3 q) {
   Cell cell;
-  for (int axis = 0; axis < 3; ++axis) cellAlong(volume, q[axis], axis, cell);
+  for (int axis = 0; axis < 3; ++axis) {
+    const int lastBase = std::max(volume.dims[axis] - 2, 0);
+    const double clamped = std::clamp(q[axis], 0.0, double(volume.dims[axis] - 1));
+    cell.base[axis] = std::min(int(std::floor(clamped)), lastBase);
+    cell.frac[axis] = float(clamped - cell.base[axis]);
+  }
   return cell;
 }
 
