@@ -7,8 +7,10 @@
 // together, so a cell's corners, transparency and gradients serve all of them (at the high level
 // about 2.5 rows share a slice pair: 2x); cell transparency and the cell's gradients cached per ray
 // (core/ray_samplers.h); early ray termination; bundles in parallel (oneTBB, dynamic balance).
-// Every evaluated sample uses the reference's arithmetic (core/compositing.h), so the image is the
-// reference's, bit for bit, for every filter, mode, axis and angle.
+// Every evaluated sample uses the reference's operations (core/compositing.h), so the image is the
+// reference's for every filter, mode, axis and angle, up to float rounding: the compiler may fuse
+// a multiply and an add (-ffp-contract) in one inlined path and not in the other. Measured on the
+// 512x512x1200 phantom at medium with trilinear: at most 1.8e-7 per channel.
 #include <atomic>
 #include <cstdint>
 #include <vector>
