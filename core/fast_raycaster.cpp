@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -85,6 +86,20 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
   row.groupMaxDensity.assign(groups, 0);
   // Tile rows in order, each tile into its group (kGroupTiles^2 tiles): no index table.
   const int tilesB = f.tiles.tilesB, groupsB = f.tiles.groupsB();
+  if (!mip && tilesB % kGroupTiles == 0) {
+    // The common case: a group's tiles in a tile row are 4 consecutive bytes, tested as one word.
+    static_assert(kGroupTiles == sizeof(std::uint32_t));
+    for (int tc = 0; tc < f.tiles.tilesC; ++tc) {
+      const std::uint8_t* in = row.visible.data() + std::size_t(tc) * tilesB;
+      std::uint8_t* out = row.groupVisible.data() + std::size_t(tc / kGroupTiles) * groupsB;
+      for (int gb = 0; gb < groupsB; ++gb) {
+        std::uint32_t tiles;
+        std::memcpy(&tiles, in + gb * kGroupTiles, sizeof tiles);
+        out[gb] |= tiles != 0;
+      }
+    }
+    return;
+  }
   for (int tc = 0; tc < f.tiles.tilesC; ++tc) {
     const std::size_t rowBase = std::size_t(tc) * tilesB;
     const std::size_t groupBase = std::size_t(tc / kGroupTiles) * groupsB;
