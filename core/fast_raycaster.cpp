@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
@@ -130,26 +129,27 @@ struct RowBundle {
   double qa = 0;  // the first row's axis coordinate, voxel units
 };
 
-// The row's axis coordinate in voxel units, as RaySamples computes it (q = origin / spacing).
-double rowAxisCoordinate(const Frame& f, int y) {
-  return f.view.rayOrigin(0, y)[f.view.axis] / f.volume.spacing[f.view.axis];
-}
+// Where row y's rays are along a, and what decides the voxels they read there: cellAt's base
+// (trilinear) or nearestVoxel's index (nearest, mean), from the row's first ray origin as
+// RaySamples computes it (q = origin / spacing; every ray of a row has the same q along a).
+struct RowPlace {
+  bool outside = false;  // above or below the domain (the reference's slab test, see sampleRange)
+  double qa = 0;         // voxel units
+  int key = -1;          // rows with the same key read the same voxels along a
+  float fracA = 0;       // cellAt's fraction along a
+};
 
-bool rowOutsideDomain(const Frame& f, int y) {
-  const double axisMm = f.view.rayOrigin(0, y)[f.view.axis];
-  return axisMm < -1e-9 || axisMm > f.view.extent[f.view.axis] + 1e-9;
-}
-
-// What decides the voxels a row reads along a: cellAt's base or nearestVoxel's index.
-int rowVoxelKey(const Frame& f, double qa) {
-  const int n = f.volume.dims[f.view.axis];
-  if (f.params.sampling.filter == Filter::trilinear) return cellBase(qa, n);
-  return std::clamp(int(std::floor(qa + 0.5)), 0, n - 1);
-}
-
-float rowFraction(const Frame& f, double qa) {
-  const int n = f.volume.dims[f.view.axis];
-  return float(std::clamp(qa, 0.0, double(n - 1)) - cellBase(qa, n));
+RowPlace rowPlace(const Frame& f, int y) {
+  const int a = f.view.axis;
+  const glm::dvec3 origin = f.view.rayOrigin(0, y);
+  const glm::dvec3 q = origin / f.volume.spacing;
+  const Cell cell = cellAt(f.volume, q);
+  RowPlace place;
+  place.outside = origin[a] < -1e-9 || origin[a] > f.view.extent[a] + 1e-9;
+  place.qa = q[a];
+  place.key = f.params.sampling.filter == Filter::trilinear ? cell.base[a] : nearestVoxel(f.volume, q)[a];
+  place.fracA = cell.frac[a];
+  return place;
 }
 
 std::vector<RowBundle> rowBundles(const Frame& f) {
@@ -158,22 +158,20 @@ std::vector<RowBundle> rowBundles(const Frame& f) {
   std::vector<RowBundle> bundles;
   int lastKey = -1;
   for (int y = 0; y < f.view.height; ++y) {
-    const double qa = rowAxisCoordinate(f, y);
-    const bool outside = rowOutsideDomain(f, y);
-    const int key = outside ? -1 : rowVoxelKey(f, qa);
+    const RowPlace place = rowPlace(f, y);
     RowBundle* last = bundles.empty() ? nullptr : &bundles.back();
-    if (last && !outside && !last->outside && key == lastKey && last->rows < maxRows) {
-      last->fracA[last->rows++] = rowFraction(f, qa);
+    if (last && !place.outside && !last->outside && place.key == lastKey && last->rows < maxRows) {
+      last->fracA[last->rows++] = place.fracA;
       last->lanes = distinctRays ? last->rows : 1;
       continue;
     }
     RowBundle bundle;
     bundle.firstRow = y;
-    bundle.outside = outside;
-    bundle.qa = qa;
-    bundle.fracA[0] = rowFraction(f, qa);
+    bundle.outside = place.outside;
+    bundle.qa = place.qa;
+    bundle.fracA[0] = place.fracA;
     bundles.push_back(bundle);
-    lastKey = key;
+    lastKey = place.outside ? -1 : place.key;
   }
   return bundles;
 }

@@ -72,7 +72,7 @@ class TrilinearRaySampler {
   void moveTo(const glm::dvec3& q) {
     q_ = q;
     cell_ = cellAt(volume_, q);
-    densityPlanesReady_ = gradientPlanesReady_ = false;
+    densityPlanes_.ready = gradientPlanes_.ready = false;
     if (cell_.base != cached_) load();
   }
   bool mayBeVisible(const TfTable& table) const { return table.anyVisible(lo_, hi_); }
@@ -94,23 +94,13 @@ class TrilinearRaySampler {
   // only in the last of trilinear's interpolations, along z: the two bilinear planes are computed
   // once per sample for all rows.
   float density(float fracA) {
-    auto corners = [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; };
-    if (axis_ != 2) return trilinear(rowCell(fracA), corners);
-    if (!densityPlanesReady_) {
-      densityPlanes_ = {bilinearInPlane(cell_, corners, 0), bilinearInPlane(cell_, corners, 1)};
-      densityPlanesReady_ = true;
-    }
-    return interpolate(densityPlanes_[0], densityPlanes_[1], fracA);
+    return interpolateRow(fracA, [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; },
+                          densityPlanes_);
   }
   glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();
-    auto corners = [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; };
-    if (axis_ != 2) return trilinear(rowCell(fracA), corners);
-    if (!gradientPlanesReady_) {
-      gradientPlanes_ = {bilinearInPlane(cell_, corners, 0), bilinearInPlane(cell_, corners, 1)};
-      gradientPlanesReady_ = true;
-    }
-    return interpolate(gradientPlanes_[0], gradientPlanes_[1], fracA);
+    return interpolateRow(fracA, [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; },
+                          gradientPlanes_);
   }
 
  private:
@@ -121,6 +111,24 @@ class TrilinearRaySampler {
     Cell cell = cell_;
     cell.frac[axis_] = fracA;
     return cell;
+  }
+
+  // The current sample's two bilinear planes z = base and base + 1, kept until the next moveTo.
+  template <class T>
+  struct Planes {
+    bool ready = false;
+    std::array<T, 2> value{};
+  };
+
+  // trilinear() of the corner values for one row of the bundle; about k through `planes`.
+  template <class CornerValue, class T>
+  T interpolateRow(float fracA, CornerValue&& corners, Planes<T>& planes) const {
+    if (axis_ != 2) return trilinear(rowCell(fracA), corners);
+    if (!planes.ready) {
+      planes.value = {bilinearInPlane(cell_, corners, 0), bilinearInPlane(cell_, corners, 1)};
+      planes.ready = true;
+    }
+    return interpolate(planes.value[0], planes.value[1], fracA);
   }
 
   // Cell bases whose corners' six neighbours all exist: gradients through pointer offsets.
@@ -196,10 +204,8 @@ class TrilinearRaySampler {
   int lo_ = 0, hi_ = 0;
   std::array<float, 8> corners_;       // filled by load() before any use
   std::array<glm::vec3, 8> gradients_;  // filled by loadGradients() before any use
-  // The current sample's bilinear planes z = base and base + 1 (rotation about k).
-  bool densityPlanesReady_ = false, gradientPlanesReady_ = false;
-  std::array<float, 2> densityPlanes_{};
-  std::array<glm::vec3, 2> gradientPlanes_{};
+  Planes<float> densityPlanes_;  // rotation about k
+  Planes<glm::vec3> gradientPlanes_;
 };
 
 }  // namespace angio
