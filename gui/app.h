@@ -17,19 +17,19 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/progressive_renderer.h"
+#include "render/progressive_renderer.h"
 #include "core/volume.h"
 #include "gui/app_gl.h"
 #include "gui/background_job.h"
 #include "gui/file_browser.h"
 #include "gui/latency_trace.h"
-#include "gui/series_export.h"
+#include "render/series_export.h"
 #include "gui/app_state.h"
 #include "gui/app_cpr.h"
 #include "gui/app_vessel.h"
 #include "gui/tf_editor.h"
 #include "gui/viewport.h"
-#include "io/render_sidecar.h"
+#include "render/render_sidecar.h"
 #include "io/session_file.h"
 #include "io/tf_file.h"
 

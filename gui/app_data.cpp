@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "io/input_error.h"
 #include "gui/app.h"
 #include "io/volume_reader.h"
 
@@ -32,7 +33,7 @@ LoadedDataset loadInBackground(const std::string& path, JobControl& control) {
     control.progress.store(fraction);
     if (control.cancel.load()) throw LoadCancelled();
   };
-  read.warn = [](const std::string& warning) { std::fprintf(stderr, "angioray: warning: %s\n", warning.c_str()); };
+  read.warn = printWarning;
   LoadedVolume loaded = readVolume(path, read);
   return LoadedDataset{std::move(loaded.volume), path, std::move(loaded.description)};
 }

@@ -1,14 +1,5 @@
 #include "gui/app_export.h"
 
-#include <chrono>
-#include <cstdio>
-#include <stdexcept>
-
-#include "core/view_geometry.h"
-#include "gui/render_job.h"
-#include "gui/sidecar_render.h"
-#include "io/image_export.h"
-
 namespace angio {
 
 RenderSidecar exportSidecar(const AppState& state, const std::string& dataset, double isd) {
@@ -20,31 +11,6 @@ RenderSidecar exportSidecar(const AppState& state, const std::string& dataset, d
   sidecar.params.sampling.isd = isd;
   sidecar.tf = state.tf;
   return sidecar;
-}
-
-void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderSidecar sidecar) {
-  std::error_code error;
-  sidecar.image = std::filesystem::absolute(path, error).lexically_normal().string();
-  exportImage(image, path, renderSidecarMetadata(sidecar));
-  saveRenderSidecar(sidecar, sidecarPathFor(path));
-}
-
-std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderSidecar& sidecar,
-                       const std::filesystem::path& path, const std::atomic<bool>* cancel) {
-  const ViewGeometry view = makeViewGeometry(volume, sidecar.params);
-  if (long(view.width) * view.height > kMaxImagePixels)
-    throw std::runtime_error(path.string() + ": image of " + std::to_string(view.width) + "x" +
-                             std::to_string(view.height) + " pixels is too large; use a larger isd");
-  const auto start = std::chrono::steady_clock::now();
-  bool cancelled = false;
-  const Image image = renderSidecarImage(volume, centerlines, sidecar, {nullptr, cancel, &cancelled});
-  if (cancelled) return {};
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeImageAndSidecar(image, path, sidecar);
-  char summary[512];
-  std::snprintf(summary, sizeof summary, "exported %s (%dx%d, %.1f s) and %s", path.string().c_str(),
-                image.width, image.height, seconds, sidecarPathFor(path).filename().string().c_str());
-  return summary;
 }
 
 }  // namespace angio

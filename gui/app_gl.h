@@ -11,7 +11,7 @@
 
 #include <imgui.h>
 
-#include "core/progressive_renderer.h"
+#include "render/progressive_renderer.h"
 
 namespace angio {
 

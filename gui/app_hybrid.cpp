@@ -11,7 +11,7 @@
 #include <imgui.h>
 
 #include "gui/app.h"
-#include "gui/hybrid_cpr_step.h"
+#include "render/hybrid_cpr_step.h"
 
 namespace angio {
 

@@ -8,6 +8,7 @@
 
 #include "gui/app.h"
 #include "gui/app_export.h"
+#include "render/export.h"
 
 namespace angio {
 

@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/progressive_renderer.h"
+#include "render/progressive_renderer.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "io/session_file.h"

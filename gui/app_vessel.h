@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "core/progressive_renderer.h"
+#include "render/progressive_renderer.h"
 #include "core/transfer_function.h"
 #include "core/view_geometry.h"
 #include "gui/background_job.h"

@@ -1,3 +1,4 @@
+#include "io/input_error.h"
 #include "gui/app_window.h"
 
 #include <GLFW/glfw3.h>
@@ -84,7 +85,7 @@ void saveLastSession(const App& app) {
   try {
     saveSession(app.session(), lastSessionPath());
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "angioray: warning: %s\n", error.what());
+    printWarning(error.what());
   }
 }
 

@@ -29,7 +29,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/progressive_renderer.h"
+#include "render/progressive_renderer.h"
 
 namespace angio {
 

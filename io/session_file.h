@@ -13,7 +13,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/progressive_renderer.h"
+#include "render/progressive_renderer.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "vessel/cpr_layout.h"

@@ -70,19 +70,6 @@ void checkPath(const CenterlinePath& path, std::vector<CenterlineIssue>& issues)
 
 }  // namespace
 
-Centerlines centerlinesFromPhantom(const std::vector<PhantomPath>& paths) {
-  Centerlines centerlines;
-  centerlines.source = "phantom";
-  for (const PhantomPath& phantomPath : paths) {
-    CenterlinePath& path = centerlines.paths.emplace_back();
-    path.name = phantomPath.name;
-    for (const PhantomCenterlinePoint& point : phantomPath.points) {
-      path.points.push_back({point.positionMm, point.radiusMm});
-    }
-  }
-  return centerlines;
-}
-
 glm::dvec3 volumeFrameMm(const Volume& volume, glm::dvec3 physicalMm) {
   return physicalToIndex(volume, physicalMm) * volume.spacing;
 }

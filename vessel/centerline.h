@@ -16,7 +16,6 @@
 
 #include <glm/glm.hpp>
 
-#include "core/phantom.h"
 #include "core/volume.h"
 
 namespace angio {
@@ -40,9 +39,6 @@ struct Centerlines {
 };
 
 // --- Conversion and frames ----------------------------------------------------------------------
-
-// The phantom's ground truth (physical frame), names kept.
-Centerlines centerlinesFromPhantom(const std::vector<PhantomPath>& paths);
 
 // Physical (mm, LPS) -> volume frame (mm): physicalToIndex(volume, p) * spacing.
 glm::dvec3 volumeFrameMm(const Volume& volume, glm::dvec3 physicalMm);

@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "core/phantom.h"
+#include "phantom/phantom.h"
 #include "core/volume_sampling.h"
 
 namespace angio {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/fast_raycaster.h"
-#include "core/phantom.h"
+#include "phantom/phantom.h"
 #include "core/reference_raycaster.h"
 #include "io/tf_file.h"
 #include "io/volume_reader.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/fast_raycaster.h"
-#include "core/phantom.h"
+#include "phantom/phantom.h"
 
 namespace angio {
 namespace {

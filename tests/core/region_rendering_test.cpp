@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/fast_raycaster.h"
-#include "core/phantom.h"
+#include "phantom/phantom.h"
 #include "core/reference_raycaster.h"
 #include "core/view_geometry.h"
 

@@ -18,7 +18,7 @@
 
 #include "gui/file_browser.h"
 #include "io/volume_reader.h"
-#include "tests/gui/run_angioray.h"
+#include "tests/support/run_angioray.h"
 
 namespace {
 

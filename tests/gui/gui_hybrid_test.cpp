@@ -20,10 +20,10 @@
 
 #include "core/view_geometry.h"
 #include "io/centerline_file.h"
-#include "io/render_sidecar.h"
+#include "render/render_sidecar.h"
 #include "io/volume_reader.h"
-#include "tests/gui/phantom_folder_test.h"
-#include "tests/gui/run_angioray.h"
+#include "tests/support/phantom_folder_test.h"
+#include "tests/support/run_angioray.h"
 #include "vessel/cpr_hybrid.h"
 #include "vessel/cpr_layout.h"
 #include "vessel/vessel_glyph.h"

@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/gui/phantom_folder_test.h"
-#include "tests/gui/run_angioray.h"
+#include "tests/support/phantom_folder_test.h"
+#include "tests/support/run_angioray.h"
 
 namespace {
 

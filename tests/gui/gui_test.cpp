@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "tests/gui/run_angioray.h"
+#include "tests/support/run_angioray.h"
 #include <nlohmann/json.hpp>
 #include <OpenImageIO/imagebuf.h>
 #include <sys/wait.h>

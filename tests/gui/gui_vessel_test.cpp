@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <OpenImageIO/imagebuf.h>
 
-#include "tests/gui/phantom_folder_test.h"
-#include "tests/gui/run_angioray.h"
+#include "tests/support/phantom_folder_test.h"
+#include "tests/support/run_angioray.h"
 
 namespace {
 

@@ -27,11 +27,12 @@ class CenterlineCsvTest : public test_support::TempFolderTest {
 };
 
 TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
-  const std::vector<PhantomPath> paths = {
+  Centerlines centerlines;
+  centerlines.paths = {
       {"a", {{{1.0, -2.5, 3.25}, 10.0}, {{1.0, -2.5, 2.25}, 9.5}}},
       {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
   const fs::path file = dir_ / "centerlines.csv";
-  writeCenterlinesCsv(centerlinesFromPhantom(paths), file);
+  writeCenterlinesCsv(centerlines, file);
   EXPECT_EQ(fileContents(file),
             "path,x_mm,y_mm,z_mm,radius_mm\n"
             "0,1.000,-2.500,3.250,10.000\n"

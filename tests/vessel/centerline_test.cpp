@@ -9,7 +9,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "core/phantom.h"
+#include "phantom/phantom.h"
 #include "core/voxel.h"
 
 namespace angio {
@@ -108,19 +108,6 @@ TEST(CenterlineFrames, ToVolumeFrameMovesPointsKeepsRadiiAndLengths) {
     EXPECT_NEAR(pathLengthMm(mapped.paths[0]), pathLengthMm(physical.paths[0]), 1e-9);
     EXPECT_THROW(toVolumeFrame(mapped, volume), std::logic_error);
   }
-}
-
-TEST(CenterlineFrames, PhantomPathsKeepNamesPointsAndRadii) {
-  const std::vector<PhantomPath> phantomPaths = {
-      {"aorta-left", {{{1, 2, 3}, 10}, {{1, 2, 4}, 9}}}, {"aorta-right", {{{1, 2, 3}, 10}}}};
-  const Centerlines centerlines = centerlinesFromPhantom(phantomPaths);
-  EXPECT_EQ(centerlines.frame, CenterlineFrame::kPhysical);
-  ASSERT_EQ(centerlines.paths.size(), 2u);
-  EXPECT_EQ(centerlines.paths[0].name, "aorta-left");
-  EXPECT_EQ(centerlines.paths[1].name, "aorta-right");
-  ASSERT_EQ(centerlines.paths[0].points.size(), 2u);
-  EXPECT_EQ(centerlines.paths[0].points[1].positionMm, glm::dvec3(1, 2, 4));
-  EXPECT_EQ(centerlines.paths[0].points[1].radiusMm, 9);
 }
 
 // --- Arc length and resampling ------------------------------------------------------------------
@@ -273,7 +260,7 @@ TEST(CenterlinePhantom, PathsInTheVolumeFrameLieInsideTheLumen) {
   // 128 x 128 x 300 (3.2 x 3.2 x 4 mm voxels): as in the phantom's own test, partial volume lifts
   // >= 95% of the nearest voxels of each path into the lumen range.
   const Phantom phantom = generatePhantom({{128, 128, 300}, 1});
-  const Centerlines physical = centerlinesFromPhantom(phantom.paths);
+  const Centerlines physical = phantom.centerlines;
   EXPECT_FALSE(hasError(validateCenterlines(physical)));
   EXPECT_TRUE(checkInsideVolume(physical, phantom.volume).empty());
   const Centerlines framed = toVolumeFrame(physical, phantom.volume);

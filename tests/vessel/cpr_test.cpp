@@ -12,7 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "core/phantom.h"
+#include "phantom/phantom.h"
 #include "core/volume_sampling.h"
 #include "core/voxel.h"
 #include "io/centerline_file.h"
@@ -341,7 +341,7 @@ const SmallPhantom& smallPhantom() {
     options.dims = {128, 128, 300};
     Phantom generated = generatePhantom(options);
     SmallPhantom small;
-    small.paths = toVolumeFrame(centerlinesFromPhantom(generated.paths), generated.volume).paths;
+    small.paths = toVolumeFrame(generated.centerlines, generated.volume).paths;
     small.volume = std::move(generated.volume);
     return small;
   }();

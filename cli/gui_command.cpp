@@ -1,0 +1,117 @@
+// `angioray gui`: load the dataset (or generate the phantom), then open the workstation window or
+// run its headless twin.
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+#include "io/input_error.h"
+#include "phantom/phantom.h"
+#include "gui/app_window.h"
+#include "cli/commands.h"
+#include "gui/headless.h"
+#include "cli/progress_line.h"
+#include "cli/size_option.h"
+#include "io/tf_file.h"
+#include "io/volume_reader.h"
+
+namespace angio {
+
+namespace {
+
+// "WxH" window pixels.
+glm::ivec2 parseWindowSize(const std::string& text) {
+  int width = 0, height = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 320 ||
+      height < 240 || width > 8192 || height > 8192)
+    throw std::runtime_error("window size '" + text + "' is not WxH with 320x240 .. 8192x8192 pixels");
+  return {width, height};
+}
+
+LoadedDataset loadDataset(const GuiOptions& options) {
+  LoadedDataset dataset;
+  if (options.volume.empty()) {
+    PhantomOptions phantom;
+    phantom.dims = parseSize(options.phantomSize);
+    ProgressLine progress("generating phantom " + options.phantomSize);
+    dataset.volume = generatePhantom(phantom, std::ref(progress)).volume;
+    dataset.name = "phantom " + options.phantomSize;
+    dataset.description = "generated run-off CTA phantom";
+    return dataset;
+  }
+  ReadOptions read;
+  read.warn = printWarning;
+  ProgressLine progress("loading " + options.volume);
+  read.progress = std::ref(progress);
+  LoadedVolume loaded = readVolume(options.volume, read);
+  dataset.volume = std::move(loaded.volume);
+  dataset.name = options.volume;
+  dataset.description = loaded.description;
+  return dataset;
+}
+
+AppState initialState(const GuiOptions& options, const LoadedDataset& dataset) {
+  AppState state;
+  state.dataset = dataset.name;
+  const auto axis = parseAxis(options.axis);
+  if (!axis) throw std::runtime_error("axis '" + options.axis + "' is not i, j or k");
+  state.view.axis = *axis;
+  state.view.angleDeg = wrapDegrees(options.angleDeg);
+  state.tf = loadPresetOrFile(options.tf);
+  for (const Preset& preset : listPresets())
+    if (preset.id == options.tf) state.tfPreset = preset.id;
+  if (options.mip) state.mode = Compositing::mip;
+  state.centerlinesFile = options.centerlines;
+  return state;
+}
+
+// The session's dataset unless a VOLUME was given (a phantom session: its size).
+GuiOptions withSessionDataset(GuiOptions options, const Session& session) {
+  if (!options.volume.empty() || session.dataset.empty()) return options;
+  if (isPhantomName(session.dataset)) options.phantomSize = session.dataset.substr(8);
+  else options.volume = session.dataset;
+  return options;
+}
+
+}  // namespace
+
+bool canOpenWindow() { return windowSystemAvailable(); }
+
+int runGui(const GuiOptions& options) {
+  const glm::ivec2 size = parseWindowSize(options.size);
+  // Check what can fail quickly before the (possibly long) load.
+  TransferFunction checkTf = loadPresetOrFile(options.tf);
+  (void)checkTf;
+  if (!options.headless && !options.script.empty())
+    throw std::runtime_error("--script drives the headless app; add --headless");
+  std::optional<std::vector<ScriptStep>> script;
+  if (!options.script.empty()) script = loadScript(options.script);
+  if (!options.headless && !windowSystemAvailable())
+    throw std::runtime_error("no display to open a window on (DISPLAY/WAYLAND_DISPLAY unset or "
+                             "unusable); use --headless");
+  std::optional<Session> session;
+  if (!options.session.empty()) session = loadSession(options.session);
+  const GuiOptions effective = session ? withSessionDataset(options, *session) : options;
+  LoadedDataset dataset = loadDataset(effective);
+  AppState state = initialState(effective, dataset);
+  if (session) applySessionState(state, *session);
+  if (options.headless) {
+    HeadlessOptions headless;
+    headless.width = size.x;
+    headless.height = size.y;
+    headless.script = std::move(script);
+    headless.screenshot = options.screenshot;
+    headless.stateOut = options.stateOut;
+    headless.timeoutSeconds = options.timeoutSeconds;
+    return runHeadless(std::move(dataset), std::move(state), headless);
+  }
+  WindowOptions window;
+  window.width = size.x;
+  window.height = size.y;
+  window.quitAfterSeconds = options.quitAfterSeconds;
+  window.stateOut = options.stateOut;
+  window.screenshot = options.screenshot;
+  return runWindow(std::move(dataset), std::move(state), window);
+}
+
+}  // namespace angio

@@ -1,0 +1,189 @@
+// The `angioray` command line: parses options and dispatches to gui/commands.h. No work here.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+
+namespace {
+
+void addInfo(CLI::App& app, angio::InfoOptions& o) {
+  auto* cmd = app.add_subcommand("info", "Print dimensions, spacing, orientation and HU statistics");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder")->required();
+  cmd->add_option("--labels", o.labels, "Label volume on the same grid (4-bit labels)");
+  cmd->add_option("--tf", o.tf, "Also report the fraction of voxels this TF makes visible");
+}
+
+void addRender(CLI::App& app, angio::RenderOptions& o) {
+  auto* cmd = app.add_subcommand("render", "Render a volume to an image file (.png, .tif, .exr)");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder (required without --params)");
+  auto* out = cmd->add_option("--out,-o", o.out, "Output image (.png 8-bit, .tif 16-bit, .exr float); "
+                                                 "a JSON sidecar goes beside it (OUT.json)");
+  cmd->add_option("--labels", o.labels, "Label volume on the same grid");
+  cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
+  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o.angleDeg, "Rotation angle in degrees")->capture_default_str();
+  cmd->add_option("--quality", o.quality, "Quality level (sampling defaults)")
+      ->check(CLI::IsMember({"fast", "medium", "high"}))->capture_default_str();
+  cmd->add_option("--isd", o.isd, "Image sampling distance (voxel units)")->check(CLI::PositiveNumber);
+  cmd->add_option("--osd", o.osd, "Object sampling distance (voxel units)")->check(CLI::PositiveNumber);
+  cmd->add_option("--filter", o.filter, "Reconstruction filter")
+      ->check(CLI::IsMember({"nearest", "trilinear", "mean"}));
+  cmd->add_option("--shading", o.shading, "Headlight diffuse shading")->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--kd", o.kd, "Diffuse coefficient")->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--ert", o.ert, "Early ray termination opacity (1 = off)")->check(CLI::Range(0.0, 1.0));
+  cmd->add_flag("--mip", o.mip, "Maximum intensity projection instead of DVR");
+  cmd->add_option("--window", o.window, "MIP window width (HU)")->check(CLI::PositiveNumber);
+  cmd->add_option("--level", o.level, "MIP window centre (HU)");
+  cmd->add_flag("--reference", o.reference, "Use the plain reference raycaster (same image, slower)");
+  angio::addVesselGlyphOptions(*cmd, o.vesselGlyph);
+  auto* params = cmd->add_option("--params", o.params, "Render again what this sidecar (IMAGE.json) "
+                                                       "describes, to --out or its image");
+  for (CLI::Option* option : cmd->get_options())
+    if (option != params && option != out && option != cmd->get_help_ptr()) params->excludes(option);
+}
+
+void addCpr(CLI::App& app, angio::CprOptions& o) {
+  auto* cmd = app.add_subcommand("cpr", "Curved planar reformation of centerline paths to an image");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder")->required();
+  cmd->add_option("--centerlines", o.centerlines, "Centerlines (.vtp, .mrk.json, .csv)")->required();
+  cmd->add_option("--out,-o", o.out, "Output image (.png 8-bit, .tif 16-bit, .exr float)")->required();
+  cmd->add_option("--path", o.path, "Path index, or all (side by side, sharing the trunk)")
+      ->capture_default_str();
+  cmd->add_option("--mode", o.mode, "CPR projection")
+      ->check(CLI::IsMember({"projected", "stretched", "straightened"}))->capture_default_str();
+  cmd->add_option("--axis", o.axis, "View rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o.angleDeg, "View angle in degrees (turns the vector of interest)")
+      ->capture_default_str();
+  cmd->add_option("--width", o.widthMm, "Lateral extent in mm (default 60): straightened: width per "
+                                        "path; stretched: width / 2 beside the centerline; projected: "
+                                        "band around it (default: whole rows)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--pixel", o.pixelMm, "Pixel size in mm (default: the voxel unit)")
+      ->check(CLI::PositiveNumber);
+  auto* window = cmd->add_option("--window", o.window, "Grey window width (HU)")
+                     ->check(CLI::PositiveNumber);
+  auto* level = cmd->add_option("--level", o.level, "Grey window centre (HU)");
+  window->needs(level);
+  level->needs(window);
+  auto* preset = cmd->add_option("--window-preset", o.windowPreset, "Grey window preset")
+                     ->check(CLI::IsMember({"cta-lumen", "calcium"}));
+  auto* tf = cmd->add_option("--tf", o.tf, "Colour through this TF preset or file instead of grey");
+  tf->excludes(window)->excludes(level)->excludes(preset);
+  cmd->add_flag("!--no-overlay", o.overlay, "Leave out the centerline marker and the ruler");
+  cmd->add_option("--resampler", o.resampler, "trilinear (exact) or opencv-remap (comparison)")
+      ->check(CLI::IsMember({"trilinear", "opencv-remap"}))->capture_default_str();
+  cmd->add_option("--bench", o.benchRuns, "Also time the CPR this many times (median, min, max)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--bench-length", o.benchLengthMm, "Cut each path to this length for --bench (mm)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+}
+
+void addPhantom(CLI::App& app, angio::PhantomOptionsCli& o) {
+  auto* cmd = app.add_subcommand("phantom", "Generate the peripheral run-off CTA phantom");
+  cmd->add_option("OUT", o.out, "Output volume (.mha, .nrrd, .nii.gz)")->required();
+  cmd->add_option("--size", o.size, "Voxels as IxJxK")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Noise seed")->capture_default_str();
+  cmd->add_option("--centerlines", o.centerlines, "Also write ground-truth centerlines (.csv)");
+}
+
+void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
+  auto* cmd = app.add_subcommand("bench", "Time the raycasters over many angles (median, min, max)");
+  cmd->add_option("VOLUME", o.volume, "Volume (default: the generated phantom)");
+  cmd->add_option("--size", o.size, "Phantom voxels as IxJxK when no VOLUME")->capture_default_str();
+  cmd->add_option("--tf", o.tf, "TF preset or file")->capture_default_str();
+  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->capture_default_str();
+  cmd->add_option("--angles", o.angles, "Angles per level")->check(CLI::Range(1, 3600))
+      ->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_flag("--reference", o.reference, "Also time the reference raycaster (slow)");
+  cmd->add_flag("!--no-contributions", o.contributions, "Skip the technique-off rows");
+  cmd->add_option("--json", o.json, "Also write the results as JSON");
+  cmd->add_option("--levels", o.levels, "Only these levels (fast, medium, medium-trilinear, high)")
+      ->check(CLI::IsMember({"fast", "medium", "medium-trilinear", "high"}));
+  cmd->add_option("--centerlines", o.centerlines,
+                  "Also time VesselGlyph frames with these centerlines (default: the phantom's)");
+  cmd->add_flag("--glyph-intervals", o.glyphIntervals,
+                "Time only VesselGlyph interval construction at medium quality: 20 synthetic "
+                "paths of 1000 points, or --centerlines");
+}
+
+void addDemo(CLI::App& app, angio::DemoOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "demo", "Generate the phantom and render it at the three quality levels (the default job)");
+  cmd->add_option("--out-dir", o.outDir, "Where the PNGs go")->capture_default_str();
+  cmd->add_option("--size", o.size, "Phantom voxels as IxJxK")->capture_default_str();
+}
+
+void addGui(CLI::App& app, angio::GuiOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "gui", "The workstation: rotate, tune the transfer function, progressive quality");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder (default: the phantom)");
+  cmd->add_option("--phantom-size", o.phantomSize,
+                  "Phantom voxels as IxJxK when no VOLUME (modest by default, for a quick start)")
+      ->capture_default_str();
+  cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
+  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->capture_default_str();
+  cmd->add_option("--angle", o.angleDeg, "Start angle in degrees")->capture_default_str();
+  cmd->add_flag("--mip", o.mip, "Start in MIP mode");
+  cmd->add_option("--size", o.size, "Window size WxH in pixels")->capture_default_str();
+  cmd->add_flag("--headless", o.headless, "No window: OSMesa software rendering of the same UI");
+  cmd->add_option("--script", o.script, "Headless: JSON list of input steps (move, click, drag, "
+                                         "wheel, key, wait_ms, wait_level, screenshot, state)");
+  cmd->add_option("--screenshot", o.screenshot,
+                  "Screenshot at the end (headless without --script: once the high image is shown)");
+  cmd->add_option("--state-out", o.stateOut, "Write the app's state and timings as JSON at the end");
+  cmd->add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for a quality level")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--session", o.session, "Restore a saved session (its dataset unless VOLUME is "
+                                           "given, view, TF, levels, panels)");
+  cmd->add_option("--quit-after", o.quitAfterSeconds, "Window: close after this many seconds")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--centerlines", o.centerlines,
+                  "Centerlines (.vtp, .mrk.json, .csv) for the VesselGlyph panel");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"angioray " ANGIORAY_VERSION " - CPU volume rendering for CT angiography"};
+  app.set_version_flag("--version", ANGIORAY_VERSION);
+  angio::InfoOptions info;
+  angio::RenderOptions render;
+  angio::CprOptions cpr;
+  angio::PhantomOptionsCli phantom;
+  angio::DemoOptions demo;
+  angio::BenchOptionsCli bench;
+  angio::GuiOptions gui;
+  addInfo(app, info);
+  addRender(app, render);
+  addCpr(app, cpr);
+  addPhantom(app, phantom);
+  addDemo(app, demo);
+  addBench(app, bench);
+  addGui(app, gui);
+  app.require_subcommand(0, 1);
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (app.got_subcommand("info")) return angio::runInfo(info);
+    if (app.got_subcommand("render")) return angio::runRender(render);
+    if (app.got_subcommand("cpr")) return angio::runCpr(cpr);
+    if (app.got_subcommand("phantom")) return angio::runPhantom(phantom);
+    if (app.got_subcommand("bench")) return angio::runBench(bench);
+    if (app.got_subcommand("gui")) return angio::runGui(gui);
+    if (app.got_subcommand("demo")) return angio::runDemo(demo);
+    // No subcommand: the workstation when there is a display, else the headless demo.
+    if (angio::canOpenWindow()) return angio::runGui(gui);
+    return angio::runDemo(demo);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "angioray: error: %s\n", error.what());
+    return 1;
+  }
+}

@@ -1,0 +1,109 @@
+// `angioray render`: volume + TF + view (+ VesselGlyph, hybrid) -> image file and its sidecar.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+
+#include "cli/commands.h"
+#include "cli/progress_line.h"
+#include "io/centerline_file.h"
+#include "io/input_error.h"
+#include "io/tf_file.h"
+#include "io/volume_reader.h"
+#include "render/export.h"
+#include "render/render_sidecar.h"
+#include "render/sidecar_render.h"
+
+namespace angio {
+
+namespace {
+
+RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
+  RenderParams p;
+  p.axis = *parseAxis(o.axis);
+  p.angleDeg = o.angleDeg;
+  p.sampling = qualitySampling(*parseQuality(o.quality));
+  if (o.isd) p.sampling.isd = *o.isd;
+  if (o.osd) p.sampling.osd = *o.osd;
+  if (o.ert) p.sampling.ert = *o.ert;
+  if (o.filter) p.sampling.filter = *parseFilter(*o.filter);
+  if (o.shading) p.shading.enabled = *o.shading == "on";
+  if (o.ka) p.shading.ka = *o.ka;
+  if (o.kd) p.shading.kd = *o.kd;
+  if (o.mip) p.compositing = Compositing::mip;
+  p.mip.window = o.window.value_or(tf.mipWindow);
+  p.mip.level = o.level.value_or(tf.mipLevel);
+  return p;
+}
+
+// Paths as absolute ones, so the sidecar works from any directory.
+std::string absolutePath(const std::string& path) {
+  return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
+}
+
+RenderSidecar sidecarFrom(const RenderOptions& o) {
+  if (o.volume.empty() || o.out.empty())
+    throw std::invalid_argument("render needs VOLUME and --out (or --params SIDECAR.json)");
+  RenderSidecar s;
+  s.vesselGlyph = vesselGlyphRecipe(o.vesselGlyph, o.tf);
+  s.hybrid = hybridCprRecipe(o.vesselGlyph);
+  if (s.vesselGlyph && o.mip) throw std::invalid_argument("--mip cannot be combined with --centerlines");
+  s.dataset = absolutePath(o.volume);
+  s.labels = absolutePath(o.labels);
+  s.quality = parseQuality(o.quality);
+  s.raycaster = o.reference ? "reference" : "fast";
+  s.tf = loadPresetOrFile(o.tf);
+  s.params = paramsFrom(o, s.tf);
+  return s;
+}
+
+Volume loadVolume(const RenderSidecar& sidecar) {
+  ReadOptions read;
+  read.labelPath = sidecar.labels;
+  read.warn = printWarning;
+  ProgressLine loading("loading " + sidecar.dataset);
+  read.progress = std::ref(loading);
+  return readVolume(sidecar.dataset, read).volume;
+}
+
+Centerlines loadCenterlines(const RenderSidecar& sidecar, const Volume& volume) {
+  if (!sidecar.vesselGlyph) return {};
+  CenterlineLoadOptions load;
+  load.warn = printWarning;
+  Centerlines centerlines = toVolumeFrame(loadCenterlines(sidecar.vesselGlyph->centerlines, load), volume);
+  checkCenterlinesInside(centerlines, volume, load);
+  return centerlines;
+}
+
+// Loads the volume (and centerlines), renders, writes `out` and its sidecar (image = out).
+void renderToFile(const RenderSidecar& sidecar, const std::filesystem::path& out) {
+  const Volume volume = loadVolume(sidecar);
+  const Centerlines centerlines = loadCenterlines(sidecar, volume);
+  checkImageSize(makeViewGeometry(volume, sidecar.params), out);
+  const auto start = std::chrono::steady_clock::now();
+  Image image;
+  {
+    ProgressLine progress("rendering");
+    image = renderSidecarImage(volume, centerlines, sidecar,
+                               {.progress = std::ref(progress), .warn = printWarning});
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeImageAndSidecar(image, out, sidecar);
+  std::printf("wrote %s (%dx%d, rendered in %.2f s) and %s\n", out.string().c_str(), image.width,
+              image.height, seconds, sidecarPathFor(out).string().c_str());
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& options) {
+  if (options.params.empty()) {
+    renderToFile(sidecarFrom(options), options.out);
+    return 0;
+  }
+  const RenderSidecar sidecar = loadRenderSidecar(options.params);
+  renderToFile(sidecar, options.out.empty() ? sidecar.image : options.out);
+  return 0;
+}
+
+}  // namespace angio

@@ -1,0 +1,36 @@
+#pragma once
+// Peripheral run-off CTA phantom: the embedded default dataset and the benchmark volume.
+// Air around a body (abdomen, then two legs), soft tissue and fat with noise, spine, pelvis,
+// femur, tibia and fibula with cortical shell and marrow, and a contrast-filled arterial tree
+// (aorta -> common/external iliac -> femoral -> popliteal -> anterior/posterior tibial) whose
+// radius tapers, with a tortuous and a near-horizontal segment, calcified plaques and a stenosis.
+// Same options, same bytes, whatever the thread count.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/volume.h"
+#include "vessel/centerline.h"
+
+namespace angio {
+
+struct PhantomOptions {
+  glm::ivec3 dims{512, 512, 1200};
+  std::uint64_t seed = 1;
+};
+
+struct Phantom {
+  Volume volume;
+  // Ground truth in the physical frame (mm, LPS), with lumen radii; path names such as
+  // "aorta-left-anterior-tibial". Root (aorta) to each leaf; shared trunks repeated, as vmtk does.
+  Centerlines centerlines;
+};
+
+// progress(fraction in [0, 1]) is called from the generating thread now and then; may be empty.
+Phantom generatePhantom(const PhantomOptions& options,
+                        const std::function<void(double)>& progress = {});
+
+}  // namespace angio

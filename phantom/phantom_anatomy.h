@@ -1,0 +1,78 @@
+#pragma once
+// The phantom's anatomy as solids with materials, in the anatomy frame: x (mm) towards the
+// patient's left of the midline, y (mm) posterior of the body's coronal mid-plane, z (mm) height
+// above the bottom of the scanned box (soles a few mm above z = 0). Voxel axes i, j, k run along
+// x, y, z.
+// Proportions of an adult of about 1.75 m scanned from the upper lumbar spine to the feet.
+#include <variant>
+#include <vector>
+
+#include "phantom/phantom.h"
+#include "phantom/phantom_geometry.h"
+
+namespace angio::phantom {
+
+// The physical size of the scanned box (mm); voxel spacing = size / dims.
+inline constexpr glm::dvec3 kBoxSizeMm{409.6, 409.6, 1200.0};
+
+// Physical z (mm, LPS, scanner table coordinates) = anatomy z + this: the top of the box is at 0.
+inline constexpr double kPhysicalZOffsetMm = -1200.0;
+
+using Solid = std::variant<Capsule, Ellipsoid, EllipticCylinder>;
+
+double signedDistance(const Solid& solid, glm::dvec3 p);
+Bounds boundsOf(const Solid& solid);
+
+// A region of one density (discs, organs, a piece of vessel lumen, a plaque).
+struct FilledPart {
+  Solid solid;
+  double hu = 0;
+};
+
+// A solid with a shell of shellMm around a core: a bone (cortex around cancellous bone or marrow)
+// or a kidney (enhancing cortex around the medulla).
+struct ShelledPart {
+  Solid solid;
+  double shellMm = 0;
+  double shellHu = 0;
+  double coreHu = 0;
+};
+
+// A cross-section of the body in one axial slice: an ellipse with skin, a subcutaneous fat layer of
+// fatMm, and inside muscle; in the torso a muscle wall of wallMm around the viscera.
+struct BodySection {
+  glm::dvec2 centre{0.0};
+  glm::dvec2 radii{0.0};
+  double fatMm = 0;
+  double wallMm = 0;  // 0: muscle all the way in (legs)
+};
+
+// The feet are not vertical: they are solids (with their own fat layer).
+struct FootPart {
+  Capsule shape;
+  double fatMm = 0;
+};
+
+struct Anatomy {
+  std::vector<FootPart> feet;
+  std::vector<FilledPart> softParts;  // painted over the body's layers
+  std::vector<ShelledPart> shelled;   // bones and kidneys, over the soft parts
+  std::vector<FilledPart> lumen;      // contrast-filled arteries, over the bones
+  std::vector<FilledPart> plaques;    // calcium, over the lumen
+  std::vector<CenterlinePath> paths;     // ground-truth centerlines in the anatomy frame
+};
+
+Anatomy buildAnatomy();
+
+// The body's axial cross-sections at height z (torso and/or legs; empty below the legs).
+std::vector<BodySection> bodySectionsAt(double zMm);
+
+// Skin, fat and muscle densities (HU) used for the body's layers.
+inline constexpr double kAirHu = -1000;
+inline constexpr double kSkinHu = 40;
+inline constexpr double kFatHu = -100;
+inline constexpr double kMuscleHu = 50;
+inline constexpr double kVisceraHu = 30;
+inline constexpr double kSkinMm = 2;
+
+}  // namespace angio::phantom

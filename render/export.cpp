@@ -1,0 +1,40 @@
+#include "render/export.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "io/image_export.h"
+#include "io/input_error.h"
+#include "render/sidecar_render.h"
+
+namespace angio {
+
+void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out) {
+  if (long(view.width) * view.height > kMaxImagePixels)
+    throw InputError(out, "image of " + std::to_string(view.width) + "x" + std::to_string(view.height) +
+                              " pixels is too large; use a larger isd");
+}
+
+void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderSidecar sidecar) {
+  std::error_code error;
+  sidecar.image = std::filesystem::absolute(path, error).lexically_normal().string();
+  exportImage(image, path, renderSidecarMetadata(sidecar));
+  saveRenderSidecar(sidecar, sidecarPathFor(path));
+}
+
+std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderSidecar& sidecar,
+                       const std::filesystem::path& path, const std::atomic<bool>* cancel) {
+  checkImageSize(makeViewGeometry(volume, sidecar.params), path);
+  const auto start = std::chrono::steady_clock::now();
+  bool cancelled = false;
+  const Image image = renderSidecarImage(volume, centerlines, sidecar, {nullptr, cancel, &cancelled});
+  if (cancelled) return {};
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeImageAndSidecar(image, path, sidecar);
+  char summary[512];
+  std::snprintf(summary, sizeof summary, "exported %s (%dx%d, %.1f s) and %s", path.string().c_str(),
+                image.width, image.height, seconds, sidecarPathFor(path).filename().string().c_str());
+  return summary;
+}
+
+}  // namespace angio

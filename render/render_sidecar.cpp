@@ -1,0 +1,278 @@
+#include "render/render_sidecar.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/number_text.h"
+#include "io/atomic_write.h"
+#include "io/input_error.h"
+#include "render/render_metadata.h"
+#include "io/tf_file.h"
+#include "io/vessel_glyph_json.h"
+#include "vessel/vessel_glyph_spec.h"
+
+namespace angio {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+constexpr int kSidecarVersion = 1;
+
+// --- Writing --------------------------------------------------------------------------------
+
+Json tfJson(const TransferFunction& tf) { return Json::parse(toJson(tf)); }
+
+Json vesselGlyphJson(const VesselGlyphRecipe& vg) {
+  Json json = {{"centerlines", vg.centerlines}};
+  const Json settings = vesselGlyphSettingsJson(vg.settings);
+  for (const auto& [key, value] : settings.items()) json[key] = value;
+  json["focus_tf"] = tfJson(vg.focusTf);
+  json["context_tf"] = tfJson(vg.contextTf);
+  json["outside_tf"] = vg.outsideTf ? tfJson(*vg.outsideTf) : Json(nullptr);
+  return json;
+}
+
+Json hybridJson(const HybridCprRecipe& hybrid) {
+  Json json = {{"path", hybrid.path}, {"transition_mm", hybrid.transitionMm},
+               {"display", hybrid.grey ? "grey" : "tf"}};
+  if (hybrid.grey) json["window"] = hybrid.grey->window, json["level"] = hybrid.grey->level;
+  return json;
+}
+
+// --- Reading: every accessor names the key in its one-line error ----------------------------
+
+struct Reader {
+  const fs::path& source;
+
+  const Json& at(const Json& object, const std::string& key, const std::string& where) const {
+    if (!object.is_object()) throw InputError(source, where + " is not a JSON object");
+    const auto found = object.find(key);
+    if (found == object.end()) throw InputError(source, "missing \"" + where + key + "\"");
+    return *found;
+  }
+  double number(const Json& object, const std::string& key, const std::string& where = "") const {
+    const Json& value = at(object, key, where);
+    if (!value.is_number() || !std::isfinite(value.get<double>()))
+      throw InputError(source, "\"" + where + key + "\" is not a number: " + value.dump());
+    return value.get<double>();
+  }
+  bool flag(const Json& object, const std::string& key, const std::string& where = "") const {
+    const Json& value = at(object, key, where);
+    if (!value.is_boolean()) throw InputError(source, "\"" + where + key + "\" is not true/false");
+    return value.get<bool>();
+  }
+  std::string text(const Json& object, const std::string& key, const std::string& where = "") const {
+    const Json& value = at(object, key, where);
+    if (!value.is_string()) throw InputError(source, "\"" + where + key + "\" is not a string");
+    return value.get<std::string>();
+  }
+  template <class Parse>
+  auto choice(const Json& object, const std::string& key, Parse parse, const std::string& where = "") const {
+    const std::string value = text(object, key, where);
+    const auto parsed = parse(value);
+    if (!parsed) throw InputError(source, "\"" + where + key + "\" has unknown value '" + value + "'");
+    return *parsed;
+  }
+  TransferFunction tf(const Json& object, const std::string& key, const std::string& where = "") const {
+    const Json& value = at(object, key, where);
+    try {
+      return parseTransferFunction(value.dump(), source);
+    } catch (const InputError& error) {
+      throw InputError(source, "\"" + where + key + "\": " +
+                                   std::string(error.what()).substr(source.string().size() + 2));
+    }
+  }
+};
+
+TubeRadius readRadius(const Reader& r, const Json& json, const std::string& where) {
+  TubeRadius radius;
+  radius.mode = r.choice(json, "radius_mode", parseRadiusMode, where);
+  radius.value = r.number(json, "radius", where);
+  radius.marginMm = r.number(json, "margin_mm", where);
+  return radius;
+}
+
+void readContext(const Reader& r, const Json& json, VesselGlyphSettings& s) {
+  const std::string where = "vessel_glyph.context.";
+  s.context = r.choice(json, "shape", parseContextShape, where);
+  s.slab.frontMm = r.number(json, "front_mm", where);
+  s.slab.backMm = r.number(json, "back_mm", where);
+  const Json& width = r.at(json, "half_width_mm", where);
+  s.slab.halfWidthMm = width == "inf" ? std::numeric_limits<double>::infinity()
+                                      : r.number(json, "half_width_mm", where);
+  s.contextTube = readRadius(r, r.at(json, "tube", where), where + "tube.");
+}
+
+VesselGlyphRecipe readVesselGlyph(const Reader& r, const Json& json) {
+  const std::string where = "vessel_glyph.";
+  VesselGlyphRecipe vg;
+  vg.centerlines = r.text(json, "centerlines", where);
+  VesselGlyphSettings& s = vg.settings;
+  s.focus = readRadius(r, r.at(json, "focus", where), where + "focus.");
+  readContext(r, r.at(json, "context", where), s);
+  s.cleft = r.flag(json, "cleft", where);
+  s.halfVessel = r.flag(json, "half_vessel", where);
+  s.unknownVesselRadiusMm = r.number(json, "unknown_vessel_radius_mm", where);
+  s.simplifyToleranceMm = r.number(json, "simplify_tolerance_mm", where);
+  if (const auto problem = settingsProblem(s)) throw InputError(r.source, *problem);
+  vg.focusTf = r.tf(json, "focus_tf", where);
+  vg.contextTf = r.tf(json, "context_tf", where);
+  if (!r.at(json, "outside_tf", where).is_null()) vg.outsideTf = r.tf(json, "outside_tf", where);
+  return vg;
+}
+
+HybridCprRecipe readHybrid(const Reader& r, const Json& json) {
+  const std::string where = "hybrid_cpr.";
+  HybridCprRecipe hybrid;
+  hybrid.path = r.text(json, "path", where);
+  hybrid.transitionMm = r.number(json, "transition_mm", where);
+  if (hybrid.transitionMm < 0) throw InputError(r.source, "\"hybrid_cpr.transition_mm\" is negative");
+  const std::string display = r.text(json, "display", where);
+  if (display == "grey") hybrid.grey = WindowLevel{r.number(json, "window", where), r.number(json, "level", where)};
+  else if (display != "tf") throw InputError(r.source, "\"hybrid_cpr.display\" has unknown value '" + display + "'");
+  return hybrid;
+}
+
+RenderParams readParams(const Reader& r, const Json& json) {
+  RenderParams p;
+  const Json& view = r.at(json, "view", "");
+  p.axis = r.choice(view, "axis", parseAxis, "view.");
+  p.angleDeg = r.number(view, "angle_deg", "view.");
+  const Json& sampling = r.at(json, "sampling", "");
+  p.sampling.isd = r.number(sampling, "isd", "sampling.");
+  p.sampling.osd = r.number(sampling, "osd", "sampling.");
+  p.sampling.filter = r.choice(sampling, "filter", parseFilter, "sampling.");
+  p.sampling.ert = r.number(sampling, "ert", "sampling.");
+  if (p.sampling.isd <= 0 || p.sampling.osd <= 0)
+    throw InputError(r.source, "\"sampling\" isd and osd must be > 0");
+  const Json& shading = r.at(json, "shading", "");
+  p.shading.enabled = r.flag(shading, "enabled", "shading.");
+  p.shading.ka = r.number(shading, "ka", "shading.");
+  p.shading.kd = r.number(shading, "kd", "shading.");
+  const std::string compositing = r.text(json, "compositing");
+  if (compositing != "dvr" && compositing != "mip")
+    throw InputError(r.source, "\"compositing\" has unknown value '" + compositing + "'");
+  p.compositing = compositing == "mip" ? Compositing::mip : Compositing::dvr;
+  const Json& mip = r.at(json, "mip", "");
+  p.mip.window = r.number(mip, "window", "mip.");
+  p.mip.level = r.number(mip, "level", "mip.");
+  return p;
+}
+
+Json parseJson(const std::string& text, const fs::path& source) {
+  try {
+    return Json::parse(text);
+  } catch (const Json::exception& error) {
+    // "[json.exception.parse_error.101] parse error at ...: <reason>; last read: '<bytes>'": the
+    // bytes may be binary (an image given by mistake), so they are left out.
+    std::string message = error.what();
+    message = message.substr(message.find(']') + 2);
+    message = message.substr(0, message.find("; last read"));
+    throw InputError(source, "not a valid sidecar (bad JSON: " + message + ")");
+  }
+}
+
+}  // namespace
+
+fs::path sidecarPathFor(const fs::path& image) { return fs::path(image.string() + ".json"); }
+
+std::string renderSidecarJson(const RenderSidecar& s) {
+  const RenderParams& p = s.params;
+  Json json = {
+      {"angioray_render_sidecar", kSidecarVersion},
+      {"angioray_version", ANGIORAY_VERSION},
+      {"image", s.image},
+      {"dataset", s.dataset},
+      {"labels", s.labels},
+      {"quality", s.quality ? Json(toString(*s.quality)) : Json(nullptr)},
+      {"raycaster", s.raycaster},
+      {"view", {{"axis", toString(p.axis)}, {"angle_deg", p.angleDeg}}},
+      {"sampling", {{"isd", p.sampling.isd}, {"osd", p.sampling.osd},
+                    {"filter", toString(p.sampling.filter)}, {"ert", p.sampling.ert}}},
+      {"shading", {{"enabled", p.shading.enabled}, {"ka", p.shading.ka}, {"kd", p.shading.kd}}},
+      {"compositing", p.compositing == Compositing::mip ? "mip" : "dvr"},
+      {"mip", {{"window", p.mip.window}, {"level", p.mip.level}}},
+      {"tf", tfJson(s.tf)},
+      {"vessel_glyph", s.vesselGlyph ? vesselGlyphJson(*s.vesselGlyph) : Json(nullptr)},
+      {"hybrid_cpr", s.hybrid ? hybridJson(*s.hybrid) : Json(nullptr)},
+  };
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+void saveRenderSidecar(const RenderSidecar& sidecar, const fs::path& file) {
+  const std::string text = renderSidecarJson(sidecar);
+  writeAtomically(file, [&](const fs::path& temp) {
+    std::ofstream out(temp, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw InputError(file, "cannot write the render sidecar");
+  });
+}
+
+RenderSidecar parseRenderSidecar(const std::string& text, const fs::path& source) {
+  const Json json = parseJson(text, source);
+  const Reader r{source};
+  if (!json.is_object() || !json.contains("angioray_render_sidecar"))
+    throw InputError(source, "not an angioray render sidecar (no \"angioray_render_sidecar\" key)");
+  if (r.number(json, "angioray_render_sidecar") != kSidecarVersion)
+    throw InputError(source, "unsupported sidecar version " + json["angioray_render_sidecar"].dump());
+  RenderSidecar s;
+  s.image = r.text(json, "image");
+  s.dataset = r.text(json, "dataset");
+  s.labels = r.text(json, "labels");
+  if (!r.at(json, "quality", "").is_null()) s.quality = r.choice(json, "quality", parseQuality);
+  s.raycaster = r.text(json, "raycaster");
+  if (s.raycaster != "fast" && s.raycaster != "reference")
+    throw InputError(source, "\"raycaster\" has unknown value '" + s.raycaster + "'");
+  s.params = readParams(r, json);
+  s.tf = r.tf(json, "tf");
+  if (!r.at(json, "vessel_glyph", "").is_null()) s.vesselGlyph = readVesselGlyph(r, json["vessel_glyph"]);
+  if (!r.at(json, "hybrid_cpr", "").is_null()) {
+    if (!s.vesselGlyph) throw InputError(source, "\"hybrid_cpr\" needs \"vessel_glyph\"");
+    s.hybrid = readHybrid(r, json["hybrid_cpr"]);
+  }
+  return s;
+}
+
+RenderSidecar loadRenderSidecar(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, fs::exists(file) ? "cannot read the render sidecar" : "no such render sidecar");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseRenderSidecar(text.str(), file);
+}
+
+ImageMetadata renderSidecarMetadata(const RenderSidecar& s) {
+  RenderDescription description{s.dataset, s.tf.name, s.quality, s.params};
+  ImageMetadata metadata = renderMetadata(description);
+  metadata["raycaster"] = s.raycaster;
+  if (!s.labels.empty()) metadata["labels"] = s.labels;
+  if (s.vesselGlyph) {
+    const VesselGlyphRecipe& vg = *s.vesselGlyph;
+    metadata.erase("transfer_function");
+    metadata["centerlines"] = vg.centerlines;
+    metadata["vg_focus"] = focusSpecText(vg.settings.focus);
+    metadata["vg_context"] = contextSpecText(vg.settings);
+    metadata["vg_outside"] = vg.outsideTf ? "tf " + vg.outsideTf->name : "clip";
+    metadata["vg_cleft"] = vg.settings.cleft ? "on" : "off";
+    metadata["vg_half_vessel"] = vg.settings.halfVessel ? "on" : "off";
+    metadata["focus_tf"] = vg.focusTf.name;
+    metadata["context_tf"] = vg.contextTf.name;
+  }
+  if (s.hybrid) {
+    metadata["hybrid_cpr_path"] = s.hybrid->path;
+    metadata["hybrid_transition_mm"] = numberText(s.hybrid->transitionMm);
+    metadata["hybrid_cpr_display"] = s.hybrid->grey ? "window " + numberText(s.hybrid->grey->window) +
+                                                          " level " + numberText(s.hybrid->grey->level)
+                                                    : "tf " + s.vesselGlyph->focusTf.name;
+  }
+  return metadata;
+}
+
+}  // namespace angio

@@ -1,0 +1,154 @@
+#include "render/series_export.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "core/slice_tiles.h"
+#include "core/view_geometry.h"
+#include "render/export.h"
+#include "render/sidecar_render.h"
+#include "io/input_error.h"
+
+namespace angio {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double wrapped(double degrees) {
+  const double w = std::fmod(degrees, 360.0);
+  return w < 0 ? w + 360.0 : w;
+}
+
+// The movie: MP4 with the 'mp4v' codec if this OpenCV build can write it, else MJPG in an AVI.
+// Frames of another size than the first are placed top-left on black (rotations about one axis
+// keep the size; this only guards the writer).
+class MovieWriter {
+ public:
+  MovieWriter(const fs::path& folder, const std::string& prefix, double fps, int width, int height)
+      : size_(width, height) {
+    struct Choice { const char* extension; int fourcc; const char* note; };
+    const Choice choices[] = {{".mp4", cv::VideoWriter::fourcc('m', 'p', '4', 'v'), "MP4 (mp4v)"},
+                              {".avi", cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), "AVI (MJPG)"}};
+    for (const Choice& choice : choices) {
+      path_ = folder / (prefix + choice.extension);
+      if (writer_.open(path_.string(), choice.fourcc, fps, size_)) {
+        note_ = choice.note;
+        return;
+      }
+      std::error_code ignored;
+      fs::remove(path_, ignored);
+    }
+    path_.clear();
+    note_ = "no movie: OpenCV's VideoWriter opens neither mp4v nor MJPG";
+  }
+
+  bool open() const { return writer_.isOpened(); }
+  const fs::path& path() const { return path_; }
+  const std::string& note() const { return note_; }
+
+  void add(const Image& image) {
+    const std::vector<std::uint8_t> rgb = toRgb8(image);
+    cv::Mat frame(size_, CV_8UC3, cv::Scalar(0, 0, 0));
+    for (int y = 0; y < std::min(image.height, size_.height); ++y)
+      for (int x = 0; x < std::min(image.width, size_.width); ++x) {
+        const std::uint8_t* p = &rgb[(std::size_t(y) * image.width + x) * 3];
+        frame.at<cv::Vec3b>(y, x) = cv::Vec3b(p[2], p[1], p[0]);  // OpenCV wants BGR
+      }
+    writer_.write(frame);
+  }
+
+  void close() { writer_.release(); }
+
+ private:
+  cv::Size size_;
+  cv::VideoWriter writer_;
+  fs::path path_;
+  std::string note_;
+};
+
+std::string numbered(const SeriesSpec& spec, int index) {
+  const int digits = std::max(3, int(std::to_string(spec.count - 1).size()));
+  char number[16];
+  std::snprintf(number, sizeof number, "%0*d", digits, index);
+  return spec.prefix + "-" + number + "." + spec.format;
+}
+
+void checkSpec(const SeriesSpec& spec, const fs::path& folder) {
+  if (spec.count < 1 || spec.count > 100000) throw InputError(folder, "the number of views must be 1 .. 100000");
+  if (!std::isfinite(spec.startDeg) || !std::isfinite(spec.arcDeg) || std::abs(spec.arcDeg) > 360)
+    throw InputError(folder, "the arc must be within -360 .. 360 degrees");
+  if (spec.format != "png" && spec.format != "tif")
+    throw InputError(folder, "series format must be png or tif, not " + spec.format);
+  if (spec.prefix.empty() || spec.prefix.find('/') != std::string::npos)
+    throw InputError(folder, "the file prefix must be a plain name");
+  if (spec.movie && !(spec.movieFps > 0 && spec.movieFps <= 120))
+    throw InputError(folder, "movie frames per second must be in (0, 120]");
+}
+
+}  // namespace
+
+std::vector<double> seriesAngles(double startDeg, double arcDeg, int count) {
+  const bool fullTurn = std::abs(std::abs(arcDeg) - 360) < 1e-9;
+  const double step = count <= 1 ? 0 : fullTurn ? arcDeg / count : arcDeg / (count - 1);
+  std::vector<double> angles;
+  for (int n = 0; n < count; ++n) angles.push_back(wrapped(startDeg + n * step));
+  return angles;
+}
+
+SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& centerlines,
+                                  const RenderSidecar& base, const SeriesSpec& spec,
+                                  const fs::path& folder, const SeriesCallbacks& callbacks) {
+  checkSpec(spec, folder);
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder)) throw InputError(folder, "cannot create the folder" + (error ? ": " + error.message() : ""));
+  const auto cancelled = [&] { return callbacks.cancel && callbacks.cancel->load(); };
+
+  const SliceTiles tiles = buildSliceTiles(volume, base.params.axis);  // shared by every view
+  const std::vector<double> angles = seriesAngles(spec.startDeg, spec.arcDeg, spec.count);
+
+  SeriesResult result;
+  std::unique_ptr<MovieWriter> movie;
+  for (int n = 0; n < spec.count && !result.cancelled; ++n) {
+    RenderSidecar sidecar = base;
+    sidecar.params.angleDeg = angles[n];
+    const ViewGeometry view = makeViewGeometry(volume, sidecar.params);
+    if (long(view.width) * view.height > kMaxImagePixels)
+      throw InputError(folder, "images of " + std::to_string(view.width) + "x" + std::to_string(view.height) +
+                                   " pixels are too large; use a larger isd");
+    bool stopped = false;
+    const Image image = renderSidecarImage(volume, centerlines, sidecar, {&tiles, callbacks.cancel, &stopped});
+    if (stopped || cancelled()) {
+      result.cancelled = true;
+      break;
+    }
+    const fs::path file = folder / numbered(spec, n);
+    writeImageAndSidecar(image, file, sidecar);
+    result.images.push_back(file);
+    if (spec.movie && !movie) movie = std::make_unique<MovieWriter>(folder, spec.prefix, spec.movieFps, image.width, image.height);
+    if (movie && movie->open()) movie->add(image);
+    if (callbacks.progress) callbacks.progress(n + 1, spec.count);
+  }
+  if (movie) {
+    movie->close();
+    result.movieNote = movie->note();
+    if (!movie->path().empty() && fs::exists(movie->path())) result.movie = movie->path();
+  } else if (spec.movie) {
+    result.movieNote = "no movie: no views were rendered";
+  }
+  char summary[512];
+  std::snprintf(summary, sizeof summary, "%s %zu of %d views to %s%s%s", result.cancelled ? "cancelled after" : "exported",
+                result.images.size(), spec.count, folder.string().c_str(), result.movie.empty() ? "" : " + ",
+                result.movie.empty() ? "" : result.movie.filename().string().c_str());
+  result.summary = summary;
+  return result;
+}
+
+}  // namespace angio
