@@ -15,17 +15,23 @@ struct Sampling {
   double osd = 1.0;   // object sampling distance, voxel units
   Filter filter = Filter::nearest;
   double ert = 0.98;  // early ray termination threshold on accumulated opacity; 1 = never
+
+  friend bool operator==(const Sampling&, const Sampling&) = default;
 };
 
 struct Shading {
   bool enabled = true;
   double ka = 0.3;  // ambient
   double kd = 0.7;  // headlight diffuse
+
+  friend bool operator==(const Shading&, const Shading&) = default;
 };
 
 struct MipWindow {
   double window = 600;  // HU
   double level = 250;   // HU
+
+  friend bool operator==(const MipWindow&, const MipWindow&) = default;
 };
 
 struct RenderParams {
@@ -35,6 +41,8 @@ struct RenderParams {
   Shading shading;
   Compositing compositing = Compositing::dvr;
   MipWindow mip;
+
+  friend bool operator==(const RenderParams&, const RenderParams&) = default;
 };
 
 // The quality levels' default sampling (rendering model table).

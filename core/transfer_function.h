@@ -17,12 +17,16 @@ struct ControlPoint {
   double hu = 0;
   glm::vec3 color{0.f};  // rgb in [0, 1]
   double opacity = 0;    // in [0, 1], per voxel unit
+
+  friend bool operator==(const ControlPoint&, const ControlPoint&) = default;
 };
 
 // The thesis's "safe" manipulators (sec. 4.2.2): they never change the TF's shape.
 struct TfModulators {
   double opacityScale = 1.0;  // global opacity modulator, result clamped to [0, 1]
   double huShift = 0.0;       // every control point moved by this many HU
+
+  friend bool operator==(const TfModulators&, const TfModulators&) = default;
 };
 
 struct TransferFunction {
@@ -32,6 +36,8 @@ struct TransferFunction {
   // MIP window/level (HU) that goes with this TF; used when rendering in MIP mode.
   double mipWindow = 600;
   double mipLevel = 250;
+
+  friend bool operator==(const TransferFunction&, const TransferFunction&) = default;
 };
 
 void sortPoints(TransferFunction& tf);

@@ -18,22 +18,6 @@ constexpr std::size_t kUploadBytesPerFrame = 3 << 20;
 
 using Ms = std::chrono::duration<double, std::milli>;
 
-bool sameSampling(const Sampling& a, const Sampling& b) {
-  return a.isd == b.isd && a.osd == b.osd && a.filter == b.filter && a.ert == b.ert;
-}
-
-bool sameRequest(const ProgressiveRequest& a, const ProgressiveRequest& b) {
-  const RenderParams &p = a.params, &q = b.params;
-  if (a.table != b.table || a.regions != b.regions || a.interactive != b.interactive || p.axis != q.axis ||
-      p.angleDeg != q.angleDeg || p.compositing != q.compositing ||
-      p.shading.enabled != q.shading.enabled || p.shading.ka != q.shading.ka ||
-      p.shading.kd != q.shading.kd || p.mip.window != q.mip.window || p.mip.level != q.mip.level)
-    return false;
-  for (int level = 0; level < kQualityLevels; ++level)
-    if (!sameSampling(a.levels[level], b.levels[level])) return false;
-  return true;
-}
-
 // FNV-1a of the shown pixels: lets tests tell images apart without reading screenshots.
 std::uint64_t checksum(const std::vector<std::uint8_t>& bytes) {
   std::uint64_t hash = 1469598103934665603ull;
@@ -172,7 +156,7 @@ void App::pollRenderer() {
 
 // Asks for a render when anything that decides the image changed (or an interaction ended).
 void App::requestRender(bool interactive) {
-  if (!table_ || !sameTf(state_.tf, tableTf_)) {
+  if (!table_ || state_.tf != tableTf_) {
     table_ = std::make_shared<const TfTable>(buildTable(state_.tf));
     tableTf_ = state_.tf;
   }
@@ -182,7 +166,7 @@ void App::requestRender(bool interactive) {
   request.regions = vesselRegions();
   request.interactive = interactive;
   request.levels = state_.levels;
-  if (lastRequest_ && sameRequest(*lastRequest_, request)) return;
+  if (lastRequest_ && *lastRequest_ == request) return;
   lastRequestId_ = renderer_->request(request);
   latency_.requested(lastRequestId_, frameStart_);
   lastRequest_ = request;

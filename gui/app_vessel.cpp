@@ -24,10 +24,6 @@ namespace {
 constexpr const char* kTargetNames[] = {"main", "focus", "context"};
 constexpr const char* kContextNames[] = {"none", "slab", "tube"};
 
-bool sameTube(const TubeRadius& a, const TubeRadius& b) {
-  return a.mode == b.mode && a.value == b.value && a.marginMm == b.marginMm;
-}
-
 // A slider for a double; true when it changed.
 bool sliderMm(const char* label, double& value, double lo, double hi, const char* format = "%.1f mm") {
   ImGui::SetNextItemWidth(180);
@@ -79,14 +75,6 @@ ImVec2 App::dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm
   const ImVec2 origin = viewport_.imageMin;
   return {origin.x + float(pixel.x / std::max(shownView.width, 1)) * (viewport_.imageMax.x - origin.x),
           origin.y + float(pixel.y / std::max(shownView.height, 1)) * (viewport_.imageMax.y - origin.y)};
-}
-
-bool sameGlyphSettings(const VesselGlyphSettings& a, const VesselGlyphSettings& b) {
-  return sameTube(a.focus, b.focus) && a.context == b.context && a.slab.frontMm == b.slab.frontMm &&
-         a.slab.backMm == b.slab.backMm && a.slab.halfWidthMm == b.slab.halfWidthMm &&
-         sameTube(a.contextTube, b.contextTube) && a.cleft == b.cleft &&
-         a.halfVessel == b.halfVessel && a.unknownVesselRadiusMm == b.unknownVesselRadiusMm &&
-         a.simplifyToleranceMm == b.simplifyToleranceMm;
 }
 
 // Reads the file off the UI thread; pollCenterlineLoad takes the result.
@@ -318,7 +306,7 @@ std::shared_ptr<const RegionSource> App::vesselRegions() {
   bool changed = !vg.source;
   try {
     const Centerlines* centerlines = framedCenterlines();
-    if (!vg.builder || !sameGlyphSettings(vg.builder->builder.settings(), set.settings)) {
+    if (!vg.builder || vg.builder->builder.settings() != set.settings) {
       vg.builder = std::make_shared<GuardedRegionBuilder>(*centerlines, set.settings);
       changed = true;
     }
@@ -328,7 +316,7 @@ std::shared_ptr<const RegionSource> App::vesselRegions() {
   }
   const auto refresh = [&](std::shared_ptr<const TfTable>& table, TransferFunction& builtFrom,
                            const TransferFunction& tf) {
-    if (table && sameTf(builtFrom, tf)) return;
+    if (table && builtFrom == tf) return;
     table = std::make_shared<const TfTable>(buildTable(tf));
     builtFrom = tf;
     changed = true;

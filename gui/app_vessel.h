@@ -75,6 +75,4 @@ struct VesselGlyphPanel {
 // point in the view's parallel projection: the inverse of ViewGeometry::rayOrigin.
 glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm);
 
-bool sameGlyphSettings(const VesselGlyphSettings& a, const VesselGlyphSettings& b);
-
 }  // namespace angio

@@ -225,19 +225,6 @@ std::vector<float> logHistogram(const DensityHistogram& histogram) {
   return result;
 }
 
-bool sameTf(const TransferFunction& a, const TransferFunction& b) {
-  if (a.points.size() != b.points.size() || a.name != b.name ||
-      a.modulators.opacityScale != b.modulators.opacityScale ||
-      a.modulators.huShift != b.modulators.huShift || a.mipWindow != b.mipWindow ||
-      a.mipLevel != b.mipLevel)
-    return false;
-  for (std::size_t n = 0; n < a.points.size(); ++n) {
-    const ControlPoint &p = a.points[n], &q = b.points[n];
-    if (p.hu != q.hu || p.opacity != q.opacity || p.color != q.color) return false;
-  }
-  return true;
-}
-
 TfEdit drawTfEditor(const TransferFunction& input, const std::vector<float>& histogram,
                     TfEditorView& view) {
   TfEdit edit;
@@ -269,7 +256,7 @@ TfEdit drawTfEditor(const TransferFunction& input, const std::vector<float>& his
   drawSelectedPointFields(tf, view, changed);
   drawModulators(tf, view, changed);
 
-  edit.changed = changed && !sameTf(tf, input);
+  edit.changed = changed && tf != input;
   if (edit.changed && !view.gestureBefore) view.gestureBefore = input;
   const bool holding = view.dragging >= 0 || ImGui::IsAnyItemActive();
   if (!holding && view.gestureBefore) {

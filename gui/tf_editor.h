@@ -37,8 +37,6 @@ std::vector<float> logHistogram(const DensityHistogram& histogram);
 TfEdit drawTfEditor(const TransferFunction& tf, const std::vector<float>& histogram,
                     TfEditorView& view);
 
-bool sameTf(const TransferFunction& a, const TransferFunction& b);
-
 // Undo/redo of TF edits: push the TF before each edit.
 class TfHistory {
  public:

@@ -31,6 +31,8 @@ struct SessionView {
   double degreesPerPixel = 0.5;
   bool autoSpin = false;
   double spinDegreesPerSecond = 30;
+
+  friend bool operator==(const SessionView&, const SessionView&) = default;
 };
 
 // How the CPR section colours a CPR: grey through the CTA-lumen or calcium window
@@ -47,6 +49,8 @@ struct SessionCpr {
   CprColouring colouring = CprColouring::ctaLumen;
   bool hybrid = false;       // the DVR+CPR hybrid (needs VesselGlyph on)
   double transitionMm = 0;   // the hybrid's transition band, 0 = hard edge
+
+  friend bool operator==(const SessionCpr&, const SessionCpr&) = default;
 };
 
 // The VesselGlyph panel (issue 5 item 7, gui/app_vessel.h): the centerline file and what the user
@@ -62,6 +66,8 @@ struct SessionVesselGlyph {
   bool outsideRendered = false;     // the outside: rendered with the main TF, else clipped
   TransferFunction focusTf, contextTf;  // no points: the presets below, loaded on first use
   std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";  // "" = edited
+
+  friend bool operator==(const SessionVesselGlyph&, const SessionVesselGlyph&) = default;
 };
 
 struct Session {
@@ -76,6 +82,8 @@ struct Session {
   SessionVesselGlyph vesselGlyph;
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
+
+  friend bool operator==(const Session&, const Session&) = default;
 };
 
 std::string toJson(const Session& session);

@@ -58,27 +58,15 @@ const ThreadPriorities& priorities() {
 
 using Ms = std::chrono::duration<double, std::milli>;
 
-bool sameSampling(const Sampling& a, const Sampling& b) {
-  return a.isd == b.isd && a.osd == b.osd && a.filter == b.filter && a.ert == b.ert;
-}
-
 // Everything but the sampling, which each level replaces.
-bool sameView(const RenderParams& a, const RenderParams& b) {
-  return a.axis == b.axis && a.angleDeg == b.angleDeg && a.shading.enabled == b.shading.enabled &&
-         a.shading.ka == b.shading.ka && a.shading.kd == b.shading.kd &&
-         a.compositing == b.compositing && a.mip.window == b.mip.window &&
-         a.mip.level == b.mip.level;
+bool sameView(RenderParams a, const RenderParams& b) {
+  a.sampling = b.sampling;
+  return a == b;
 }
 
 // The same TFs and regions (objects, not contents: a change makes new ones).
 bool sameClassification(const ProgressiveRequest& a, const ProgressiveRequest& b) {
   return a.table == b.table && a.regions == b.regions;
-}
-
-bool sameLevels(const LevelSamplings& a, const LevelSamplings& b) {
-  for (int q = 0; q < kQualityLevels; ++q)
-    if (!sameSampling(a[q], b[q])) return false;
-  return true;
 }
 
 // A oneTBB arena whose threads (oneTBB's and the progressive worker) run at `nice` while in it.
@@ -170,7 +158,7 @@ bool ProgressiveRenderer::isInProgress(const ProgressiveRequest& request) const 
   if (!newest || !status_.busy) return false;
   const ProgressiveRequest& r = newest->request;
   return sameClassification(r, request) && r.interactive == request.interactive &&
-         sameView(r.params, request.params) && sameLevels(r.levels, request.levels);
+         sameView(r.params, request.params) && r.levels == request.levels;
 }
 
 std::uint64_t ProgressiveRenderer::request(ProgressiveRequest request) {
@@ -202,7 +190,7 @@ bool ProgressiveRenderer::runningLevelStaysUseful(const ProgressiveRequest& requ
   const ProgressiveRequest& running = current_->request;
   if (request.interactive && level == int(Quality::fast)) return true;
   return sameClassification(running, request) && sameView(running.params, request.params) &&
-         sameSampling(running.levels[level], request.levels[level]);
+         running.levels[level] == request.levels[level];
 }
 
 std::shared_ptr<const ProgressiveFrame> ProgressiveRenderer::latestFrame() const {
@@ -297,7 +285,7 @@ int ProgressiveRenderer::firstLevelToRender(const Job& job) {
   const ProgressiveRequest& r = job.request;
   const int shown = int(latest_->level);
   const bool same = sameView(latest_->params, r.params) &&
-                    sameSampling(latest_->params.sampling, r.levels[shown]) &&
+                    latest_->params.sampling == r.levels[shown] &&
                     latest_->table == r.table && latest_->regions == r.regions;
   if (!same) return 0;
   auto relabelled = std::make_shared<ProgressiveFrame>(*latest_);

@@ -68,6 +68,9 @@ struct ProgressiveRequest {
   std::shared_ptr<const RegionSource> regions;
   bool interactive = false;              // dragging or spinning: fast only
   LevelSamplings levels = defaultLevelSamplings();
+
+  // TFs and regions compare as objects (a change makes new ones), the rest by value.
+  friend bool operator==(const ProgressiveRequest&, const ProgressiveRequest&) = default;
 };
 
 // 8-bit RGB pixels, rows top to bottom, no padding.

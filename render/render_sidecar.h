@@ -44,6 +44,8 @@ struct VesselGlyphRecipe {
   TransferFunction focusTf;
   TransferFunction contextTf;
   std::optional<TransferFunction> outsideTf;  // none: the outside is clipped
+
+  friend bool operator==(const VesselGlyphRecipe&, const VesselGlyphRecipe&) = default;
 };
 
 // DVR+CPR hybrid (issue 6 item 5, thesis fig. 5.4/5.5): the focus footprint shows the projected CPR.
@@ -51,6 +53,8 @@ struct HybridCprRecipe {
   std::string path = "all";           // "all" or a path index (vessel/cpr_layout.h selectPaths)
   double transitionMm = 0;            // width of the smooth band around the cut; 0 = hard edge
   std::optional<WindowLevel> grey;    // none: the CPR coloured through the focus TF
+
+  friend bool operator==(const HybridCprRecipe&, const HybridCprRecipe&) = default;
 };
 
 struct RenderSidecar {
@@ -63,6 +67,8 @@ struct RenderSidecar {
   TransferFunction tf;  // plain DVR (and MIP's window/level source); unused with vesselGlyph
   std::optional<VesselGlyphRecipe> vesselGlyph;
   std::optional<HybridCprRecipe> hybrid;  // needs vesselGlyph
+
+  friend bool operator==(const RenderSidecar&, const RenderSidecar&) = default;
 };
 
 // IMAGE + ".json", e.g. "aorta.png" -> "aorta.png.json".

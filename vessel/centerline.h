@@ -23,11 +23,15 @@ namespace angio {
 struct CenterlinePoint {
   glm::dvec3 positionMm{0.0};
   double radiusMm = 0;  // lumen radius; 0 = unknown
+
+  friend bool operator==(const CenterlinePoint&, const CenterlinePoint&) = default;
 };
 
 struct CenterlinePath {
   std::string name;
   std::vector<CenterlinePoint> points;
+
+  friend bool operator==(const CenterlinePath&, const CenterlinePath&) = default;
 };
 
 enum class CenterlineFrame { kPhysical, kVolume };
@@ -36,6 +40,8 @@ struct Centerlines {
   std::string source;  // the file (or "phantom"), for messages
   CenterlineFrame frame = CenterlineFrame::kPhysical;
   std::vector<CenterlinePath> paths;
+
+  friend bool operator==(const Centerlines&, const Centerlines&) = default;
 };
 
 // --- Conversion and frames ----------------------------------------------------------------------

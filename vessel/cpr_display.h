@@ -16,6 +16,8 @@ namespace angio {
 struct WindowLevel {
   double window = 800;  // HU
   double level = 250;   // HU
+
+  friend bool operator==(const WindowLevel&, const WindowLevel&) = default;
 };
 
 // Presets (calibrated HU). "cta-lumen": contrast-filled lumen (~250-500 HU) mid-grey to white

@@ -66,12 +66,16 @@ struct TubeRadius {
 
   // The tube radius at a centerline point of the given lumen radius (mm).
   double at(double vesselRadiusMm) const;
+
+  friend bool operator==(const TubeRadius&, const TubeRadius&) = default;
 };
 
 struct SlabContext {
   double frontMm = 20;      // d1: in front of the centerline's depth
   double backMm = 20;       // d2: behind it
   double halfWidthMm = 40;  // sideways from the centerline, in image space; may be infinity
+
+  friend bool operator==(const SlabContext&, const SlabContext&) = default;
 };
 
 enum class ContextShape { kNone, kSlab, kTube };
@@ -87,6 +91,8 @@ struct VesselGlyphSettings {
   double unknownVesselRadiusMm = 2.0;
   // Path simplification before the per-view work (see above); 0 keeps every point.
   double simplifyToleranceMm = 0.05;
+
+  friend bool operator==(const VesselGlyphSettings&, const VesselGlyphSettings&) = default;
 };
 
 // Why the settings are unusable (one line naming the setting), or nothing when they are fine:
