@@ -15,10 +15,9 @@
 
 #include "core/blocked_volume.h"
 #include "core/fast_raycaster.h"
-#include "core/reference_raycaster.h"
-#include "core/slice_tiles.h"
-#include "vessel/cpr_hybrid.h"
-#include "vessel/vessel_glyph.h"
+#include "render/frame_renderer.h"
+#include "render/prepared_scene.h"
+#include "render/render_recipe.h"
 
 namespace angio {
 
@@ -96,97 +95,48 @@ Switches onlyWith(const Technique* technique) {
   return s;
 }
 
-// The "vessel glyph" rows' renderer: intervals built per frame, then the fast raycaster.
-class GlyphFrames {
- public:
-  GlyphFrames(const Volume& volume, const TransferFunction& tf, const SliceTiles& tiles,
-              const Centerlines& inVolumeFrame)
-      : volume_(volume), tiles_(tiles), builder_(inVolumeFrame, VesselGlyphSettings{}),
-        focus_(buildTable(tf)), context_(buildTable(translucent(tf))),
-        visible_(classifyTiles(tiles, RegionTables{&regions_, &focus_, &context_, nullptr})) {}
+// The "vessel glyph" rows: the phantom's tree with the default shapes, the focus through the
+// bench's TF, the context through a translucent copy of it, the outside clipped; "hybrid cpr" adds
+// the projected CPR of every path through the focus TF with a hard edge (thesis fig. 5.4), as
+// `angioray render --hybrid-cpr` does.
+RenderRecipe vesselGlyphRecipe(const TransferFunction& tf, bool hybrid) {
+  RenderRecipe recipe;
+  recipe.tf = tf;
+  VesselGlyphRecipe& vg = recipe.vesselGlyph.emplace();
+  vg.focusTf = vg.contextTf = tf;
+  vg.contextTf.modulators.opacityScale *= 0.3;
+  if (hybrid) recipe.hybrid = HybridCprRecipe{};
+  return recipe;
+}
 
-  double operator()(const RenderParams& p) { return render(p); }
-
-  // Builds the view's regions and renders the frame into image(); returns the samples.
-  double render(const RenderParams& p) {
-    view_ = makeViewGeometry(volume_, p);
-    builder_.build(view_, regions_);
+// One frame of `scene` (recycling the previous frame's memory, as the progressive renderer
+// does); returns the samples evaluated.
+FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedScene> scene, Image& previous) {
+  return [&frames, scene = std::move(scene), &previous](const RenderParams& p) {
     FastRenderStats stats;
-    FastRenderOptions options;
-    options.recycle = &previous_;
-    previous_ = renderFast(volume_, tiles_, visible_, RegionTables{&regions_, &focus_, &context_, nullptr},
-                           p, options, &stats);
+    previous = frames.render(scene, p, {.recycle = &previous}, &stats);
     return double(stats.samples);
-  }
-  const ViewGeometry& view() const { return view_; }
-  const RayRegions& regions() const { return regions_; }
-  Image& image() { return previous_; }  // the next frame renders over it
-
- private:
-  static TransferFunction translucent(TransferFunction tf) {
-    tf.modulators.opacityScale *= 0.3;
-    return tf;
-  }
-  const Volume& volume_;
-  const SliceTiles& tiles_;
-  RayRegionBuilder builder_;
-  ViewGeometry view_;
-  RayRegions regions_;
-  TfTable focus_, context_;
-  std::vector<std::uint8_t> visible_;
-  Image previous_;
-};
-
-// The "hybrid cpr" rows (issue 6 items 5 and 8; thesis fig. 5.4): the vessel glyph frame, then
-// the projected CPR of every path in the same view, shown through the focus TF and composited
-// into the focus's footprint with a hard edge, as `angioray render --hybrid-cpr` does.
-class HybridFrames {
- public:
-  HybridFrames(const Volume& volume, const TransferFunction& tf, const SliceTiles& tiles,
-               const Centerlines& inVolumeFrame)
-      : glyph_(volume, tf, tiles, inVolumeFrame), volume_(volume), paths_(inVolumeFrame.paths) {
-    display_.tf = tf;
-    display_.centerlineMarker = display_.ruler = false;
-  }
-
-  double operator()(const RenderParams& p) {
-    const double samples = glyph_.render(p);
-    compositeCprInPlace(glyph_.image(), volume_, layoutCpr(paths_, glyph_.view(), {CprMode::projected}),
-                        focusFootprint(glyph_.regions()), display_, {0, glyph_.view().pixelMm});
-    return samples;
-  }
-
- private:
-  GlyphFrames glyph_;
-  const Volume& volume_;
-  std::vector<CenterlinePath> paths_;
-  CprDisplay display_;
-};
+  };
+}
 
 // Interruption latency (the progressive GUI restarts at fast on every change): high-quality frames
-// at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> renderFast
+// at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> the render
 // returned. Frames recycle memory, as in the GUI after its first high-quality frame (the very
-// first one spends ~30 ms uninterruptibly in page faults for its image).
-std::vector<double> interruptLatencies(const Volume& volume, const SliceTiles& tiles,
-                                       const std::vector<std::uint8_t>& visible, const TfTable& table,
+// first one spends its first milliseconds uninterruptibly in page faults for its image).
+std::vector<double> interruptLatencies(FrameRenderer& frames, const std::shared_ptr<const PreparedScene>& scene,
                                        Axis axis, int count) {
   std::vector<double> latencies;
   RenderParams warmUp;
   warmUp.axis = axis;
   warmUp.sampling = qualitySampling(Quality::high);
-  Image previous = renderFast(volume, tiles, visible, table, warmUp);
+  Image previous = frames.render(scene, warmUp);
   for (int n = 0; n < count; ++n) {
-    RenderParams p;
-    p.axis = axis;
+    RenderParams p = warmUp;
     p.angleDeg = 360.0 * n / count + 7.0;
-    p.sampling = qualitySampling(Quality::high);
     std::atomic<bool> cancel{false};
-    FastRenderOptions options;
-    options.cancel = &cancel;
-    options.recycle = &previous;
     Clock::time_point returnedAt;
     std::thread worker([&] {
-      previous = renderFast(volume, tiles, visible, table, p, options);
+      previous = frames.render(scene, p, {.cancel = &cancel, .recycle = &previous});
       returnedAt = Clock::now();
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(10 + (n * 37) % 190));
@@ -209,37 +159,38 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
   report.volumeMiB = volume.voxelCount() * sizeof(Voxel) / 1048576.0;
   report.threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
 
-  const TfTable table = buildTable(tf);
+  RenderRecipe recipe;
+  recipe.tf = tf;
+  recipe.params.axis = settings.axis;
+  const std::shared_ptr<const PreparedScene> scene = PreparedScene::prepare(volume, {}, recipe);
+  FrameRenderer frames(volume);
   auto start = Clock::now();
-  const SliceTiles tiles = buildSliceTiles(volume, settings.axis);
+  frames.prepare(scene, settings.axis);  // slice tiles and their classification
   report.preprocessMs = msSince(start);
+  // A TF change: the same TF in a new scene is classified again, the tiles are kept.
+  const std::shared_ptr<const PreparedScene> edited = PreparedScene::prepare(volume, {}, recipe);
   start = Clock::now();
-  const std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
+  frames.prepare(edited, settings.axis);
   report.classifyMs = msSince(start);
+  report.preprocessMs -= report.classifyMs;
   const std::vector<double> latencies =
-      interruptLatencies(volume, tiles, visible, table, settings.axis, std::max(settings.angles, 12));
+      interruptLatencies(frames, scene, settings.axis, std::max(settings.angles, 12));
   report.interruptMedianMs = median(latencies);
   report.interruptMaxMs = *std::max_element(latencies.begin(), latencies.end());
   report.interrupts = int(latencies.size());
-  report.accelerationMiB = (tiles.minDensity.size() * 8 + visible.size()) / 1048576.0;  // 4 uint16 ranges + bits
-  report.blocking = blockingReport(volume, table);
+  report.accelerationMiB = frames.structureMiB();
+  report.blocking = blockingReport(volume, buildTable(tf));
 
-  // Frames recycle the previous frame's memory, as the progressive renderer does.
   Image previous;
-  auto fastFrame = [&](FastRenderOptions options) {
-    return [&, options](const RenderParams& p) mutable {
-      FastRenderStats stats;
-      options.recycle = &previous;
-      previous = renderFast(volume, tiles, visible, table, p, options, &stats);
-      return double(stats.samples);
-    };
-  };
   auto timeVariant = [&](const std::string& level, const std::string& variant, int angles,
                          RenderParams p, const Switches& switches) {
     if (!switches.ert) p.sampling.ert = 1.0;
     std::optional<tbb::global_control> oneThread;
     if (!switches.threads) oneThread.emplace(tbb::global_control::max_allowed_parallelism, 1);
-    return timeFrames(level, variant, angles, p, fastFrame(switches.options));
+    frames.techniques = switches.options;
+    FrameTimes times = timeFrames(level, variant, angles, p, sceneFrames(frames, scene, previous));
+    frames.techniques = {};
+    return times;
   };
   for (const Level& level : levels()) {
     const auto& wanted = settings.levels;
@@ -247,7 +198,7 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
     RenderParams p;
     p.axis = settings.axis;
     p.sampling = level.sampling;
-    report.rows.push_back(timeFrames(level.name, "all", settings.angles, p, fastFrame({})));
+    report.rows.push_back(timeFrames(level.name, "all", settings.angles, p, sceneFrames(frames, scene, previous)));
     std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
     if (settings.withContributions) {
       // Thesis fig. 4.9 ff.: "contribution" = everything but one technique, at every level;
@@ -265,21 +216,23 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
       }
     }
     if (settings.vesselTree) {
-      GlyphFrames glyph(volume, tf, tiles, *settings.vesselTree);
-      report.rows.push_back(timeFrames(level.name, "vessel glyph", settings.angles, p, std::ref(glyph)));
-      std::fprintf(stderr, "bench: %s vessel glyph %.1f ms\n", level.name.c_str(),
-                   report.rows.back().medianMs);
-      HybridFrames hybrid(volume, tf, tiles, *settings.vesselTree);
-      report.rows.push_back(timeFrames(level.name, "hybrid cpr", settings.angles, p, std::ref(hybrid)));
-      std::fprintf(stderr, "bench: %s hybrid cpr %.1f ms\n", level.name.c_str(),
-                   report.rows.back().medianMs);
+      for (const bool hybrid : {false, true}) {
+        const auto glyph = PreparedScene::prepare(volume, *settings.vesselTree, vesselGlyphRecipe(tf, hybrid));
+        const char* variant = hybrid ? "hybrid cpr" : "vessel glyph";
+        report.rows.push_back(timeFrames(level.name, variant, settings.angles, p, sceneFrames(frames, glyph, previous)));
+        std::fprintf(stderr, "bench: %s %s %.1f ms\n", level.name.c_str(), variant, report.rows.back().medianMs);
+      }
     }
-    if (settings.withReference)
+    if (settings.withReference) {
+      RenderRecipe reference = recipe;
+      reference.raycaster = Raycaster::reference;
+      const auto referenceScene = PreparedScene::prepare(volume, {}, reference);
       report.rows.push_back(timeFrames(level.name, "reference", settings.angles, p,
                                        [&](const RenderParams& rp) {
-                                         renderReference(volume, table, rp);
+                                         frames.render(referenceScene, rp);
                                          return 0.0;
                                        }));
+    }
   }
   return report;
 }

@@ -8,8 +8,8 @@
 #include "cli/progress_line.h"
 #include "cli/size_option.h"
 #include "io/image_export.h"
-#include "render/render_sidecar.h"
-#include "render/sidecar_render.h"
+#include "render/recipe_json.h"
+#include "render/frame_renderer.h"
 #include "io/tf_file.h"
 
 namespace angio {
@@ -25,14 +25,14 @@ int runDemo(const DemoOptions& options) {
   std::filesystem::create_directories(options.outDir);
   const TransferFunction tf = loadPresetOrFile("cta-vessels-bone");
   for (Quality quality : {Quality::fast, Quality::medium, Quality::high}) {
-    RenderSidecar recipe;
+    RenderRecipe recipe;
     recipe.dataset = "phantom " + options.size;
     recipe.tf = tf;
     recipe.quality = quality;
     recipe.params.angleDeg = 20;  // a slight oblique view shows depth better than AP
     recipe.params.sampling = qualitySampling(quality);
     const auto out = std::filesystem::path(options.outDir) / ("phantom-" + std::string(toString(quality)) + ".png");
-    exportImage(renderSidecarImage(phantom.volume, {}, recipe), out, renderSidecarMetadata(recipe));
+    exportImage(renderRecipe(phantom.volume, {}, recipe), out, renderSidecarMetadata(recipe));
     std::printf("wrote %s\n", out.string().c_str());
   }
   std::printf("no GUI yet: the three quality levels are in %s/\n",

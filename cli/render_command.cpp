@@ -12,8 +12,8 @@
 #include "io/tf_file.h"
 #include "io/volume_reader.h"
 #include "render/export.h"
-#include "render/render_sidecar.h"
-#include "render/sidecar_render.h"
+#include "render/recipe_json.h"
+#include "render/frame_renderer.h"
 
 namespace angio {
 
@@ -42,23 +42,23 @@ std::string absolutePath(const std::string& path) {
   return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
 }
 
-RenderSidecar sidecarFrom(const RenderOptions& o) {
+RenderRecipe sidecarFrom(const RenderOptions& o) {
   if (o.volume.empty() || o.out.empty())
     throw std::invalid_argument("render needs VOLUME and --out (or --params SIDECAR.json)");
-  RenderSidecar s;
+  RenderRecipe s;
   s.vesselGlyph = vesselGlyphRecipe(o.vesselGlyph, o.tf);
   s.hybrid = hybridCprRecipe(o.vesselGlyph);
   if (s.vesselGlyph && o.mip) throw std::invalid_argument("--mip cannot be combined with --centerlines");
   s.dataset = absolutePath(o.volume);
   s.labels = absolutePath(o.labels);
   s.quality = parseQuality(o.quality);
-  s.raycaster = o.reference ? "reference" : "fast";
+  s.raycaster = o.reference ? Raycaster::reference : Raycaster::fast;
   s.tf = loadPresetOrFile(o.tf);
   s.params = paramsFrom(o, s.tf);
   return s;
 }
 
-Volume loadVolume(const RenderSidecar& sidecar) {
+Volume loadVolume(const RenderRecipe& sidecar) {
   ReadOptions read;
   read.labelPath = sidecar.labels;
   read.warn = printWarning;
@@ -67,7 +67,7 @@ Volume loadVolume(const RenderSidecar& sidecar) {
   return readVolume(sidecar.dataset, read).volume;
 }
 
-Centerlines loadCenterlines(const RenderSidecar& sidecar, const Volume& volume) {
+Centerlines loadCenterlines(const RenderRecipe& sidecar, const Volume& volume) {
   if (!sidecar.vesselGlyph) return {};
   CenterlineLoadOptions load;
   load.warn = printWarning;
@@ -77,7 +77,7 @@ Centerlines loadCenterlines(const RenderSidecar& sidecar, const Volume& volume) 
 }
 
 // Loads the volume (and centerlines), renders, writes `out` and its sidecar (image = out).
-void renderToFile(const RenderSidecar& sidecar, const std::filesystem::path& out) {
+void renderToFile(const RenderRecipe& sidecar, const std::filesystem::path& out) {
   const Volume volume = loadVolume(sidecar);
   const Centerlines centerlines = loadCenterlines(sidecar, volume);
   checkImageSize(makeViewGeometry(volume, sidecar.params), out);
@@ -85,8 +85,7 @@ void renderToFile(const RenderSidecar& sidecar, const std::filesystem::path& out
   Image image;
   {
     ProgressLine progress("rendering");
-    image = renderSidecarImage(volume, centerlines, sidecar,
-                               {.progress = std::ref(progress), .warn = printWarning});
+    image = renderRecipe(volume, centerlines, sidecar, {.progress = std::ref(progress)}, printWarning);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeImageAndSidecar(image, out, sidecar);
@@ -101,7 +100,7 @@ int runRender(const RenderOptions& options) {
     renderToFile(sidecarFrom(options), options.out);
     return 0;
   }
-  const RenderSidecar sidecar = loadRenderSidecar(options.params);
+  const RenderRecipe sidecar = loadRenderSidecar(options.params);
   renderToFile(sidecar, options.out.empty() ? sidecar.image : options.out);
   return 0;
 }

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 
 namespace CLI {
 class App;

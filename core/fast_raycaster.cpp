@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -447,30 +448,22 @@ TfTable unionVisibility(const RegionTables& tables) {
 
 }  // namespace
 
-Image renderFast(const Volume& volume, const SliceTiles& tiles,
-                 const std::vector<std::uint8_t>& visibleTiles, const TfTable& table,
+Image renderFast(const Volume& volume, const TileClassification& classification, const TfTable& table,
                  const RenderParams& params, const FastRenderOptions& options,
                  FastRenderStats* stats) {
-  return renderFast(volume, tiles, visibleTiles, singleTable(table), params, options, stats);
+  return renderFast(volume, classification, singleTable(table), params, options, stats);
 }
 
-std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const RegionTables& tables) {
-  std::vector<std::uint8_t> visible(tiles.minDensity.size(), 0);
-  for (const TfTable* table : {tables.regions ? tables.focus : nullptr,
-                               tables.regions ? tables.context : nullptr, tables.outside}) {
-    if (!table) continue;
-    const std::vector<std::uint8_t> byTable = classifyTiles(tiles, *table);
-    for (std::size_t n = 0; n < visible.size(); ++n) visible[n] |= byTable[n];
-  }
-  return visible;
-}
-
-Image renderFast(const Volume& volume, const SliceTiles& tiles,
-                 const std::vector<std::uint8_t>& visibleTiles, const RegionTables& tables,
-                 const RenderParams& params, const FastRenderOptions& options,
-                 FastRenderStats* stats) {
+Image renderFast(const Volume& volume, const TileClassification& classification,
+                 const RegionTables& tables, const RenderParams& params,
+                 const FastRenderOptions& options, FastRenderStats* stats) {
+  if (classification.axis() != params.axis)
+    throw std::logic_error("renderFast: the tile classification is of another rotation axis");
+  if (!classification.classifies(tables))
+    throw std::logic_error("renderFast: the tile classification was made for other TFs");
   const auto start = std::chrono::steady_clock::now();
-  Frame f{volume, tiles, visibleTiles, params, options, tables, makeViewGeometry(volume, params),
+  const SliceTiles& tiles = classification.tiles();
+  Frame f{volume, tiles, classification.visible(), params, options, tables, makeViewGeometry(volume, params),
           frameTables(tables, params.sampling.osd), {}};
   const TfTable anyRegion = unionVisibility(tables);
   f.anyRegionTf = &anyRegion;

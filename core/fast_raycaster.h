@@ -19,6 +19,7 @@
 #include "core/image.h"
 #include "core/render_params.h"
 #include "core/slice_tiles.h"
+#include "core/tile_classification.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
 
@@ -49,18 +50,15 @@ struct FastRenderStats {
   bool cancelled = false;
 };
 
-// `tiles` must be built for params.axis; `visibleTiles` = classifyTiles(tiles, table).
-Image renderFast(const Volume& volume, const SliceTiles& tiles,
-                 const std::vector<std::uint8_t>& visibleTiles, const TfTable& table,
+// `classification` must be of tiles built for params.axis and made from `tables`' TFs (throws
+// std::logic_error otherwise). With regions, VesselGlyph: a TF per region of each ray
+// (core/compositing.h).
+Image renderFast(const Volume& volume, const TileClassification& classification,
+                 const RegionTables& tables, const RenderParams& params,
+                 const FastRenderOptions& options = {}, FastRenderStats* stats = nullptr);
+// Plain DVR/MIP with one TF.
+Image renderFast(const Volume& volume, const TileClassification& classification, const TfTable& table,
                  const RenderParams& params, const FastRenderOptions& options = {},
                  FastRenderStats* stats = nullptr);
-
-// VesselGlyph: a TF per region of each ray (core/compositing.h). `visibleTiles` must be
-// classifyTiles(tiles, tables): a tile is visible if any region's TF shows a density in it.
-Image renderFast(const Volume& volume, const SliceTiles& tiles,
-                 const std::vector<std::uint8_t>& visibleTiles, const RegionTables& tables,
-                 const RenderParams& params, const FastRenderOptions& options = {},
-                 FastRenderStats* stats = nullptr);
-std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const RegionTables& tables);
 
 }  // namespace angio

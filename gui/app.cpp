@@ -44,7 +44,7 @@ App::App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<v
       state_(std::move(state)),
       texture_(gl),
       wakeUi_(std::move(wakeUi)),
-      renderer_(std::make_unique<ProgressiveRenderer>(data_.volume, ProgressiveCallbacks{{}, wakeUi_})),
+      renderer_(makeRenderer()),
       presets_(listPresets()),
       cprView_(gl) {
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
@@ -66,6 +66,15 @@ App::~App() {
   if (export_.cancel) export_.cancel->store(true);
   if (export_.job.valid()) export_.job.wait();
   if (histogramJob_.valid()) histogramJob_.wait();
+}
+
+// The renderer of the shown dataset: each frame's display image made on its worker, the UI woken
+// when one is published.
+std::unique_ptr<ProgressiveRenderer> App::makeRenderer() {
+  ProgressiveCallbacks callbacks;
+  callbacks.makeDisplay = makeDisplayImage;
+  callbacks.afterPublish = wakeUi_;
+  return std::make_unique<ProgressiveRenderer>(data_.volume, threads_, std::move(callbacks));
 }
 
 void App::noteRect(const std::string& name) {
@@ -131,7 +140,7 @@ void App::pollRenderer() {
     } else {
       incoming_ = frame;
       latency_.seen(*frame, Clock::now());
-      texture_.begin(frame);
+      texture_.begin(frame->display);
     }
   }
   if (!incoming_) return;
@@ -156,14 +165,9 @@ void App::pollRenderer() {
 
 // Asks for a render when anything that decides the image changed (or an interaction ended).
 void App::requestRender(bool interactive) {
-  if (!table_ || state_.tf != tableTf_) {
-    table_ = std::make_shared<const TfTable>(buildTable(state_.tf));
-    tableTf_ = state_.tf;
-  }
   ProgressiveRequest request;
+  request.scene = currentScene();
   request.params = renderParamsOf(state_);
-  request.table = table_;
-  request.regions = vesselRegions();
   request.interactive = interactive;
   request.levels = state_.levels;
   if (lastRequest_ && *lastRequest_ == request) return;
@@ -258,7 +262,7 @@ nlohmann::json App::report() const {
              {"filter", toString(s.filter)},
              {"render_ms", shown_->renderMs},
              {"samples", shown_->samples},
-             {"checksum", std::to_string(checksum(shown_->rgb8))}};
+             {"checksum", std::to_string(checksum(shown_->display->levels.front().rgb))}};
   }
   const ProgressiveStatus status = renderer_->status();
   nlohmann::json levels = nlohmann::json::object();

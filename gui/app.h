@@ -29,7 +29,7 @@
 #include "gui/app_vessel.h"
 #include "gui/tf_editor.h"
 #include "gui/viewport.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 #include "io/session_file.h"
 #include "io/tf_file.h"
 
@@ -94,6 +94,7 @@ class App {
   static constexpr float kPanelWidth = 430;   // the side panel on the right (screen pixels)
   static constexpr float kStatusHeight = 28;  // the status bar at the bottom
 
+  std::unique_ptr<ProgressiveRenderer> makeRenderer();
   void pollHistogram();
   void pollRenderer();
   void requestRender(bool interactive);
@@ -128,7 +129,6 @@ class App {
   void dropCenterlines();
   const Centerlines* framedCenterlines();
   void ensureVesselTfs();
-  std::shared_ptr<const RegionSource> vesselRegions();
   nlohmann::json vesselReport() const;
   ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
@@ -141,11 +141,14 @@ class App {
   // DVR+CPR hybrid (gui/app_hybrid.cpp): its controls in the CPR section, and the finish step
   // the progressive renderer runs on each VesselGlyph image when it is on.
   void drawHybridControls();
-  std::function<void(const ViewGeometry&, const RayRegions&, Image&)> hybridFinishStep();
   nlohmann::json hybridReport() const;
   // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it.
   std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
   std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
+  // The scene the window renders (gui/app_recipe.cpp): the recipe an export renders, without its
+  // view, prepared again only when it changes.
+  std::shared_ptr<const PreparedScene> currentScene();
+  std::shared_ptr<const PreparedScene> prepareScene(RenderRecipe recipe, const Centerlines& centerlines);
   RenderSidecar exportRecipe() const;  // of what the last request rendered
   Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
   TransferFunction& editedTf();  // the TF the TF editor edits: main, focus or context
@@ -158,11 +161,13 @@ class App {
   AppState state_;
   StreamedTexture texture_;
   std::function<void()> wakeUi_;
+  RenderThreads threads_;  // before renderer_, which renders in its arenas
   std::unique_ptr<ProgressiveRenderer> renderer_;  // replaced with the dataset
 
   // Rendering hand-off.
-  std::shared_ptr<const TfTable> table_;
-  TransferFunction tableTf_;            // the TF table_ was built from
+  std::shared_ptr<const PreparedScene> scene_;  // of the last request (reset with the dataset)
+  RenderRecipe sceneRecipe_;                    // what scene_ was prepared from
+  Centerlines sceneCenterlines_;                // ... with these centerlines
   std::optional<ProgressiveRequest> lastRequest_;
   std::uint64_t lastRequestId_ = 0;
   std::shared_ptr<const ProgressiveFrame> shown_;     // the frame the texture shows

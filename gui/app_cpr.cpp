@@ -24,14 +24,6 @@ constexpr const char* kColourings[] = {"CTA lumen", "calcium", "focus TF"};
 constexpr const char* kColouringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
 constexpr float kClickReachPx = 12;  // a click this near a projected centerline moves the cursor
 
-std::shared_ptr<const ProgressiveFrame> textureFrameOf(Image image) {
-  auto frame = std::make_shared<ProgressiveFrame>();
-  frame->rgb8 = toRgb8(image);
-  frame->mipmaps = halvedLevels(frame->rgb8, image.width, image.height);
-  frame->image = std::make_shared<const Image>(std::move(image));
-  return frame;
-}
-
 std::string pathLabel(const Centerlines& centerlines, int path) {
   if (path < 0 || path >= int(centerlines.paths.size())) return "all paths";
   const std::string& name = centerlines.paths[path].name;
@@ -149,7 +141,7 @@ void App::updateCpr() {
     CprDisplay display;
     if (state_.cpr.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
     if (state_.cpr.colouring == CprColouring::focusTf) display.tf = state_.vesselGlyph.focusTf;
-    panel.frame = textureFrameOf(displayCpr(cpr.layout, cpr.hu, display));
+    panel.frame = makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
     panel.texture.begin(panel.frame);
     while (!panel.texture.step(std::size_t(64) << 20)) {
     }
@@ -184,7 +176,7 @@ void App::drawCprView() {
     ImGui::End();
     return;
   }
-  const Image& image = *panel.frame->image;
+  const Rgb8Image& image = panel.frame->levels.front();
   const ImVec2 avail = ImGui::GetContentRegionAvail(), at = ImGui::GetCursorScreenPos();
   const float scale = std::max(std::min(avail.x / float(image.width), avail.y / float(image.height)), 1e-3f);
   const ImVec2 size(float(image.width) * scale, float(image.height) * scale);

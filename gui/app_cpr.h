@@ -29,7 +29,7 @@ struct CprViewPanel {
 
   // What is shown.
   StreamedTexture texture;
-  std::shared_ptr<const ProgressiveFrame> frame;  // the CPR image as the texture uploads it
+  std::shared_ptr<const DisplayImage> frame;  // the CPR image as the texture uploads it
   std::optional<Cpr> cpr;
   std::string madeFor;  // the inputs `cpr` was computed for (recomputed when they change)
   std::string error;

@@ -102,7 +102,8 @@ void App::replaceDataset(LoadedDataset dataset) {
   state_.view.panPx = glm::dvec2(0.0);
   histogram_.clear();
   huRange_.reset();
-  renderer_ = std::make_unique<ProgressiveRenderer>(data_.volume, ProgressiveCallbacks{{}, wakeUi_});
+  scene_.reset();  // of the old volume
+  renderer_ = makeRenderer();
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
 }
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "gui/app_state.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 
 namespace angio {
 

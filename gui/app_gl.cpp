@@ -31,10 +31,9 @@ struct LevelView {
   const std::uint8_t* rgb;
 };
 
-LevelView levelOf(const ProgressiveFrame& frame, int level) {
-  if (level == 0) return {frame.image->width, frame.image->height, frame.rgb8.data()};
-  const Rgb8Image& half = frame.mipmaps[level - 1];
-  return {half.width, half.height, half.rgb.data()};
+LevelView levelOf(const DisplayImage& image, int level) {
+  const Rgb8Image& pixels = image.levels[level];
+  return {pixels.width, pixels.height, pixels.rgb.data()};
 }
 
 }  // namespace
@@ -88,14 +87,14 @@ void StreamedTexture::bind(unsigned texture) {
 
 void StreamedTexture::restoreBinding() { gl_.bindTexture(kTexture2D, unsigned(previousBinding_)); }
 
-void StreamedTexture::begin(std::shared_ptr<const ProgressiveFrame> frame) {
+void StreamedTexture::begin(std::shared_ptr<const DisplayImage> image) {
   if (!back_) gl_.genTextures(1, &back_);
-  incoming_ = std::move(frame);
+  incoming_ = std::move(image);
   level_ = 0;
   nextRow_ = 0;
   // Storage for every level first (contents follow in strips).
   bind(back_);
-  const int levels = 1 + int(incoming_->mipmaps.size());
+  const int levels = int(incoming_->levels.size());
   gl_.texParameteri(kTexture2D, kTextureBaseLevel, 0);
   gl_.texParameteri(kTexture2D, kTextureMaxLevel, levels - 1);
   gl_.texParameteri(kTexture2D, kTextureMinFilter, kLinearMipmapLinear);
@@ -111,7 +110,7 @@ void StreamedTexture::begin(std::shared_ptr<const ProgressiveFrame> frame) {
 
 bool StreamedTexture::step(std::size_t byteBudget) {
   if (!incoming_) return false;
-  const int levels = 1 + int(incoming_->mipmaps.size());
+  const int levels = int(incoming_->levels.size());
   bind(back_);
   std::size_t spent = 0;
   while (level_ < levels && (spent == 0 || spent < byteBudget)) {

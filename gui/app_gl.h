@@ -11,7 +11,7 @@
 
 #include <imgui.h>
 
-#include "render/progressive_renderer.h"
+#include "gui/display_image.h"
 
 namespace angio {
 
@@ -40,8 +40,7 @@ struct GlApi {
   std::vector<std::uint8_t> readFrameRgb(int width, int height) const;
 };
 
-// The rendered image as a mipmapped RGB8 texture (the frame's own mip levels, so a large
-// high-quality image shrunk to the window does not alias and zooming in shows every pixel).
+// A display image (gui/display_image.h) as a mipmapped RGB8 texture, its own levels uploaded.
 // A new image is uploaded in row strips over several UI frames into a second texture, which is
 // shown once complete: the UI frame never stalls on a large upload (tens of ms in software GL).
 class StreamedTexture {
@@ -51,8 +50,8 @@ class StreamedTexture {
   StreamedTexture(const StreamedTexture&) = delete;
   StreamedTexture& operator=(const StreamedTexture&) = delete;
 
-  // Starts uploading `frame` (replacing any upload in progress).
-  void begin(std::shared_ptr<const ProgressiveFrame> frame);
+  // Starts uploading `image` (replacing any upload in progress).
+  void begin(std::shared_ptr<const DisplayImage> image);
   // Uploads up to `byteBudget` more bytes (at least one strip); true when the upload completed
   // this call and the new image is now the one shown.
   bool step(std::size_t byteBudget);
@@ -67,8 +66,8 @@ class StreamedTexture {
 
   GlApi gl_;
   unsigned front_ = 0, back_ = 0;
-  std::shared_ptr<const ProgressiveFrame> incoming_;
-  int level_ = 0;    // mip level being uploaded (0 = the frame's rgb8)
+  std::shared_ptr<const DisplayImage> incoming_;
+  int level_ = 0;    // mip level being uploaded (0 = the image itself)
   int nextRow_ = 0;  // first row of that level not yet uploaded
   int previousBinding_ = 0;
 };

@@ -43,27 +43,10 @@ void App::drawHybridControls() {
     ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", vessel_.hybridProblem.c_str());
 }
 
-// Null when the hybrid is off or cannot be made (the problem is shown in the CPR section).
-std::function<void(const ViewGeometry&, const RayRegions&, Image&)> App::hybridFinishStep() {
-  vessel_.hybridProblem.clear();
-  const std::optional<HybridCprRecipe> hybrid = hybridRecipe();
-  const std::optional<VesselGlyphRecipe> vesselGlyph = vesselGlyphRecipe();
-  if (!hybrid || !vesselGlyph) return {};
-  try {
-    auto step = std::make_shared<HybridCprStep>(data_.volume, *framedCenterlines(), *vesselGlyph, *hybrid);
-    return [step](const ViewGeometry& view, const RayRegions& regions, Image& image) {
-      step->composite(view, regions, image);
-    };
-  } catch (const std::exception& error) {
-    vessel_.hybridProblem = error.what();
-    return {};
-  }
-}
-
 nlohmann::json App::hybridReport() const {
   const SessionCpr& cpr = state_.cpr;
   return {{"enabled", cpr.hybrid},
-          {"rendering", vessel_.source && vessel_.source->finish},
+          {"rendering", scene_ && scene_->recipe().hybrid.has_value()},
           {"path", cpr.path},
           {"transition_mm", cpr.transitionMm},
           {"colouring", kColouringNames[int(cpr.colouring)]},

@@ -1,6 +1,8 @@
-// What App shows, as the render recipe of io/render_sidecar.h: exports (one image, rotation
-// series) render it with gui/sidecar_render.h, as `angioray render --params` of their sidecars
-// does, so an export is the window's image at the export's sampling.
+// What App shows, as a render recipe (render/render_recipe.h), and the prepared scene the window
+// renders from it. Exports (one image, rotation series) render the same recipe at the export's
+// sampling, as `angioray render --params` of their sidecars does, so the window shows what an
+// export gives by construction: one recipe, one path to pixels (render/frame_renderer.h).
+#include <exception>
 #include <filesystem>
 
 #include "gui/app.h"
@@ -18,7 +20,7 @@ std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe() const {
   recipe.settings = state_.vesselGlyph.settings;
   recipe.focusTf = state_.vesselGlyph.focusTf;
   recipe.contextTf = state_.vesselGlyph.contextTf;
-  if (state_.vesselGlyph.outsideRendered) recipe.outsideTf = state_.tf;  // what vesselRegions renders it with
+  if (state_.vesselGlyph.outsideRendered) recipe.outsideTf = state_.tf;
   return recipe;
 }
 
@@ -33,17 +35,65 @@ std::optional<HybridCprRecipe> App::hybridRecipe() const {
   return recipe;
 }
 
+// The view is left at its default: each request brings its own, so rotating keeps the scene.
+std::shared_ptr<const PreparedScene> App::currentScene() {
+  RenderRecipe recipe;
+  recipe.dataset = absoluteDataset(data_.name);
+  recipe.tf = state_.tf;
+  const Centerlines* centerlines = nullptr;
+  if (state_.vesselGlyph.enabled && vessel_.physical) {
+    ensureVesselTfs();
+    try {
+      centerlines = framedCenterlines();
+    } catch (const std::exception& error) {
+      vessel_.problem = error.what();
+    }
+  }
+  if (centerlines) {
+    recipe.vesselGlyph = vesselGlyphRecipe();
+    recipe.hybrid = hybridRecipe();
+  }
+  const Centerlines none;
+  const Centerlines& used = centerlines ? *centerlines : none;
+  if (scene_ && recipe == sceneRecipe_ && used == sceneCenterlines_) return scene_;
+  sceneRecipe_ = recipe;
+  sceneCenterlines_ = used;
+  if (centerlines) vessel_.problem.clear();
+  vessel_.hybridProblem.clear();
+  scene_ = prepareScene(std::move(recipe), used);
+  return scene_;
+}
+
+// A hybrid that cannot be made (e.g. its path is not there) leaves VesselGlyph without it, and
+// VesselGlyph settings that cannot be used leave plain DVR; the panels show why.
+std::shared_ptr<const PreparedScene> App::prepareScene(RenderRecipe recipe, const Centerlines& centerlines) {
+  try {
+    return PreparedScene::prepare(data_.volume, centerlines, recipe, scene_.get());
+  } catch (const std::exception& error) {
+    if (recipe.hybrid) {
+      recipe.hybrid.reset();
+      std::shared_ptr<const PreparedScene> withoutHybrid = prepareScene(recipe, centerlines);
+      if (withoutHybrid->hasRegions()) vessel_.hybridProblem = error.what();
+      return withoutHybrid;
+    }
+    if (!recipe.vesselGlyph) throw;
+    vessel_.problem = error.what();
+    recipe.vesselGlyph.reset();
+    return PreparedScene::prepare(data_.volume, centerlines, recipe, scene_.get());
+  }
+}
+
 RenderSidecar App::exportRecipe() const {
   RenderSidecar recipe = exportSidecar(state_, data_.name, export_.isd);
-  if (!vessel_.source) return recipe;  // plain DVR/MIP on screen
-  recipe.vesselGlyph = vesselGlyphRecipe();
-  if (vessel_.source->finish) recipe.hybrid = hybridRecipe();
+  if (!scene_) return recipe;  // nothing rendered yet: plain DVR/MIP
+  recipe.vesselGlyph = scene_->recipe().vesselGlyph;
+  recipe.hybrid = scene_->recipe().hybrid;
   return recipe;
 }
 
 Centerlines App::exportCenterlines() {
-  if (!vessel_.source) return {};
-  const Centerlines* framed = framedCenterlines();  // mapped already: the source was made from them
+  if (!scene_ || !scene_->hasRegions()) return {};
+  const Centerlines* framed = framedCenterlines();  // mapped already: the scene was made from them
   return framed ? *framed : Centerlines{};
 }
 

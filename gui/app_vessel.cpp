@@ -48,14 +48,6 @@ void regionTfCombo(const char* label, const std::vector<Preset>& presets, Transf
   ImGui::EndCombo();
 }
 
-// What the hybrid's finish step depends on beyond the regions and the focus TF ("" = off).
-std::string hybridSettingsKey(const SessionCpr& cpr) {
-  if (!cpr.hybrid) return "";
-  char key[96];
-  std::snprintf(key, sizeof key, "%d %d %.17g", cpr.path, int(cpr.colouring), cpr.transitionMm);
-  return key;
-}
-
 std::size_t pointCount(const Centerlines& centerlines) {
   std::size_t n = 0;
   for (const CenterlinePath& path : centerlines.paths) n += path.points.size();
@@ -117,7 +109,6 @@ void App::dropCenterlines() {
   vg.error.clear();
   vg.inVolume.reset();
   vg.framedFor.clear();
-  vg.builder.reset();
 }
 
 // Once loaded and no dataset load is running (the points are checked against the shown dataset).
@@ -139,8 +130,7 @@ void App::pollCenterlineLoad() {
     vg.warnings = std::move(loaded.warnings);
     vg.error.clear();
     vg.inVolume.reset();
-    vg.builder.reset();
-    set.centerlines = vg.loading.given;
+      set.centerlines = vg.loading.given;
     std::error_code error;
     const fs::path absolute = fs::absolute(vg.file, error);
     set.centerlinesAbsolute = error ? vg.file : absolute.lexically_normal().string();
@@ -162,8 +152,7 @@ const Centerlines* App::framedCenterlines() {
   if (!vg.inVolume || vg.framedFor != key) {
     vg.inVolume = toVolumeFrame(*vg.physical, data_.volume);
     vg.framedFor = key;
-    vg.builder.reset();
-  }
+    }
   return &*vg.inVolume;
 }
 
@@ -295,52 +284,6 @@ void App::drawVesselSection() {
   ImGui::TextDisabled("edit them in the TF editor: \"TF editor edits\" above it");
 }
 
-// The request's regions: null for plain DVR (VesselGlyph off, nothing loaded, or a problem);
-// a new source whenever the shape, a region TF or the outside TF changed, else the last one.
-std::shared_ptr<const RegionSource> App::vesselRegions() {
-  VesselGlyphPanel& vg = vessel_;
-  SessionVesselGlyph& set = state_.vesselGlyph;
-  vg.problem.clear();
-  if (!set.enabled || !vg.physical) return vg.source = nullptr;
-  ensureVesselTfs();
-  bool changed = !vg.source;
-  try {
-    const Centerlines* centerlines = framedCenterlines();
-    if (!vg.builder || vg.builder->builder.settings() != set.settings) {
-      vg.builder = std::make_shared<GuardedRegionBuilder>(*centerlines, set.settings);
-      changed = true;
-    }
-  } catch (const std::exception& error) {
-    vg.problem = error.what();
-    return vg.source = nullptr;
-  }
-  const auto refresh = [&](std::shared_ptr<const TfTable>& table, TransferFunction& builtFrom,
-                           const TransferFunction& tf) {
-    if (table && builtFrom == tf) return;
-    table = std::make_shared<const TfTable>(buildTable(tf));
-    builtFrom = tf;
-    changed = true;
-  };
-  refresh(vg.focusTable, vg.focusTableTf, set.focusTf);
-  refresh(vg.contextTable, vg.contextTableTf, set.contextTf);
-  const std::shared_ptr<const TfTable> outside = set.outsideRendered ? table_ : nullptr;
-  if (outside != vg.outsideTable) vg.outsideTable = outside, changed = true;
-  const std::string hybrid = hybridSettingsKey(state_.cpr);
-  if (hybrid != vg.hybridFor) vg.hybridFor = hybrid, changed = true;
-  if (!changed) return vg.source;
-
-  auto source = std::make_shared<RegionSource>();
-  source->build = [builder = vg.builder](const ViewGeometry& view, RayRegions& out) {
-    std::lock_guard lock(builder->mutex);
-    builder->builder.build(view, out);
-  };
-  source->focus = vg.focusTable;
-  source->context = vg.contextTable;
-  source->outside = vg.outsideTable;
-  source->finish = hybridFinishStep();  // the DVR+CPR hybrid, if on (gui/app_hybrid.cpp)
-  return vg.source = std::move(source);
-}
-
 // The centerlines projected with the shown frame's view, over the image (follows zoom and pan).
 void App::drawCenterlineOverlay() {
   if (!state_.vesselGlyph.overlay || !vessel_.physical || !shown_ || !viewport_.hasImage) return;
@@ -368,7 +311,7 @@ nlohmann::json App::vesselReport() const {
   const VesselGlyphPanel& vg = vessel_;
   const SessionVesselGlyph& set = state_.vesselGlyph;
   return {{"enabled", set.enabled},
-          {"rendering", vg.source != nullptr},
+          {"rendering", scene_ && scene_->hasRegions()},
           {"overlay", set.overlay},
           {"centerlines", vg.file},
           {"paths", vg.physical ? vg.physical->paths.size() : 0},

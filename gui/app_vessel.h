@@ -22,15 +22,6 @@ namespace angio {
 // Which TF the TF editor edits.
 enum class TfTarget { main = 0, focus = 1, context = 2 };
 
-// RayRegionBuilder is not re-entrant: the renderer's worker and anyone else building regions from
-// the same builder take turns.
-struct GuardedRegionBuilder {
-  GuardedRegionBuilder(const Centerlines& inVolumeFrame, const VesselGlyphSettings& settings)
-      : builder(inVolumeFrame, settings) {}
-  std::mutex mutex;
-  RayRegionBuilder builder;
-};
-
 // A centerline file being read off the UI thread: the panel's button, `gui --centerlines`, a
 // session (which names the file as given and as an absolute path: the first that exists is read).
 struct CenterlineLoad {
@@ -62,12 +53,7 @@ struct VesselGlyphPanel {
   // Derived, rebuilt on change (UI thread).
   std::optional<Centerlines> inVolume;   // physical mapped into the shown dataset's volume frame
   std::string framedFor;                 // the dataset inVolume was mapped for
-  std::shared_ptr<GuardedRegionBuilder> builder;
-  std::shared_ptr<const TfTable> focusTable, contextTable, outsideTable;
-  TransferFunction focusTableTf, contextTableTf;
-  std::shared_ptr<const RegionSource> source;  // what the last request got (null: plain DVR)
   std::string problem;                   // why VG is not rendered although enabled
-  std::string hybridFor;                 // the hybrid settings `source` was made with ("": none)
   std::string hybridProblem;             // why the hybrid is not rendered although on
 };
 

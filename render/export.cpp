@@ -5,7 +5,8 @@
 
 #include "io/image_export.h"
 #include "io/input_error.h"
-#include "render/sidecar_render.h"
+#include "render/frame_renderer.h"
+#include "render/recipe_json.h"
 
 namespace angio {
 
@@ -15,20 +16,20 @@ void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out) 
                               " pixels is too large; use a larger isd");
 }
 
-void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderSidecar sidecar) {
+void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderRecipe sidecar) {
   std::error_code error;
   sidecar.image = std::filesystem::absolute(path, error).lexically_normal().string();
   exportImage(image, path, renderSidecarMetadata(sidecar));
   saveRenderSidecar(sidecar, sidecarPathFor(path));
 }
 
-std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderSidecar& sidecar,
+std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& sidecar,
                        const std::filesystem::path& path, const std::atomic<bool>* cancel) {
   checkImageSize(makeViewGeometry(volume, sidecar.params), path);
   const auto start = std::chrono::steady_clock::now();
-  bool cancelled = false;
-  const Image image = renderSidecarImage(volume, centerlines, sidecar, {nullptr, cancel, &cancelled});
-  if (cancelled) return {};
+  FastRenderStats stats;
+  const Image image = renderRecipe(volume, centerlines, sidecar, {.cancel = cancel}, {}, &stats);
+  if (stats.cancelled) return {};
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeImageAndSidecar(image, path, sidecar);
   char summary[512];

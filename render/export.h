@@ -10,7 +10,7 @@
 #include "core/image.h"
 #include "core/view_geometry.h"
 #include "core/volume.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 #include "vessel/centerline.h"
 
 namespace angio {
@@ -22,13 +22,13 @@ constexpr long kMaxImagePixels = 64L * 1024 * 1024;
 void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out);
 
 // Writes `image` (rendered from `sidecar`) and its sidecar (with image = path), each atomically.
-void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderSidecar sidecar);
+void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderRecipe sidecar);
 
 // Renders and writes the image and its sidecar. `centerlines` (volume frame) are used iff
 // sidecar.vesselGlyph is set. Returns a one-line summary; an empty string when `cancel` stopped
 // it (nothing written). Throws InputError (one line) on failure, e.g. an image larger than
 // kMaxImagePixels.
-std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderSidecar& sidecar,
+std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& sidecar,
                        const std::filesystem::path& path, const std::atomic<bool>* cancel);
 
 }  // namespace angio

@@ -1,10 +1,9 @@
 #pragma once
-// The DVR+CPR hybrid's step after the VesselGlyph DVR of one view (issue 6 item 5; thesis sec.
-// 5.2.2, fig. 5.4 and 5.5): the projected CPR of the selected paths, laid out in the DVR's own
-// view (so the two register pixel for pixel), composited into the selected paths' focus
-// footprint (vessel/cpr_hybrid.h). `angioray render` (gui/sidecar_render.cpp) and the GUI's
-// progressive renderer (the RegionSource's finish step, gui/app_hybrid.cpp) both run it, so the
-// window shows what `render --params` of an export's sidecar gives.
+// The DVR+CPR hybrid's step after the VesselGlyph DVR of one view (thesis sec. 5.2.2, fig. 5.4
+// and 5.5): the projected CPR of the selected paths, laid out in the DVR's own view (so the two
+// register pixel for pixel), composited into the selected paths' focus footprint
+// (vessel/cpr_hybrid.h). A prepared scene with a hybrid runs it after every render of a view
+// (render/prepared_scene.h), so the window's levels, exports and `render --params` agree.
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -14,7 +13,7 @@
 #include "core/region_intervals.h"
 #include "core/view_geometry.h"
 #include "core/volume.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 #include "vessel/centerline.h"
 #include "vessel/cpr_display.h"
 #include "vessel/vessel_glyph.h"

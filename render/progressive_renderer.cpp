@@ -1,60 +1,13 @@
 #include "render/progressive_renderer.h"
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <exception>
-
-#include <tbb/task_arena.h>
-#include <tbb/task_scheduler_observer.h>
 
 #include "core/fast_raycaster.h"
 
 namespace angio {
 
 namespace {
-
-// Below the process's own priority (nice steps; relative, so under `nice -n -10` the gaps stay).
-constexpr int kFastNiceSteps = 5;
-constexpr int kBackgroundNiceSteps = 10;
-
-id_t thisThread() { return id_t(syscall(SYS_gettid)); }
-
-// Thread priorities (Linux: nice is per thread), measured with bench/input_latency.sh.
-// The fast level is what a user moving the mouse waits for. Below the UI thread, so that the UI's
-// own drawing (software GL rasterises on threads of the UI's priority) finishes first when both
-// want the cores - at the UI's priority both took 2-3x longer and input -> screen doubled - but
-// only a little: at an absolute nice 10 (20 steps below a `nice -n -10` UI) it waited behind the
-// UI and everything else on a loaded machine, 0.1-1 s from input to screen.
-// The levels above fast are background work, lower still - but only where a thread can be raised
-// back (RLIMIT_NICE or CAP_SYS_NICE): oneTBB threads move between the two arenas, and a thread left
-// lowered would render the next fast level at background priority. Without that right both
-// levels render at the fast level's priority; a high render still yields to input, which cancels
-// it within a row.
-struct ThreadPriorities {
-  int fast = 0, background = 0;
-
-  static ThreadPriorities probe() {
-    const int process = getpriority(PRIO_PROCESS, thisThread());
-    ThreadPriorities p;
-    p.fast = p.background = std::min(process + kFastNiceSteps, 19);
-    const int lowered = std::min(process + kBackgroundNiceSteps, 19);
-    bool restorable = false;
-    std::thread([&] {  // a throw-away thread: lowering it is harmless if raising fails
-      restorable = setpriority(PRIO_PROCESS, thisThread(), lowered) == 0 &&
-                   setpriority(PRIO_PROCESS, thisThread(), p.fast) == 0;
-    }).join();
-    if (restorable) p.background = lowered;
-    return p;
-  }
-};
-
-const ThreadPriorities& priorities() {
-  static const ThreadPriorities instance = ThreadPriorities::probe();
-  return instance;
-}
 
 using Ms = std::chrono::duration<double, std::milli>;
 
@@ -64,32 +17,9 @@ bool sameView(RenderParams a, const RenderParams& b) {
   return a == b;
 }
 
-// The same TFs and regions (objects, not contents: a change makes new ones).
+// The same TFs and regions (objects, not contents: a change makes a new scene).
 bool sameClassification(const ProgressiveRequest& a, const ProgressiveRequest& b) {
-  return a.table == b.table && a.regions == b.regions;
-}
-
-// A oneTBB arena whose threads (oneTBB's and the progressive worker) run at `nice` while in it.
-struct PriorityArena {
-  struct Observer : tbb::task_scheduler_observer {
-    Observer(tbb::task_arena& arena, int nice) : tbb::task_scheduler_observer(arena), nice(nice) { observe(true); }
-    void on_scheduler_entry(bool) override {
-      if (getpriority(PRIO_PROCESS, thisThread()) != nice) setpriority(PRIO_PROCESS, thisThread(), nice);
-    }
-    int nice;
-  };
-  explicit PriorityArena(int nice) : observer(arena, nice) {}
-  tbb::task_arena arena;
-  Observer observer;
-};
-
-// Where a level renders: fast just below the UI, the others in the background. One pair
-// for the process, never destroyed: oneTBB threads keep references to the observers until they
-// exit, which is at process exit.
-tbb::task_arena& arenaFor(Quality level) {
-  static PriorityArena* const foreground = new PriorityArena(priorities().fast);
-  static PriorityArena* const background = new PriorityArena(priorities().background);
-  return (level == Quality::fast ? foreground : background)->arena;
+  return a.scene == b.scene;
 }
 
 int lastLevel(const ProgressiveRequest& request) {
@@ -97,35 +27,6 @@ int lastLevel(const ProgressiveRequest& request) {
 }
 
 }  // namespace
-
-std::vector<Rgb8Image> halvedLevels(const std::vector<std::uint8_t>& rgb8, int width, int height) {
-  std::vector<Rgb8Image> levels;
-  if (width <= 0 || height <= 0) return levels;
-  const std::vector<std::uint8_t>* source = &rgb8;
-  int w = width, h = height;
-  while (w > 1 || h > 1) {
-    Rgb8Image half;
-    half.width = std::max(w / 2, 1);
-    half.height = std::max(h / 2, 1);
-    half.rgb.resize(std::size_t(half.width) * half.height * 3);
-    for (int y = 0; y < half.height; ++y) {
-      const int y0 = std::min(2 * y, h - 1), y1 = std::min(2 * y + 1, h - 1);
-      for (int x = 0; x < half.width; ++x) {
-        const int x0 = std::min(2 * x, w - 1), x1 = std::min(2 * x + 1, w - 1);
-        for (int c = 0; c < 3; ++c) {
-          const auto at = [&](int xx, int yy) { return int((*source)[(std::size_t(yy) * w + xx) * 3 + c]); };
-          const int sum = at(x0, y0) + at(x1, y0) + at(x0, y1) + at(x1, y1);
-          half.rgb[(std::size_t(y) * half.width + x) * 3 + c] = std::uint8_t((sum + 2) / 4);
-        }
-      }
-    }
-    levels.push_back(std::move(half));
-    source = &levels.back().rgb;
-    w = levels.back().width;
-    h = levels.back().height;
-  }
-  return levels;
-}
 
 LevelSamplings defaultLevelSamplings() {
   return {qualitySampling(Quality::fast), qualitySampling(Quality::medium),
@@ -137,10 +38,12 @@ double ProgressiveStatus::estimatedProgress() const {
   return std::min(double(rowsDone) / rows, 1.0);
 }
 
-ProgressiveRenderer::ProgressiveRenderer(const Volume& volume,
+ProgressiveRenderer::ProgressiveRenderer(const Volume& volume, RenderThreads& threads,
                                          ProgressiveCallbacks callbacks)
     : volume_(volume),
+      threads_(threads),
       callbacks_(std::move(callbacks)),
+      frames_(volume),
       worker_([this] { workerLoop(); }) {}
 
 ProgressiveRenderer::~ProgressiveRenderer() {
@@ -221,7 +124,6 @@ bool ProgressiveRenderer::waitForLevel(std::uint64_t id, Quality level,
 }
 
 void ProgressiveRenderer::workerLoop() {
-  priorities();  // probed before the first request, not on its time
   for (;;) {
     Job job;
     const Clock::time_point free = Clock::now();
@@ -255,25 +157,9 @@ void ProgressiveRenderer::workerLoop() {
   }
 }
 
-// Slice tiles per axis (rebuilt when it changes, not cancellable: ~0.5 s at 512x512x1200) and
-// tile visibility per TF table, or per region TFs (a tile is visible if any region's TF shows it).
+// Slice tiles per axis (rebuilt when it changes, not cancellable) and tile visibility per scene.
 void ProgressiveRenderer::prepare(const Job& job) {
-  const Axis axis = job.request.params.axis;
-  if (!tiles_ || tiles_->axis != axis) {
-    tiles_.reset();  // free the old tiles before building the new ones
-    tiles_ = buildSliceTiles(volume_, axis);
-    classifiedTable_.reset();
-    classifiedRegions_.reset();
-  }
-  const std::shared_ptr<const RegionSource>& regions = job.request.regions;
-  if (classifiedTable_ != job.request.table || classifiedRegions_ != regions) {
-    visibleTiles_ = regions ? classifyTiles(*tiles_, RegionTables{&regionScratch_, regions->focus.get(),
-                                                                  regions->context.get(),
-                                                                  regions->outside.get()})
-                            : classifyTiles(*tiles_, *job.request.table);
-    classifiedTable_ = job.request.table;
-    classifiedRegions_ = regions;
-  }
+  frames_.prepare(job.request.scene, job.request.params.axis);
 }
 
 // A level whose image the newest frame already shows for the same view and TF is not rendered
@@ -286,7 +172,7 @@ int ProgressiveRenderer::firstLevelToRender(const Job& job) {
   const int shown = int(latest_->level);
   const bool same = sameView(latest_->params, r.params) &&
                     latest_->params.sampling == r.levels[shown] &&
-                    latest_->table == r.table && latest_->regions == r.regions;
+                    latest_->scene == r.scene;
   if (!same) return 0;
   auto relabelled = std::make_shared<ProgressiveFrame>(*latest_);
   relabelled->request = job.id;
@@ -315,10 +201,8 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image,
   frame->level = level;
   frame->params = job.request.params;
   frame->params.sampling = job.request.levels[int(level)];
-  frame->table = job.request.table;
-  frame->regions = job.request.regions;
-  frame->rgb8 = toRgb8(image);
-  frame->mipmaps = halvedLevels(frame->rgb8, image.width, image.height);
+  frame->scene = job.request.scene;
+  if (callbacks_.makeDisplay) frame->display = callbacks_.makeDisplay(image);
   frame->image = images_->share(std::move(image));
   frame->renderMs = ms;
   frame->samples = samples;
@@ -343,33 +227,21 @@ void ProgressiveRenderer::publish(const Job& job, Quality level, Image image,
   if (callbacks_.afterPublish) callbacks_.afterPublish();
 }
 
-// One level: plain DVR with the request's table, or VesselGlyph with the regions of this level's
-// view (built here, so their time counts in the level's) and the source's finish step.
+// One level through the frame renderer: plain DVR, or VesselGlyph with the regions of this
+// level's view (built there, so their time counts in the level's) and the scene's finish step.
 Image ProgressiveRenderer::renderLevel(const Job& job, const RenderParams& params,
                                        FastRenderStats& stats) {
-  FastRenderOptions options;
-  options.cancel = &cancel_;
-  options.rowsDone = &rowsDone_;
   {
     std::lock_guard lock(mutex_);
     status_.rows = makeViewGeometry(volume_, params).height;
   }
   rowsDone_ = 0;
   Image recycled = images_->take();
-  options.recycle = &recycled;
-  const RegionSource* regions = job.request.regions.get();
-  if (!regions) return renderFast(volume_, *tiles_, visibleTiles_, *job.request.table, params, options, &stats);
-  const ViewGeometry view = makeViewGeometry(volume_, params);
-  regions->build(view, regionScratch_);
-  const RegionTables tables{&regionScratch_, regions->focus.get(), regions->context.get(),
-                            regions->outside.get()};
-  Image image = renderFast(volume_, *tiles_, visibleTiles_, tables, params, options, &stats);
-  if (regions->finish && !stats.cancelled) regions->finish(view, regionScratch_, image);
-  return image;
+  return frames_.render(job.request.scene, params, {&cancel_, &rowsDone_, &recycled, {}}, &stats);
 }
 
 void ProgressiveRenderer::runJob(const Job& job) {
-  arenaFor(Quality::fast).execute([&] { prepare(job); });
+  threads_.arenaFor(Quality::fast).execute([&] { prepare(job); });
   for (int q = firstLevelToRender(job); q <= lastLevel(job.request); ++q) {
     const Quality level = Quality(q);
     if (!beginLevel(level)) return;
@@ -379,7 +251,7 @@ void ProgressiveRenderer::runJob(const Job& job) {
     RequestTimeline timeline = job.timeline;
     timeline.renderStart = Clock::now();
     Image image;
-    arenaFor(level).execute([&] { image = renderLevel(job, params, stats); });
+    threads_.arenaFor(level).execute([&] { image = renderLevel(job, params, stats); });
     timeline.renderEnd = Clock::now();
     if (stats.cancelled) {
       images_->giveBack(std::move(image));

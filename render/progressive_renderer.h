@@ -1,15 +1,15 @@
 #pragma once
 // Progressive rendering (thesis sec. 4.4, "Interactive Mode"): every request is rendered at the
 // fast, then the medium, then the high quality level by one background thread, and each finished
-// level is handed to the UI. A newer request interrupts the running render through renderFast's
-// cancel flag (checked before each image row, so the render returns within one row's time) and
-// the worker starts over at fast. Interactive requests (dragging, spinning) render only fast.
+// level is handed to the UI. A newer request interrupts the running render through the fast
+// raycaster's cancel flag (checked within each image row, so the render returns within one row's
+// time) and the worker starts over at fast. Interactive requests (dragging, spinning) render only
+// fast. A request is a prepared scene (render/prepared_scene.h: the recipe's TFs, regions and
+// hybrid) seen with one view; each level renders it through a FrameRenderer
+// (render/frame_renderer.h), the path every other caller renders through.
 //
-// Priorities: the fast level is what a hand on the mouse waits for; its threads run 5 nice steps
-// below the process (the UI's own drawing, the last step to the screen, goes first, but the render
-// is not starved by other work on the machine). The levels above it are background work: 10 steps
-// below, where the OS lets a thread be raised back for the next fast level, else at fast's
-// priority (progressive_renderer.cpp). The UI thread gets a core when it needs one.
+// Priorities: the levels render in the arenas of the RenderThreads the program made
+// (render/render_threads.h): fast just below the UI, the others in the background.
 //
 // Hand-off: the UI thread polls latestFrame() (a shared pointer swapped under a mutex) and never
 // waits for the worker. waitForLevel() is for tests and scripts only.
@@ -28,13 +28,12 @@
 
 #include "core/fast_raycaster.h"
 #include "core/image.h"
-#include "render/image_pool.h"
-#include "core/region_intervals.h"
 #include "core/render_params.h"
-#include "core/slice_tiles.h"
-#include "core/transfer_function.h"
-#include "core/view_geometry.h"
 #include "core/volume.h"
+#include "render/frame_renderer.h"
+#include "render/image_pool.h"
+#include "render/prepared_scene.h"
+#include "render/render_threads.h"
 
 namespace angio {
 
@@ -43,45 +42,22 @@ constexpr int kQualityLevels = 3;  // fast, medium, high, in rendering order
 using LevelSamplings = std::array<Sampling, kQualityLevels>;
 LevelSamplings defaultLevelSamplings();  // the rendering model's table
 
-// VesselGlyph for a request (thesis ch. 5): the ray regions of each level's view (the view
-// depends on the level's isd) and a TF per region. core knows no centerlines: `build` is whatever
-// makes the regions (vessel/vessel_glyph.h's RayRegionBuilder in the app). It is called on the
-// worker thread only, one call at a time per renderer, with the same `out` every time so its
-// buffers are reused; a source shared with other threads must guard its builder itself.
-struct RegionSource {
-  std::function<void(const ViewGeometry& view, RayRegions& out)> build;
-  std::shared_ptr<const TfTable> focus;    // null: the focus is not rendered
-  std::shared_ptr<const TfTable> context;  // null: no context
-  std::shared_ptr<const TfTable> outside;  // null: the outside is clipped
-  // Optional: called on the worker after each level's render (not after a cancelled one), with
-  // that level's view and regions, before the frame is made from the image; may change the image
-  // in place (the app's DVR+CPR hybrid composites the projected CPR into the focus footprint).
-  // Its time counts in the level's.
-  std::function<void(const ViewGeometry& view, const RayRegions& regions, Image& image)> finish;
-};
-
 struct ProgressiveRequest {
-  RenderParams params;                   // sampling is replaced by each level's
-  std::shared_ptr<const TfTable> table;  // a different table object = a TF change
-  // Set: VesselGlyph rendering, `table` unused. A different source object = a change (sources
-  // are immutable: a change of the regions' shape or of a region's TF makes a new one).
-  std::shared_ptr<const RegionSource> regions;
+  // What to render. A different scene object = a TF, region or hybrid change (scenes are
+  // immutable: a change makes a new one).
+  std::shared_ptr<const PreparedScene> scene;
+  RenderParams params;                   // the view; sampling is replaced by each level's
   bool interactive = false;              // dragging or spinning: fast only
   LevelSamplings levels = defaultLevelSamplings();
 
-  // TFs and regions compare as objects (a change makes new ones), the rest by value.
+  // The scene compares as an object, the rest by value.
   friend bool operator==(const ProgressiveRequest&, const ProgressiveRequest&) = default;
 };
 
-// 8-bit RGB pixels, rows top to bottom, no padding.
-struct Rgb8Image {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;
-};
-
-// The image halved again and again (2x2 box filter, sizes floor(n / 2), at least 1) down to 1x1,
-// starting with the first half: the mipmap levels above level 0 of a texture.
-std::vector<Rgb8Image> halvedLevels(const std::vector<std::uint8_t>& rgb8, int width, int height);
+// The form in which the UI shows a frame (8-bit pixels, mipmaps: gui/display_image.h), made by
+// ProgressiveCallbacks::makeDisplay on the worker so the UI thread only uploads it. render/ only
+// carries it.
+struct DisplayImage;
 
 // When a frame's request passed each step of the hand-off (steady clock; a default time point:
 // did not happen). Cheap (a few clock reads per level): always recorded, for the latency
@@ -102,11 +78,9 @@ struct ProgressiveFrame {
   std::uint64_t serial = 0;   // grows with every published frame
   Quality level = Quality::fast;
   RenderParams params;                 // as rendered, with the level's sampling
-  std::shared_ptr<const TfTable> table;
-  std::shared_ptr<const RegionSource> regions;  // the request's (null: plain DVR)
+  std::shared_ptr<const PreparedScene> scene;  // the request's
   std::shared_ptr<const Image> image;  // linear RGBA
-  std::vector<std::uint8_t> rgb8;      // toRgb8(*image), ready for a texture upload
-  std::vector<Rgb8Image> mipmaps;      // halvedLevels(rgb8): made here, off the UI thread
+  std::shared_ptr<const DisplayImage> display;  // ProgressiveCallbacks::makeDisplay's (null: none)
   double renderMs = 0;
   std::uint64_t samples = 0;
   RequestTimeline timeline;  // a re-labelled frame's: its request's up to pickedUp, no render
@@ -136,6 +110,8 @@ struct ProgressiveStatus {
 
 // Optional hooks, called on the worker thread; they must be quick.
 struct ProgressiveCallbacks {
+  // Makes the frame's display form from its image, just before it is published.
+  std::function<std::shared_ptr<const DisplayImage>(const Image&)> makeDisplay;
   // With each frame just before it is published (so a waiter never sees a frame this has not).
   std::function<void(const ProgressiveFrame&)> beforePublish;
   // After each frame is published and when the worker goes idle: e.g. wake the UI thread.
@@ -144,8 +120,8 @@ struct ProgressiveCallbacks {
 
 class ProgressiveRenderer {
  public:
-  // `volume` must outlive the renderer.
-  explicit ProgressiveRenderer(const Volume& volume, ProgressiveCallbacks callbacks = {});
+  // `volume` and `threads` must outlive the renderer; every request's scene is of `volume`.
+  ProgressiveRenderer(const Volume& volume, RenderThreads& threads, ProgressiveCallbacks callbacks = {});
   ~ProgressiveRenderer();  // interrupts and joins the worker
   ProgressiveRenderer(const ProgressiveRenderer&) = delete;
   ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
@@ -186,6 +162,7 @@ class ProgressiveRenderer {
   Image renderLevel(const Job& job, const RenderParams& params, FastRenderStats& stats);
 
   const Volume& volume_;
+  RenderThreads& threads_;
   ProgressiveCallbacks callbacks_;
 
   mutable std::mutex mutex_;
@@ -203,12 +180,7 @@ class ProgressiveRenderer {
   ProgressiveStatus status_;
   std::atomic<bool> cancel_{false};
 
-  // Worker-only state: the empty-space structure for the current axis and TF.
-  std::optional<SliceTiles> tiles_;
-  std::shared_ptr<const TfTable> classifiedTable_;
-  std::shared_ptr<const RegionSource> classifiedRegions_;
-  std::vector<std::uint8_t> visibleTiles_;
-  RayRegions regionScratch_;  // the regions of the level being rendered (buffers reused)
+  FrameRenderer frames_;  // worker-only: tiles, classification, region buffers
   std::shared_ptr<ImagePool> images_ = std::make_shared<ImagePool>();
   std::atomic<int> rowsDone_{0};  // of the level being rendered
 

@@ -12,7 +12,7 @@
 #include "core/slice_tiles.h"
 #include "core/view_geometry.h"
 #include "render/export.h"
-#include "render/sidecar_render.h"
+#include "render/frame_renderer.h"
 #include "io/input_error.h"
 
 namespace angio {
@@ -103,7 +103,7 @@ std::vector<double> seriesAngles(double startDeg, double arcDeg, int count) {
 }
 
 SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& centerlines,
-                                  const RenderSidecar& base, const SeriesSpec& spec,
+                                  const RenderRecipe& base, const SeriesSpec& spec,
                                   const fs::path& folder, const SeriesCallbacks& callbacks) {
   checkSpec(spec, folder);
   std::error_code error;
@@ -111,21 +111,20 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
   if (error || !fs::is_directory(folder)) throw InputError(folder, "cannot create the folder" + (error ? ": " + error.message() : ""));
   const auto cancelled = [&] { return callbacks.cancel && callbacks.cancel->load(); };
 
-  const SliceTiles tiles = buildSliceTiles(volume, base.params.axis);  // shared by every view
+  // One scene and one frame renderer for every view: the tables, tubes and slice tiles are shared.
+  FrameRenderer renderer(volume);
+  const std::shared_ptr<const PreparedScene> scene = PreparedScene::prepare(volume, centerlines, base);
   const std::vector<double> angles = seriesAngles(spec.startDeg, spec.arcDeg, spec.count);
 
   SeriesResult result;
   std::unique_ptr<MovieWriter> movie;
   for (int n = 0; n < spec.count && !result.cancelled; ++n) {
-    RenderSidecar sidecar = base;
+    RenderRecipe sidecar = base;
     sidecar.params.angleDeg = angles[n];
-    const ViewGeometry view = makeViewGeometry(volume, sidecar.params);
-    if (long(view.width) * view.height > kMaxImagePixels)
-      throw InputError(folder, "images of " + std::to_string(view.width) + "x" + std::to_string(view.height) +
-                                   " pixels are too large; use a larger isd");
-    bool stopped = false;
-    const Image image = renderSidecarImage(volume, centerlines, sidecar, {&tiles, callbacks.cancel, &stopped});
-    if (stopped || cancelled()) {
+    checkImageSize(makeViewGeometry(volume, sidecar.params), folder);
+    FastRenderStats stats;
+    const Image image = renderer.render(scene, sidecar.params, {.cancel = callbacks.cancel}, &stats);
+    if (stats.cancelled || cancelled()) {
       result.cancelled = true;
       break;
     }

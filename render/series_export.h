@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/volume.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 #include "vessel/centerline.h"
 
 namespace angio {
@@ -55,7 +55,7 @@ struct SeriesResult {
 // (volume frame) are used iff base.vesselGlyph is set. Throws InputError/runtime_error (one
 // line) on bad input or write errors.
 SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& centerlines,
-                                  const RenderSidecar& base, const SeriesSpec& spec,
+                                  const RenderRecipe& base, const SeriesSpec& spec,
                                   const std::filesystem::path& folder, const SeriesCallbacks& callbacks);
 
 }  // namespace angio

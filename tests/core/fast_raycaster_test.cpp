@@ -41,7 +41,7 @@ void expectSameImages(const Volume& volume, const TransferFunction& tf, const st
   const TfTable table = buildTable(tf);
   for (Axis axis : {Axis::i, Axis::j, Axis::k}) {
     const SliceTiles tiles = buildSliceTiles(volume, axis);
-    const std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
+    const TileClassification visible(tiles, table);
     for (const Case& c : cases) {
       if (c.axis != axis) continue;
       RenderParams p;
@@ -54,7 +54,7 @@ void expectSameImages(const Volume& volume, const TransferFunction& tf, const st
       p.mip = {tf.mipWindow, tf.mipLevel};
       const Image reference = renderReference(volume, table, p);
       FastRenderStats stats;
-      const Image fast = renderFast(volume, tiles, visible, table, p, {}, &stats);
+      const Image fast = renderFast(volume, visible, table, p, {}, &stats);
       ASSERT_EQ(fast.width, reference.width) << describe(c);
       ASSERT_EQ(fast.height, reference.height) << describe(c);
       EXPECT_LE(maxChannelDifference(fast, reference), 1.f / 255.f) << describe(c);
@@ -62,7 +62,7 @@ void expectSameImages(const Volume& volume, const TransferFunction& tf, const st
       FastRenderOptions everything;
       everything.skipEmpty = false;
       FastRenderStats all;
-      renderFast(volume, tiles, visible, table, p, everything, &all);
+      renderFast(volume, visible, table, p, everything, &all);
       EXPECT_LT(stats.samples, all.samples) << describe(c);
     }
   }
@@ -101,6 +101,26 @@ TEST(FastRaycaster, MatchesReferenceOnRealAorta) {
     cases.push_back({axis, quality, n % 4 != 1, n % 6 == 5, 15.0 * n + 3});
   }
   expectSameImages(volume, tf, cases);
+}
+
+// A classification belongs to its tiles' axis and its TFs: handed another's, the raycaster refuses
+// rather than skipping tiles by the wrong visibility.
+TEST(FastRaycaster, RefusesAClassificationOfAnotherAxisOrOtherTfs) {
+  PhantomOptions options;
+  options.dims = {32, 32, 48};
+  const Phantom phantom = generatePhantom(options);
+  const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
+  const TfTable other = table;
+  const SliceTiles tilesK = buildSliceTiles(phantom.volume, Axis::k);
+  const TileClassification classification(tilesK, table);
+  RenderParams params;
+  params.sampling = qualitySampling(Quality::fast);
+  EXPECT_NO_THROW(renderFast(phantom.volume, classification, table, params));
+  EXPECT_THROW(renderFast(phantom.volume, classification, other, params), std::logic_error);
+  params.axis = Axis::j;
+  EXPECT_THROW(renderFast(phantom.volume, classification, table, params), std::logic_error);
+  EXPECT_TRUE(classification.classifies(singleTable(table)));
+  EXPECT_FALSE(classification.classifies(singleTable(other)));
 }
 
 }  // namespace

@@ -17,13 +17,13 @@ struct Scene {
   TfTable table = buildTable({"bone and vessels",
                               {{-1024, {0, 0, 0}, 0}, {150, {1, 0.3f, 0.2f}, 0}, {400, {1, 1, 0.9f}, 0.5}}});
   SliceTiles tiles = buildSliceTiles(volume, Axis::k);
-  std::vector<std::uint8_t> visible = classifyTiles(tiles, table);
+  TileClassification visible{tiles, table};
 
   Image render(Quality quality, double angle, const FastRenderOptions& options = {}) const {
     RenderParams p;
     p.angleDeg = angle;
     p.sampling = qualitySampling(quality);
-    return renderFast(volume, tiles, visible, table, p, options);
+    return renderFast(volume, visible, table, p, options);
   }
 };
 
@@ -82,7 +82,7 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
   const Scene scene;
   for (Axis axis : {Axis::k, Axis::i}) {
     const SliceTiles tiles = buildSliceTiles(scene.volume, axis);
-    const std::vector<std::uint8_t> visible = classifyTiles(tiles, scene.table);
+    const TileClassification visible(tiles, scene.table);
     for (Quality quality : {Quality::medium, Quality::high})
       for (Compositing mode : {Compositing::dvr, Compositing::mip}) {
         RenderParams p;
@@ -92,9 +92,9 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
         p.compositing = mode;
         FastRenderOptions separate;
         separate.shareRows = false;
-        const Image bundled = renderFast(scene.volume, tiles, visible, scene.table, p);
+        const Image bundled = renderFast(scene.volume, visible, scene.table, p);
         ASSERT_TRUE(showsSomething(bundled));
-        EXPECT_TRUE(renderFast(scene.volume, tiles, visible, scene.table, p, separate).pixels == bundled.pixels)
+        EXPECT_TRUE(renderFast(scene.volume, visible, scene.table, p, separate).pixels == bundled.pixels)
             << toString(axis) << " " << toString(quality) << (mode == Compositing::mip ? " mip" : " dvr");
       }
   }

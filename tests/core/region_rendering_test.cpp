@@ -120,7 +120,7 @@ TEST(RegionRendering, FastMatchesReferenceWithRegions) {
       const RegionTables tables{&regions, &focusTable, contextTf, outsideTf};
       const SliceTiles tiles = buildSliceTiles(volume, axis);
       const Image reference = renderReference(volume, tables, p);
-      const Image fast = renderFast(volume, tiles, classifyTiles(tiles, tables), tables, p);
+      const Image fast = renderFast(volume, TileClassification(tiles, tables), tables, p);
       ASSERT_EQ(reference.pixels.size(), fast.pixels.size());
       float worst = 0.f, brightest = 0.f;
       for (std::size_t n = 0; n < fast.pixels.size(); ++n)

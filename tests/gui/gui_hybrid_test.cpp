@@ -20,7 +20,7 @@
 
 #include "core/view_geometry.h"
 #include "io/centerline_file.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 #include "io/volume_reader.h"
 #include "tests/support/phantom_folder_test.h"
 #include "tests/support/run_angioray.h"

@@ -1,5 +1,6 @@
 // The progressive renderer (thesis sec. 4.4): levels in order, interruption, interactive mode,
-// and images identical to renderFast's for the same parameters.
+// and images identical to renderFast's for the same parameters (built here independently of the
+// prepared scene: tables from the TFs, regions from the centerlines).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -14,9 +15,11 @@
 #include <unistd.h>
 
 #include "core/fast_raycaster.h"
+#include "io/tf_file.h"
 #include "phantom/phantom.h"
 #include "render/progressive_renderer.h"
-#include "io/tf_file.h"
+#include "render/render_threads.h"
+#include "vessel/vessel_glyph.h"
 
 namespace angio {
 namespace {
@@ -29,19 +32,47 @@ using Clock = std::chrono::steady_clock;
 // tight bound here would fail on a loaded CI machine or under sanitizers.
 constexpr double kInterruptBudgetMs = 150;
 
-const Volume& testVolume() {
-  static const Volume volume = [] {
+struct TestData {
+  Volume volume;
+  Centerlines centerlines;  // volume frame
+};
+
+const TestData& testData() {
+  static const TestData data = [] {
     PhantomOptions options;
     options.dims = {96, 96, 200};
-    return generatePhantom(options).volume;
+    Phantom phantom = generatePhantom(options);
+    Centerlines centerlines = toVolumeFrame(phantom.centerlines, phantom.volume);
+    return TestData{std::move(phantom.volume), std::move(centerlines)};
   }();
-  return volume;
+  return data;
 }
+const Volume& testVolume() { return testData().volume; }
 
-std::shared_ptr<const TfTable> tableFor(const std::string& preset, double opacityScale = 1.0) {
+TransferFunction tfFor(const std::string& preset, double opacityScale = 1.0) {
   TransferFunction tf = loadPresetOrFile(preset);
   tf.modulators.opacityScale = opacityScale;
-  return std::make_shared<const TfTable>(buildTable(tf));
+  return tf;
+}
+
+std::shared_ptr<const PreparedScene> sceneFor(const std::string& preset, double opacityScale = 1.0) {
+  RenderRecipe recipe;
+  recipe.tf = tfFor(preset, opacityScale);
+  return PreparedScene::prepare(testVolume(), {}, recipe);
+}
+
+// VesselGlyph of the phantom's tree: the focus through one TF, the context through another, the
+// outside clipped or through `outside`.
+RenderRecipe vesselGlyphRecipe(std::optional<TransferFunction> outside) {
+  RenderRecipe recipe;
+  recipe.tf = tfFor("cta-vessels-bone");
+  recipe.vesselGlyph = VesselGlyphRecipe{"phantom", {}, tfFor("cta-vessels-bone"),
+                                         tfFor("soft-tissue-context"), std::move(outside)};
+  return recipe;
+}
+
+std::shared_ptr<const PreparedScene> vesselGlyphScene(std::optional<TransferFunction> outside) {
+  return PreparedScene::prepare(testVolume(), testData().centerlines, vesselGlyphRecipe(std::move(outside)));
 }
 
 // Every published frame, in publication order (the callback runs on the worker thread).
@@ -63,18 +94,29 @@ struct FrameLog {
   }
 };
 
-ProgressiveRequest requestAt(double angleDeg, std::shared_ptr<const TfTable> table,
+ProgressiveRequest requestAt(double angleDeg, std::shared_ptr<const PreparedScene> scene,
                              Axis axis = Axis::k) {
   ProgressiveRequest request;
   request.params.axis = axis;
   request.params.angleDeg = angleDeg;
-  request.table = std::move(table);
+  request.scene = std::move(scene);
   return request;
 }
 
-Image renderDirectly(const Volume& volume, const TfTable& table, const RenderParams& params) {
-  const SliceTiles tiles = buildSliceTiles(volume, params.axis);
-  return renderFast(volume, tiles, classifyTiles(tiles, table), table, params);
+// What the scene of `recipe` must render, made without it.
+Image renderDirectly(const RenderRecipe& recipe, const RenderParams& params) {
+  const SliceTiles tiles = buildSliceTiles(testVolume(), params.axis);
+  if (!recipe.vesselGlyph) {
+    const TfTable table = buildTable(recipe.tf);
+    return renderFast(testVolume(), TileClassification(tiles, table), table, params);
+  }
+  const VesselGlyphRecipe& vg = *recipe.vesselGlyph;
+  RayRegions regions;
+  RayRegionBuilder(testData().centerlines, vg.settings).build(makeViewGeometry(testVolume(), params), regions);
+  const TfTable focus = buildTable(vg.focusTf), context = buildTable(vg.contextTf);
+  const TfTable outside = buildTable(vg.outsideTf.value_or(TransferFunction{}));
+  const RegionTables tables{&regions, &focus, &context, vg.outsideTf ? &outside : nullptr};
+  return renderFast(testVolume(), TileClassification(tiles, tables), tables, params);
 }
 
 bool sameImage(const Image& a, const Image& b) {
@@ -92,9 +134,10 @@ bool hasVisiblePixel(const Image& image) {
 
 TEST(ProgressiveRenderer, LevelsArriveInOrderAndEqualRenderFast) {
   FrameLog log;
-  ProgressiveRenderer renderer(testVolume(), log.callbacks());
-  const auto table = tableFor("cta-vessels-bone");
-  const ProgressiveRequest request = requestAt(20, table);
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads, log.callbacks());
+  const auto scene = sceneFor("cta-vessels-bone");
+  const ProgressiveRequest request = requestAt(20, scene);
   const std::uint64_t id = renderer.request(request);
   ASSERT_TRUE(renderer.waitForLevel(id, Quality::high, 120s));
 
@@ -109,10 +152,11 @@ TEST(ProgressiveRenderer, LevelsArriveInOrderAndEqualRenderFast) {
     }
     RenderParams params = request.params;
     params.sampling = qualitySampling(Quality(q));
-    const Image direct = renderDirectly(testVolume(), *table, params);
+    const Image direct = renderDirectly(scene->recipe(), params);
     EXPECT_TRUE(sameImage(*frames[q].image, direct));
     EXPECT_TRUE(hasVisiblePixel(direct));
-    EXPECT_EQ(frames[q].rgb8, toRgb8(direct));
+    EXPECT_EQ(frames[q].scene, scene);
+    EXPECT_EQ(frames[q].display, nullptr);  // no makeDisplay callback
     EXPECT_GT(frames[q].samples, 0u);
   }
   const ProgressiveStatus status = renderer.status();
@@ -128,8 +172,9 @@ TEST(ProgressiveRenderer, AfterPublishRunsForEveryFrameAndWhenIdle) {
   std::atomic<int> calls{0};
   ProgressiveCallbacks callbacks;
   callbacks.afterPublish = [&] { ++calls; };
-  auto renderer = std::make_unique<ProgressiveRenderer>(testVolume(), callbacks);
-  const std::uint64_t id = renderer->request(requestAt(0, tableFor("cta-vessels")));
+  RenderThreads threads;
+  auto renderer = std::make_unique<ProgressiveRenderer>(testVolume(), threads, callbacks);
+  const std::uint64_t id = renderer->request(requestAt(0, sceneFor("cta-vessels")));
   ASSERT_TRUE(renderer->waitForLevel(id, Quality::high, 120s));
   renderer.reset();  // joins: every callback has run
   EXPECT_EQ(calls.load(), 4);  // fast, medium, high, idle
@@ -137,8 +182,9 @@ TEST(ProgressiveRenderer, AfterPublishRunsForEveryFrameAndWhenIdle) {
 
 TEST(ProgressiveRenderer, InteractiveRequestRendersOnlyFast) {
   FrameLog log;
-  ProgressiveRenderer renderer(testVolume(), log.callbacks());
-  ProgressiveRequest request = requestAt(45, tableFor("cta-vessels"));
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads, log.callbacks());
+  ProgressiveRequest request = requestAt(45, sceneFor("cta-vessels"));
   request.interactive = true;
   const std::uint64_t id = renderer.request(request);
   ASSERT_TRUE(renderer.waitForLevel(id, Quality::fast, 60s));
@@ -151,8 +197,9 @@ TEST(ProgressiveRenderer, InteractiveRequestRendersOnlyFast) {
 
 TEST(ProgressiveRenderer, ReleaseAfterDragContinuesAboveTheShownLevel) {
   FrameLog log;
-  ProgressiveRenderer renderer(testVolume(), log.callbacks());
-  ProgressiveRequest request = requestAt(30, tableFor("cta-vessels"));
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads, log.callbacks());
+  ProgressiveRequest request = requestAt(30, sceneFor("cta-vessels"));
   request.interactive = true;
   const std::uint64_t dragId = renderer.request(request);
   ASSERT_TRUE(renderer.waitForLevel(dragId, Quality::fast, 60s));
@@ -168,8 +215,9 @@ TEST(ProgressiveRenderer, ReleaseAfterDragContinuesAboveTheShownLevel) {
 
 TEST(ProgressiveRenderer, NewRequestInterruptsHighAndRestartsAtFast) {
   FrameLog log;
-  ProgressiveRenderer renderer(testVolume(), log.callbacks());
-  const auto table = tableFor("soft-tissue-context");
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads, log.callbacks());
+  const auto table = sceneFor("soft-tissue-context");
   ProgressiveRequest slow = requestAt(0, table);
   // A high level slow enough to be caught running (many rows, no ERT) whose rows are short
   // (coarse depth sampling): the interruption latency is one row's time, and on a loaded machine
@@ -205,17 +253,19 @@ TEST(ProgressiveRenderer, NewRequestInterruptsHighAndRestartsAtFast) {
 }
 
 TEST(ProgressiveRenderer, IdenticalRequestKeepsTheRenderRunning) {
-  ProgressiveRenderer renderer(testVolume());
-  const ProgressiveRequest request = requestAt(10, tableFor("cta-vessels"));
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads);
+  const ProgressiveRequest request = requestAt(10, sceneFor("cta-vessels"));
   const std::uint64_t id = renderer.request(request);
   EXPECT_EQ(renderer.request(request), id);
   ASSERT_TRUE(renderer.waitForLevel(id, Quality::high, 120s));
 }
 
 TEST(ProgressiveRenderer, TfChangeAndAxisChangeRenderTheirOwnImages) {
-  ProgressiveRenderer renderer(testVolume());
-  const auto visible = tableFor("cta-vessels-bone");
-  const auto invisible = tableFor("cta-vessels-bone", 0.0);
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads);
+  const auto visible = sceneFor("cta-vessels-bone");
+  const auto invisible = sceneFor("cta-vessels-bone", 0.0);
   const std::uint64_t a = renderer.request(requestAt(0, visible));
   ASSERT_TRUE(renderer.waitForLevel(a, Quality::medium, 60s));
   EXPECT_TRUE(hasVisiblePixel(*renderer.latestFrame()->image));
@@ -231,14 +281,15 @@ TEST(ProgressiveRenderer, TfChangeAndAxisChangeRenderTheirOwnImages) {
   ASSERT_EQ(frame->request, c);
   RenderParams params = sideways.params;
   params.sampling = qualitySampling(frame->level);
-  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(testVolume(), *visible, params)));
+  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(visible->recipe(), params)));
 }
 
 TEST(ProgressiveRenderer, DestructionInterruptsARunningRender) {
-  const auto table = tableFor("soft-tissue-context");
+  const auto table = sceneFor("soft-tissue-context");
   ProgressiveRequest slow = requestAt(0, table);
   slow.levels[int(Quality::fast)] = {0.2, 2.0, Filter::trilinear, 1.0};
-  auto renderer = std::make_unique<ProgressiveRenderer>(testVolume());
+  RenderThreads threads;
+  auto renderer = std::make_unique<ProgressiveRenderer>(testVolume(), threads);
   renderer->request(slow);
   const auto deadline = Clock::now() + 60s;
   while (!renderer->status().rendering && Clock::now() < deadline) std::this_thread::sleep_for(1ms);
@@ -249,47 +300,11 @@ TEST(ProgressiveRenderer, DestructionInterruptsARunningRender) {
   EXPECT_LT(joinMs, 500);
 }
 
-// A stand-in for VesselGlyph's regions, independent of vessel/: on the left half of the image the
-// depths |t - centre depth| < 15 mm are focus, on the right half context; the rest is outside.
-void halvesRegions(const ViewGeometry& view, RayRegions& out) {
-  out.width = view.width;
-  out.height = view.height;
-  out.rayBegin.clear();
-  out.intervals.clear();
-  const double centreDepth = glm::dot(view.centre - view.rayOrigin(0, 0), view.viewDir);
-  for (int y = 0; y < view.height; ++y) {
-    for (int x = 0; x < view.width; ++x) {
-      out.rayBegin.push_back(std::uint32_t(out.intervals.size()));
-      const Region region = x < view.width / 2 ? Region::focus : Region::context;
-      out.intervals.push_back({float(centreDepth - 15), float(centreDepth + 15), region});
-    }
-  }
-  out.rayBegin.push_back(std::uint32_t(out.intervals.size()));
-}
-
-std::shared_ptr<const RegionSource> halvesSource(std::shared_ptr<const TfTable> outside) {
-  auto source = std::make_shared<RegionSource>();
-  source->build = halvesRegions;
-  source->focus = tableFor("cta-vessels-bone");
-  source->context = tableFor("soft-tissue-context");
-  source->outside = std::move(outside);
-  return source;
-}
-
-Image renderDirectlyWithRegions(const Volume& volume, const RegionSource& source,
-                                const RenderParams& params) {
-  const SliceTiles tiles = buildSliceTiles(volume, params.axis);
-  RayRegions regions;
-  halvesRegions(makeViewGeometry(volume, params), regions);
-  const RegionTables tables{&regions, source.focus.get(), source.context.get(), source.outside.get()};
-  return renderFast(volume, tiles, classifyTiles(tiles, tables), tables, params);
-}
-
-TEST(ProgressiveRenderer, RequestWithRegionsEqualsRenderFastWithTheSameRegionTables) {
+TEST(ProgressiveRenderer, VesselGlyphSceneEqualsRenderFastWithTheSameRegionsAndTables) {
   FrameLog log;
-  ProgressiveRenderer renderer(testVolume(), log.callbacks());
-  ProgressiveRequest request = requestAt(35, tableFor("cta-vessels-bone"));
-  request.regions = halvesSource(nullptr);  // outside clipped
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads, log.callbacks());
+  const ProgressiveRequest request = requestAt(35, vesselGlyphScene(std::nullopt));  // outside clipped
   const std::uint64_t id = renderer.request(request);
   ASSERT_TRUE(renderer.waitForLevel(id, Quality::high, 120s));
 
@@ -297,41 +312,43 @@ TEST(ProgressiveRenderer, RequestWithRegionsEqualsRenderFastWithTheSameRegionTab
   ASSERT_EQ(frames.size(), 3u);
   for (int q = 0; q < kQualityLevels; ++q) {
     SCOPED_TRACE(toString(Quality(q)));
-    EXPECT_EQ(frames[q].regions, request.regions);
+    EXPECT_EQ(frames[q].scene, request.scene);
     RenderParams params = request.params;
     params.sampling = qualitySampling(Quality(q));
-    const Image direct = renderDirectlyWithRegions(testVolume(), *request.regions, params);
+    const Image direct = renderDirectly(request.scene->recipe(), params);
     EXPECT_TRUE(hasVisiblePixel(direct));
     EXPECT_TRUE(sameImage(*frames[q].image, direct));
-    // The clipped outside makes it another image than plain DVR with the same table.
-    EXPECT_FALSE(sameImage(direct, renderDirectly(testVolume(), *request.table, params)));
+    // The clipped outside makes it another image than plain DVR with the same TF.
+    RenderRecipe plain = request.scene->recipe();
+    plain.vesselGlyph.reset();
+    EXPECT_FALSE(sameImage(direct, renderDirectly(plain, params)));
   }
 }
 
-TEST(ProgressiveRenderer, ANewRegionSourceIsANewRenderAndDroppingItGivesPlainDvr) {
-  ProgressiveRenderer renderer(testVolume());
-  const auto table = tableFor("cta-vessels-bone");
-  ProgressiveRequest clipped = requestAt(0, table);
-  clipped.regions = halvesSource(nullptr);
+TEST(ProgressiveRenderer, ANewSceneIsANewRenderAndAPlainSceneGivesPlainDvr) {
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads);
+  ProgressiveRequest clipped = requestAt(0, vesselGlyphScene(std::nullopt));
   const std::uint64_t a = renderer.request(clipped);
   ASSERT_TRUE(renderer.waitForLevel(a, Quality::medium, 60s));
 
   ProgressiveRequest withOutside = clipped;
-  withOutside.regions = halvesSource(table);  // same shape, the outside rendered: a change
+  withOutside.scene = vesselGlyphScene(tfFor("cta-vessels-bone"));  // the outside rendered: a change
   const std::uint64_t b = renderer.request(withOutside);
   EXPECT_NE(a, b);
   ASSERT_TRUE(renderer.waitForLevel(b, Quality::medium, 60s));
   auto frame = renderer.latestFrame();
   RenderParams params = withOutside.params;
   params.sampling = qualitySampling(frame->level);
-  EXPECT_TRUE(sameImage(*frame->image, renderDirectlyWithRegions(testVolume(), *withOutside.regions, params)));
+  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(withOutside.scene->recipe(), params)));
 
-  const std::uint64_t c = renderer.request(requestAt(0, table));
+  const auto plain = sceneFor("cta-vessels-bone");
+  const std::uint64_t c = renderer.request(requestAt(0, plain));
   ASSERT_TRUE(renderer.waitForLevel(c, Quality::medium, 60s));
   frame = renderer.latestFrame();
-  EXPECT_EQ(frame->regions, nullptr);
+  EXPECT_FALSE(frame->scene->hasRegions());
   params.sampling = qualitySampling(frame->level);
-  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(testVolume(), *table, params)));
+  EXPECT_TRUE(sameImage(*frame->image, renderDirectly(plain->recipe(), params)));
 }
 
 }  // namespace
@@ -345,7 +362,7 @@ namespace {
 // frame is the fast level at the newest angle, as renderFast makes it. Its timeline shows the
 // hand-off in order, with the wait for the running render.
 TEST(ProgressiveRenderer, DragStepsDuringAFastRenderRenderOnlyTheNewestAngle) {
-  const auto table = tableFor("cta-vessels");
+  const auto table = sceneFor("cta-vessels");
   ProgressiveRenderer* renderer = nullptr;
   std::uint64_t skippedId = 0, newestId = 0;
   FrameLog log;
@@ -361,7 +378,8 @@ TEST(ProgressiveRenderer, DragStepsDuringAFastRenderRenderOnlyTheNewestAngle) {
     step.params.angleDeg = 30;
     newestId = renderer->request(step);
   };
-  ProgressiveRenderer instance(testVolume(), callbacks);
+  RenderThreads threads;
+  ProgressiveRenderer instance(testVolume(), threads, callbacks);
   renderer = &instance;
   ProgressiveRequest first = requestAt(10, table);
   first.interactive = true;
@@ -380,7 +398,7 @@ TEST(ProgressiveRenderer, DragStepsDuringAFastRenderRenderOnlyTheNewestAngle) {
   EXPECT_EQ(frames[1].params.angleDeg, 30);
   RenderParams params = frames[1].params;
   params.sampling = qualitySampling(Quality::fast);
-  EXPECT_TRUE(sameImage(*frames[1].image, renderDirectly(testVolume(), *table, params)));
+  EXPECT_TRUE(sameImage(*frames[1].image, renderDirectly(table->recipe(), params)));
 
   const RequestTimeline t = renderer->latestFrame()->timeline;
   EXPECT_LE(t.requested, t.workerFree);  // it waited for the first step's render to finish
@@ -403,32 +421,21 @@ bool canRaiseBack(int from, int to) {
   return can;
 }
 
-// The fast level, what a user moving the mouse waits for, renders 5 nice steps below the process
-// on every thread rendering it, also right after a high render; the levels above it render 10
-// steps below where the threads can be raised back, else at the fast level's priority.
+// The fast level, what a user moving the mouse waits for, renders 5 nice steps below the process,
+// also right after a high render; the levels above it render 10 steps below where the threads can
+// be raised back, else at the fast level's priority. The worker thread joins each level's arena,
+// so when it publishes the frame it still has that arena's priority.
 TEST(ProgressiveRenderer, FastRendersJustBelowTheProcessAndTheOtherLevelsLower) {
   std::mutex mutex;
-  std::vector<int> running;                           // nice of the threads of the running level
-  std::vector<std::pair<Quality, std::vector<int>>> levels;  // per published frame
-  auto probing = std::make_shared<RegionSource>(*halvesSource(nullptr));
-  probing->finish = [&](const ViewGeometry&, const RayRegions&, Image&) {
-    // On the worker inside the level's arena: the threads a parallel loop there runs on.
-    tbb::parallel_for(0, 64, [&](int) {
-      const int nice = niceOfThisThread();
-      std::this_thread::sleep_for(200us);
-      std::lock_guard lock(mutex);
-      running.push_back(nice);
-    });
-  };
+  std::vector<std::pair<Quality, int>> levels;  // per published frame: the worker's nice
   ProgressiveCallbacks callbacks;
   callbacks.beforePublish = [&](const ProgressiveFrame& frame) {
     std::lock_guard lock(mutex);
-    levels.push_back({frame.level, std::move(running)});
-    running.clear();
+    levels.push_back({frame.level, niceOfThisThread()});
   };
-  ProgressiveRenderer renderer(testVolume(), callbacks);
-  ProgressiveRequest request = requestAt(15, tableFor("cta-vessels-bone"));
-  request.regions = probing;
+  RenderThreads threads;
+  ProgressiveRenderer renderer(testVolume(), threads, callbacks);
+  ProgressiveRequest request = requestAt(15, sceneFor("cta-vessels-bone"));
   const std::uint64_t first = renderer.request(request);
   ASSERT_TRUE(renderer.waitForLevel(first, Quality::high, 120s));
   request.params.angleDeg = 25;
@@ -437,15 +444,37 @@ TEST(ProgressiveRenderer, FastRendersJustBelowTheProcessAndTheOtherLevelsLower) 
 
   const int fast = std::min(niceOfThisThread() + 5, 19), lowered = std::min(niceOfThisThread() + 10, 19);
   const int background = canRaiseBack(fast, lowered) ? lowered : fast;
+  EXPECT_EQ(threads.fastNice(), fast);
+  EXPECT_EQ(threads.backgroundNice(), background);
   std::lock_guard lock(mutex);
   ASSERT_GE(levels.size(), 4u);
   const Quality expected[] = {Quality::fast, Quality::medium, Quality::high, Quality::fast};
   for (int n = 0; n < 4; ++n) {
     SCOPED_TRACE("frame " + std::to_string(n));
     EXPECT_EQ(levels[n].first, expected[n]);
-    EXPECT_FALSE(levels[n].second.empty());
-    for (int nice : levels[n].second)
-      EXPECT_EQ(nice, levels[n].first == Quality::fast ? fast : background);
+    EXPECT_EQ(levels[n].second, levels[n].first == Quality::fast ? fast : background);
+  }
+}
+
+// Every thread a parallel loop in an arena runs on has the arena's priority.
+TEST(RenderThreads, EveryThreadOfAnArenaRunsAtItsPriority) {
+  RenderThreads threads;
+  for (const Quality level : {Quality::fast, Quality::high, Quality::fast}) {
+    std::mutex mutex;
+    std::vector<int> nices;
+    std::thread([&] {  // a thread of its own: joining the arena changes the caller's priority too
+      threads.arenaFor(level).execute([&] {
+        tbb::parallel_for(0, 64, [&](int) {
+          const int nice = niceOfThisThread();
+          std::this_thread::sleep_for(200us);
+          std::lock_guard lock(mutex);
+          nices.push_back(nice);
+        });
+      });
+    }).join();
+    ASSERT_FALSE(nices.empty());
+    const int expected = level == Quality::fast ? threads.fastNice() : threads.backgroundNice();
+    for (const int nice : nices) EXPECT_EQ(nice, expected) << toString(level);
   }
 }
 

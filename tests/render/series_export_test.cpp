@@ -18,9 +18,9 @@
 #include "phantom/phantom.h"
 #include "core/slice_tiles.h"
 #include "core/view_geometry.h"
-#include "render/sidecar_render.h"
+#include "render/frame_renderer.h"
 #include "io/input_error.h"
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 #include "io/tf_file.h"
 #include "vessel/centerline.h"
 #include "vessel/cpr_hybrid.h"
@@ -47,14 +47,14 @@ const Volume& smallPhantom() { return smallPhantomWithPaths().volume; }
 // The DVR+CPR hybrid of one view made the plain way (vessel/cpr_hybrid.h compositeHybrid of the
 // whole displayed CPR, not the in-place step the exports run): VesselGlyph DVR of all paths,
 // their projected CPR in the focus footprint.
-Image referenceHybrid(const Volume& volume, const Centerlines& centerlines, const RenderSidecar& s) {
+Image referenceHybrid(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& s) {
   const VesselGlyphRecipe& vg = *s.vesselGlyph;
   const ViewGeometry view = makeViewGeometry(volume, s.params);
   const RayRegions regions = buildRayRegions(volume, view, centerlines, vg.settings);
   const TfTable focus = buildTable(vg.focusTf), context = buildTable(vg.contextTf);
   const RegionTables tables{&regions, &focus, &context, nullptr};
   const SliceTiles tiles = buildSliceTiles(volume, s.params.axis);
-  const Image dvr = renderFast(volume, tiles, classifyTiles(tiles, tables), tables, s.params);
+  const Image dvr = renderFast(volume, TileClassification(tiles, tables), tables, s.params);
   const CprLayout layout = layoutCpr(centerlines.paths, view, {CprMode::projected});
   CprDisplay display;
   display.centerlineMarker = display.ruler = false;
@@ -97,7 +97,7 @@ class SeriesExport : public ::testing::Test {
 
   fs::path dir_;
   TransferFunction tf_;
-  RenderSidecar base_;
+  RenderRecipe base_;
 };
 
 TEST(SeriesAngles, FullTurnLeavesOutTheEndAndAnArcKeepsBothEnds) {
@@ -129,14 +129,14 @@ TEST_F(SeriesExport, WritesNumberedImagesWhoseSidecarsHoldTheirAngles) {
   const TfTable table = buildTable(tf_);
   const double expected[] = {0, 90, 180, 270};
   for (int n = 0; n < 4; ++n) {
-    const RenderSidecar sidecar = loadRenderSidecar(sidecarPathFor(result.images[n]));
+    const RenderRecipe sidecar = loadRenderSidecar(sidecarPathFor(result.images[n]));
     EXPECT_DOUBLE_EQ(sidecar.params.angleDeg, expected[n]) << n;
     EXPECT_DOUBLE_EQ(sidecar.params.sampling.isd, 1.0);
     EXPECT_EQ(sidecar.tf.points.size(), tf_.points.size());
     // The file holds the raycaster's image at that angle, byte for byte.
     RenderParams params = base_.params;
     params.angleDeg = expected[n];
-    const Image direct = renderFast(smallPhantom(), tiles, classifyTiles(tiles, table), table, params);
+    const Image direct = renderFast(smallPhantom(), TileClassification(tiles, table), table, params);
     const std::vector<std::uint8_t> want = toRgb8(direct);
     OIIO::ImageBuf file(result.images[n].string());
     ASSERT_TRUE(file.read(0, 0, true, OIIO::TypeDesc::UINT8));
@@ -149,7 +149,7 @@ TEST_F(SeriesExport, WritesNumberedImagesWhoseSidecarsHoldTheirAngles) {
 
 TEST_F(SeriesExport, HybridSeriesHoldsTheHybridOfEachViewAndItsRecipe) {
   const Centerlines centerlines = toVolumeFrame(smallPhantomWithPaths().centerlines, smallPhantom());
-  RenderSidecar base = base_;
+  RenderRecipe base = base_;
   base.vesselGlyph = VesselGlyphRecipe{"phantom.csv", {}, tf_, loadPresetOrFile("soft-tissue-context"), std::nullopt};
   base.hybrid = HybridCprRecipe{"all", 2.0, kCtaLumenWindow};
   SeriesSpec spec;
@@ -158,16 +158,16 @@ TEST_F(SeriesExport, HybridSeriesHoldsTheHybridOfEachViewAndItsRecipe) {
   ASSERT_EQ(result.images.size(), 3u);
   long differFromPlain = 0;
   for (int n = 0; n < 3; ++n) {
-    const RenderSidecar sidecar = loadRenderSidecar(sidecarPathFor(result.images[n]));
+    const RenderRecipe sidecar = loadRenderSidecar(sidecarPathFor(result.images[n]));
     ASSERT_TRUE(sidecar.hybrid.has_value()) << n;
     EXPECT_DOUBLE_EQ(sidecar.hybrid->transitionMm, 2.0);
     ASSERT_TRUE(sidecar.hybrid->grey.has_value());
     EXPECT_DOUBLE_EQ(sidecar.params.angleDeg, n * 120.0);
     const Image expected = referenceHybrid(smallPhantom(), centerlines, sidecar);
     EXPECT_EQ(filePixels(result.images[n], expected.width, expected.height), toRgb8(expected)) << n;
-    RenderSidecar plain = sidecar;
+    RenderRecipe plain = sidecar;
     plain.hybrid.reset();
-    const std::vector<std::uint8_t> vesselGlyph = toRgb8(renderSidecarImage(smallPhantom(), centerlines, plain));
+    const std::vector<std::uint8_t> vesselGlyph = toRgb8(renderRecipe(smallPhantom(), centerlines, plain));
     differFromPlain += vesselGlyph != toRgb8(expected);
   }
   EXPECT_EQ(differFromPlain, 3);  // every view shows the CPR somewhere

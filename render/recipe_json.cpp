@@ -1,4 +1,4 @@
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 
 #include <cmath>
 #include <fstream>
@@ -10,7 +10,6 @@
 #include "core/number_text.h"
 #include "io/atomic_write.h"
 #include "io/input_error.h"
-#include "render/render_metadata.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
 #include "vessel/vessel_glyph_spec.h"
@@ -178,11 +177,38 @@ Json parseJson(const std::string& text, const fs::path& source) {
   }
 }
 
+// The view, sampling and shading (or MIP window) of a plain render.
+ImageMetadata viewMetadata(const RenderRecipe& s) {
+  const RenderParams& p = s.params;
+  ImageMetadata metadata{
+      {"version", ANGIORAY_VERSION},
+      {"dataset", s.dataset},
+      {"axis", toString(p.axis)},
+      {"angle_deg", numberText(p.angleDeg)},
+      {"mode", p.compositing == Compositing::mip ? "mip" : "dvr"},
+      {"isd", numberText(p.sampling.isd)},
+      {"osd", numberText(p.sampling.osd)},
+      {"filter", toString(p.sampling.filter)},
+      {"ert", numberText(p.sampling.ert)},
+  };
+  if (s.quality) metadata["quality"] = toString(*s.quality);
+  if (p.compositing == Compositing::mip) {
+    metadata["mip_window"] = numberText(p.mip.window);
+    metadata["mip_level"] = numberText(p.mip.level);
+  } else {
+    metadata["transfer_function"] = s.tf.name;
+    metadata["shading"] = p.shading.enabled ? "on" : "off";
+    metadata["ka"] = numberText(p.shading.ka);
+    metadata["kd"] = numberText(p.shading.kd);
+  }
+  return metadata;
+}
+
 }  // namespace
 
 fs::path sidecarPathFor(const fs::path& image) { return fs::path(image.string() + ".json"); }
 
-std::string renderSidecarJson(const RenderSidecar& s) {
+std::string renderSidecarJson(const RenderRecipe& s) {
   const RenderParams& p = s.params;
   Json json = {
       {"angioray_render_sidecar", kSidecarVersion},
@@ -191,7 +217,7 @@ std::string renderSidecarJson(const RenderSidecar& s) {
       {"dataset", s.dataset},
       {"labels", s.labels},
       {"quality", s.quality ? Json(toString(*s.quality)) : Json(nullptr)},
-      {"raycaster", s.raycaster},
+      {"raycaster", s.raycaster == Raycaster::reference ? "reference" : "fast"},
       {"view", {{"axis", toString(p.axis)}, {"angle_deg", p.angleDeg}}},
       {"sampling", {{"isd", p.sampling.isd}, {"osd", p.sampling.osd},
                     {"filter", toString(p.sampling.filter)}, {"ert", p.sampling.ert}}},
@@ -205,7 +231,7 @@ std::string renderSidecarJson(const RenderSidecar& s) {
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-void saveRenderSidecar(const RenderSidecar& sidecar, const fs::path& file) {
+void saveRenderSidecar(const RenderRecipe& sidecar, const fs::path& file) {
   const std::string text = renderSidecarJson(sidecar);
   writeAtomically(file, [&](const fs::path& temp) {
     std::ofstream out(temp, std::ios::binary);
@@ -215,21 +241,22 @@ void saveRenderSidecar(const RenderSidecar& sidecar, const fs::path& file) {
   });
 }
 
-RenderSidecar parseRenderSidecar(const std::string& text, const fs::path& source) {
+RenderRecipe parseRenderSidecar(const std::string& text, const fs::path& source) {
   const Json json = parseJson(text, source);
   const Reader r{source};
   if (!json.is_object() || !json.contains("angioray_render_sidecar"))
     throw InputError(source, "not an angioray render sidecar (no \"angioray_render_sidecar\" key)");
   if (r.number(json, "angioray_render_sidecar") != kSidecarVersion)
     throw InputError(source, "unsupported sidecar version " + json["angioray_render_sidecar"].dump());
-  RenderSidecar s;
+  RenderRecipe s;
   s.image = r.text(json, "image");
   s.dataset = r.text(json, "dataset");
   s.labels = r.text(json, "labels");
   if (!r.at(json, "quality", "").is_null()) s.quality = r.choice(json, "quality", parseQuality);
-  s.raycaster = r.text(json, "raycaster");
-  if (s.raycaster != "fast" && s.raycaster != "reference")
-    throw InputError(source, "\"raycaster\" has unknown value '" + s.raycaster + "'");
+  const std::string raycaster = r.text(json, "raycaster");
+  if (raycaster != "fast" && raycaster != "reference")
+    throw InputError(source, "\"raycaster\" has unknown value '" + raycaster + "'");
+  s.raycaster = raycaster == "reference" ? Raycaster::reference : Raycaster::fast;
   s.params = readParams(r, json);
   s.tf = r.tf(json, "tf");
   if (!r.at(json, "vessel_glyph", "").is_null()) s.vesselGlyph = readVesselGlyph(r, json["vessel_glyph"]);
@@ -240,7 +267,7 @@ RenderSidecar parseRenderSidecar(const std::string& text, const fs::path& source
   return s;
 }
 
-RenderSidecar loadRenderSidecar(const fs::path& file) {
+RenderRecipe loadRenderSidecar(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, fs::exists(file) ? "cannot read the render sidecar" : "no such render sidecar");
   std::ostringstream text;
@@ -248,10 +275,9 @@ RenderSidecar loadRenderSidecar(const fs::path& file) {
   return parseRenderSidecar(text.str(), file);
 }
 
-ImageMetadata renderSidecarMetadata(const RenderSidecar& s) {
-  RenderDescription description{s.dataset, s.tf.name, s.quality, s.params};
-  ImageMetadata metadata = renderMetadata(description);
-  metadata["raycaster"] = s.raycaster;
+ImageMetadata renderSidecarMetadata(const RenderRecipe& s) {
+  ImageMetadata metadata = viewMetadata(s);
+  metadata["raycaster"] = s.raycaster == Raycaster::reference ? "reference" : "fast";
   if (!s.labels.empty()) metadata["labels"] = s.labels;
   if (s.vesselGlyph) {
     const VesselGlyphRecipe& vg = *s.vesselGlyph;

@@ -1,6 +1,6 @@
 // Render sidecars (io/render_sidecar.h): every field survives save + load exactly, and broken
 // sidecars give one-line errors naming the file and the key.
-#include "render/render_sidecar.h"
+#include "render/recipe_json.h"
 
 #include <cmath>
 #include <filesystem>
@@ -29,13 +29,13 @@ TransferFunction tf(const std::string& name, double shift) {
 }
 
 // Every field set to something other than its default; numbers that are not short decimals.
-RenderSidecar everything() {
-  RenderSidecar s;
+RenderRecipe everything() {
+  RenderRecipe s;
   s.image = "/data/out image.png";
   s.dataset = "/data/ä aorta.mha";
   s.labels = "/data/labels.nrrd";
   s.quality = Quality::medium;
-  s.raycaster = "reference";
+  s.raycaster = Raycaster::reference;
   s.params.axis = Axis::j;
   s.params.angleDeg = 1.0 / 7.0;
   s.params.sampling = {0.3 + 1e-15, 0.7, Filter::mean, 0.995};
@@ -95,10 +95,10 @@ class RenderSidecarFiles : public test_support::TempFolderTest {
 };
 
 TEST_F(RenderSidecarFiles, EveryFieldSurvivesSaveAndLoadExactly) {
-  const RenderSidecar s = everything();
+  const RenderRecipe s = everything();
   const fs::path file = dir_ / "out.png.json";
   saveRenderSidecar(s, file);
-  const RenderSidecar r = loadRenderSidecar(file);
+  const RenderRecipe r = loadRenderSidecar(file);
   EXPECT_EQ(r.image, s.image);
   EXPECT_EQ(r.dataset, s.dataset);
   EXPECT_EQ(r.labels, s.labels);
@@ -143,13 +143,13 @@ TEST_F(RenderSidecarFiles, EveryFieldSurvivesSaveAndLoadExactly) {
 }
 
 TEST_F(RenderSidecarFiles, PlainRenderHasNoVesselGlyphAndSavingReplacesAtomically) {
-  RenderSidecar s;
+  RenderRecipe s;
   s.dataset = "/data/p.mha";
   s.tf = tf("plain", 0);
   const fs::path file = dir_ / "p.png.json";
   write("p.png.json", "old");
   saveRenderSidecar(s, file);
-  const RenderSidecar r = loadRenderSidecar(file);
+  const RenderRecipe r = loadRenderSidecar(file);
   EXPECT_FALSE(r.vesselGlyph);
   EXPECT_FALSE(r.hybrid);
   EXPECT_FALSE(r.quality);

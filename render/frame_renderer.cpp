@@ -1,0 +1,56 @@
+#include "render/frame_renderer.h"
+
+#include "core/reference_raycaster.h"
+
+namespace angio {
+
+void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis) {
+  if (!tiles_ || tiles_->axis != axis) {
+    classification_.reset();
+    tiles_.reset();  // free the old tiles before building the new ones
+    tiles_ = buildSliceTiles(volume_, axis);
+  }
+  if (classification_ && classifiedScene_ == scene) return;
+  // The classification needs the region TFs only, not the regions: any non-null regions stand
+  // for "VesselGlyph" here.
+  classification_.emplace(*tiles_, scene->tables(scene->hasRegions() ? &regions_ : nullptr));
+  classifiedScene_ = scene;
+}
+
+double FrameRenderer::structureMiB() const {
+  if (!tiles_) return 0;
+  const std::size_t visible = classification_ ? classification_->visible().size() : 0;
+  return (tiles_->minDensity.size() * 4 * sizeof(std::uint16_t) + visible) / 1048576.0;
+}
+
+Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene, const RenderParams& params,
+                            const RenderControl& control, FastRenderStats* stats) {
+  const ViewGeometry view = makeViewGeometry(volume_, params);
+  if (scene->hasRegions()) scene->buildRegions(view, regions_);
+  const RegionTables tables = scene->tables(scene->hasRegions() ? &regions_ : nullptr);
+  FastRenderStats local;
+  FastRenderStats& s = stats ? *stats : local;
+  Image image;
+  if (scene->recipe().raycaster == Raycaster::reference) {
+    s = {};
+    image = renderReference(volume_, tables, params, control.progress);
+  } else {
+    prepare(scene, params.axis);
+    FastRenderOptions options = techniques;
+    options.cancel = control.cancel;
+    options.recycle = control.recycle;
+    options.rowsDone = control.rowsDone;
+    image = renderFast(volume_, *classification_, tables, params, options, &s);
+  }
+  if (!s.cancelled) scene->finish(view, regions_, image);
+  return image;
+}
+
+Image renderRecipe(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& recipe,
+                   const RenderControl& control, PreparedScene::Warn warn, FastRenderStats* stats) {
+  FrameRenderer renderer(volume);
+  return renderer.render(PreparedScene::prepare(volume, centerlines, recipe, nullptr, std::move(warn)),
+                         control, stats);
+}
+
+}  // namespace angio

@@ -1,0 +1,71 @@
+#pragma once
+// The one path from a prepared scene and a view to pixels, for the window's progressive renderer,
+// `angioray render`, exports, rotation series and bench alike. A FrameRenderer keeps what
+// successive renders of one volume share: the slice tiles of the current rotation axis (rebuilt
+// when the axis changes), the tile classification of the current scene (made again for another
+// scene), the buffers of the rays' regions. One per thread of use; each render runs in parallel
+// inside (oneTBB, in whatever arena the caller runs it).
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "core/fast_raycaster.h"
+#include "core/image.h"
+#include "core/region_intervals.h"
+#include "core/render_params.h"
+#include "core/slice_tiles.h"
+#include "core/tile_classification.h"
+#include "core/volume.h"
+#include "render/prepared_scene.h"
+
+namespace angio {
+
+// How a render may be watched and stopped.
+struct RenderControl {
+  const std::atomic<bool>* cancel = nullptr;  // set: the fast raycaster stops within a row
+  std::atomic<int>* rowsDone = nullptr;       // incremented per finished image row (fast raycaster)
+  Image* recycle = nullptr;                   // an earlier image whose memory the new one takes
+  std::function<void(double)> progress;       // the reference raycaster's progress in [0, 1]
+};
+
+class FrameRenderer {
+ public:
+  explicit FrameRenderer(const Volume& volume) : volume_(volume) {}
+
+  // The image of `scene` seen with `params` (view, sampling, shading, compositing): the scene's
+  // recipe's raycaster with its TFs and regions, then its finish step (the hybrid) unless the
+  // render was cancelled. `scene` must be of this renderer's volume.
+  Image render(const std::shared_ptr<const PreparedScene>& scene, const RenderParams& params,
+               const RenderControl& control = {}, FastRenderStats* stats = nullptr);
+  // ... with the recipe's own parameters.
+  Image render(const std::shared_ptr<const PreparedScene>& scene, const RenderControl& control = {},
+               FastRenderStats* stats = nullptr) {
+    return render(scene, scene->recipe().params, control, stats);
+  }
+
+  // Builds the tiles of `axis` and classifies them for `scene` now rather than in the next
+  // render (the progressive renderer does this before a request's first level).
+  void prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis);
+
+  // Memory of the slice tiles (four 16-bit ranges per tile) and their classification, MiB.
+  double structureMiB() const;
+
+  // Which of the fast raycaster's techniques run (the bench switches them; the image is the same).
+  // Its cancel, recycle and rowsDone come from each render's RenderControl.
+  FastRenderOptions techniques;
+
+ private:
+  const Volume& volume_;
+  std::optional<SliceTiles> tiles_;
+  std::shared_ptr<const PreparedScene> classifiedScene_;
+  std::optional<TileClassification> classification_;
+  RayRegions regions_;  // the view's, buffers reused from render to render
+};
+
+// One image of a recipe, for callers with one view: prepare, then render.
+Image renderRecipe(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& recipe,
+                   const RenderControl& control = {}, PreparedScene::Warn warn = {},
+                   FastRenderStats* stats = nullptr);
+
+}  // namespace angio
