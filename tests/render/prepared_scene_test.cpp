@@ -1,0 +1,122 @@
+// Prepared scenes and the frame renderer: one recipe gives one image however it is reached (a
+// fresh scene, a scene that borrowed the previous one's tubes, a frame renderer reused across
+// scenes and axes), and bad recipes are refused when prepared.
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "io/input_error.h"
+#include "io/tf_file.h"
+#include "phantom/phantom.h"
+#include "render/frame_renderer.h"
+#include "render/prepared_scene.h"
+
+namespace angio {
+namespace {
+
+struct TestData {
+  Volume volume;
+  Centerlines centerlines;  // volume frame
+};
+
+const TestData& testData() {
+  static const TestData data = [] {
+    PhantomOptions options;
+    options.dims = {64, 64, 128};
+    Phantom phantom = generatePhantom(options);
+    Centerlines centerlines = toVolumeFrame(phantom.centerlines, phantom.volume);
+    return TestData{std::move(phantom.volume), std::move(centerlines)};
+  }();
+  return data;
+}
+
+RenderRecipe vesselGlyphRecipe() {
+  RenderRecipe recipe;
+  recipe.tf = loadPresetOrFile("cta-vessels-bone");
+  recipe.params.angleDeg = 40;
+  recipe.params.sampling = qualitySampling(Quality::medium);
+  recipe.vesselGlyph = VesselGlyphRecipe{"phantom", {}, loadPresetOrFile("cta-vessels"),
+                                         loadPresetOrFile("soft-tissue-context"), std::nullopt};
+  return recipe;
+}
+
+Image fresh(const RenderRecipe& recipe) {
+  return renderRecipe(testData().volume, testData().centerlines, recipe);
+}
+
+bool hasVisiblePixel(const Image& image) {
+  for (const glm::vec4& p : image.pixels)
+    if (p.a > 0.f) return true;
+  return false;
+}
+
+TEST(PreparedScene, AScenePreparedAfterAnotherRendersAsAFreshOne) {
+  const TestData& data = testData();
+  const RenderRecipe first = vesselGlyphRecipe();
+  const auto before = PreparedScene::prepare(data.volume, data.centerlines, first);
+  FrameRenderer frames(data.volume);
+  EXPECT_EQ(frames.render(before).pixels, fresh(first).pixels);
+
+  RenderRecipe tfEdit = first;  // the tubes can be lent
+  tfEdit.vesselGlyph->focusTf.modulators.opacityScale = 0.5;
+  RenderRecipe shapeEdit = first;  // they cannot
+  shapeEdit.vesselGlyph->settings.focus.value = 4;
+  shapeEdit.vesselGlyph->settings.cleft = true;
+  for (const RenderRecipe& edited : {tfEdit, shapeEdit}) {
+    const auto after = PreparedScene::prepare(data.volume, data.centerlines, edited, before.get());
+    const Image image = frames.render(after);
+    EXPECT_TRUE(hasVisiblePixel(image));
+    EXPECT_EQ(image.pixels, fresh(edited).pixels);
+    EXPECT_NE(image.pixels, fresh(first).pixels);
+  }
+}
+
+TEST(FrameRenderer, OneRendererAcrossScenesAndAxesGivesEachRecipesImage) {
+  const TestData& data = testData();
+  FrameRenderer frames(data.volume);
+  RenderRecipe plain;
+  plain.tf = loadPresetOrFile("cta-vessels-bone");
+  plain.params.sampling = qualitySampling(Quality::fast);
+  RenderRecipe mip = plain;
+  mip.params.compositing = Compositing::mip;
+  const RenderRecipe glyph = vesselGlyphRecipe();
+  RenderRecipe reference = glyph;
+  reference.raycaster = Raycaster::reference;
+  for (const Axis axis : {Axis::k, Axis::i, Axis::k}) {
+    for (RenderRecipe recipe : {plain, mip, glyph, reference}) {
+      recipe.params.axis = axis;
+      const auto scene = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+      const Image image = frames.render(scene);
+      EXPECT_TRUE(hasVisiblePixel(image)) << toString(axis);
+      EXPECT_EQ(image.pixels, fresh(recipe).pixels) << toString(axis);
+    }
+  }
+}
+
+// The fast raycaster gives the reference's image (core/fast_raycaster.h), with regions too.
+TEST(FrameRenderer, TheRecipesRaycasterChoiceGivesTheSameImage) {
+  RenderRecipe recipe = vesselGlyphRecipe();
+  recipe.params.sampling.ert = 1;
+  const Image fast = fresh(recipe);
+  recipe.raycaster = Raycaster::reference;
+  const Image reference = fresh(recipe);
+  ASSERT_EQ(fast.pixels.size(), reference.pixels.size());
+  float worst = 0;
+  for (std::size_t n = 0; n < fast.pixels.size(); ++n)
+    for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
+  EXPECT_LE(worst, 1.f / 255.f);
+}
+
+TEST(PreparedScene, AHybridOfAPathThatIsNotThereIsRefusedWhenPrepared) {
+  RenderRecipe recipe = vesselGlyphRecipe();
+  recipe.hybrid = HybridCprRecipe{"99", 0, std::nullopt};
+  EXPECT_THROW(PreparedScene::prepare(testData().volume, testData().centerlines, recipe), InputError);
+  recipe.hybrid->path = "0";
+  const auto scene = PreparedScene::prepare(testData().volume, testData().centerlines, recipe);
+  RenderRecipe withoutHybrid = recipe;
+  withoutHybrid.hybrid.reset();
+  EXPECT_NE(FrameRenderer(testData().volume).render(scene).pixels, fresh(withoutHybrid).pixels);
+}
+
+}  // namespace
+}  // namespace angio
