@@ -43,8 +43,8 @@ std::vector<Level> levels() {
 // One frame: returns samples evaluated.
 using FrameFunction = std::function<double(const RenderParams&)>;
 
-FrameTimes timeFrames(const std::string& level, const std::string& variant, int angles,
-                      const RenderParams& base, const FrameFunction& frame) {
+FrameTimingRow timeFrames(const std::string& level, const std::string& variant, int angles,
+                          const RenderParams& base, const FrameFunction& frame) {
   std::vector<double> ms, cpuMs, samples;
   for (int n = 0; n < angles; ++n) {
     RenderParams p = base;
@@ -137,7 +137,7 @@ class GlyphFrames {
   Image previous_;
 };
 
-// The "hybrid cpr" rows (issue 6 items 5 and 8; thesis fig. 5.4): the vessel glyph frame, then
+// The "hybrid cpr" rows (thesis fig. 5.4): the vessel glyph frame, then
 // the projected CPR of every path in the same view, shown through the focus TF and composited
 // into the focus's footprint with a hard edge, as `angioray render --hybrid-cpr` does.
 class HybridFrames {
@@ -166,7 +166,7 @@ class HybridFrames {
 // Interruption latency (the progressive GUI restarts at fast on every change): high-quality frames
 // at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> renderFast
 // returned. Frames recycle memory, as in the GUI after its first high-quality frame (the very
-// first one spends ~30 ms uninterruptibly in page faults for its image).
+// first one spends uninterruptible time in page faults for its image).
 std::vector<double> interruptLatencies(const Volume& volume, const SliceTiles& tiles,
                                        const std::vector<std::uint8_t>& visible, const TfTable& table,
                                        Axis axis, int count) {
@@ -306,7 +306,7 @@ std::string formatTable(const BenchReport& r) {
   std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %10s %14s %7s\n", "level", "variant",
                 "median ms", "min ms", "max ms", "cpu ms", "samples/frame", "frames");
   out << line;
-  for (const FrameTimes& t : r.rows) {
+  for (const FrameTimingRow& t : r.rows) {
     std::snprintf(line, sizeof line, "%-17s %-24s %10.1f %10.1f %10.1f %10.1f %14.3g %7d\n",
                   t.level.c_str(), t.variant.c_str(), t.medianMs, t.minMs, t.maxMs, t.medianCpuMs,
                   t.medianSamples, t.frames);
@@ -317,7 +317,7 @@ std::string formatTable(const BenchReport& r) {
 
 std::string toJson(const BenchReport& r) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const FrameTimes& t : r.rows)
+  for (const FrameTimingRow& t : r.rows)
     rows.push_back({{"level", t.level}, {"variant", t.variant}, {"median_ms", t.medianMs},
                     {"min_ms", t.minMs}, {"max_ms", t.maxMs}, {"median_cpu_ms", t.medianCpuMs},
                     {"median_samples", t.medianSamples},
