@@ -1,6 +1,6 @@
 #pragma once
-// Timing of the CPR (issue 6, item 8: a straightened CPR of a 400 mm path at 0.5 mm pixels in
-// <= 20 ms on 2 cores): lay out and resample the same CPR N times, report median, min and max.
+// Timing of the CPR: lay out and resample the same CPR N times (by default a straightened CPR of a
+// 400 mm path at 0.5 mm pixels), report median, min and max.
 #include <string>
 
 #include "core/render_params.h"

@@ -42,8 +42,8 @@ std::vector<Level> levels() {
 // One frame: returns samples evaluated.
 using FrameFunction = std::function<double(const RenderParams&)>;
 
-FrameTimes timeFrames(const std::string& level, const std::string& variant, int angles,
-                      const RenderParams& base, const FrameFunction& frame) {
+FrameTimingRow timeFrames(const std::string& level, const std::string& variant, int angles,
+                          const RenderParams& base, const FrameFunction& frame) {
   std::vector<double> ms, cpuMs, samples;
   for (int n = 0; n < angles; ++n) {
     RenderParams p = base;
@@ -122,7 +122,7 @@ FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedS
 // Interruption latency (the progressive GUI restarts at fast on every change): high-quality frames
 // at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> the render
 // returned. Frames recycle memory, as in the GUI after its first high-quality frame (the very
-// first one spends its first milliseconds uninterruptibly in page faults for its image).
+// first one spends uninterruptible time in page faults for its image).
 std::vector<double> interruptLatencies(FrameRenderer& frames, const std::shared_ptr<const PreparedScene>& scene,
                                        Axis axis, int count) {
   std::vector<double> latencies;
@@ -188,7 +188,7 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
     std::optional<tbb::global_control> oneThread;
     if (!switches.threads) oneThread.emplace(tbb::global_control::max_allowed_parallelism, 1);
     frames.techniques = switches.options;
-    FrameTimes times = timeFrames(level, variant, angles, p, sceneFrames(frames, scene, previous));
+    FrameTimingRow times = timeFrames(level, variant, angles, p, sceneFrames(frames, scene, previous));
     frames.techniques = {};
     return times;
   };
@@ -259,7 +259,7 @@ std::string formatTable(const BenchReport& r) {
   std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %10s %14s %7s\n", "level", "variant",
                 "median ms", "min ms", "max ms", "cpu ms", "samples/frame", "frames");
   out << line;
-  for (const FrameTimes& t : r.rows) {
+  for (const FrameTimingRow& t : r.rows) {
     std::snprintf(line, sizeof line, "%-17s %-24s %10.1f %10.1f %10.1f %10.1f %14.3g %7d\n",
                   t.level.c_str(), t.variant.c_str(), t.medianMs, t.minMs, t.maxMs, t.medianCpuMs,
                   t.medianSamples, t.frames);
@@ -270,7 +270,7 @@ std::string formatTable(const BenchReport& r) {
 
 std::string toJson(const BenchReport& r) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const FrameTimes& t : r.rows)
+  for (const FrameTimingRow& t : r.rows)
     rows.push_back({{"level", t.level}, {"variant", t.variant}, {"median_ms", t.medianMs},
                     {"min_ms", t.minMs}, {"max_ms", t.maxMs}, {"median_cpu_ms", t.medianCpuMs},
                     {"median_samples", t.medianSamples},

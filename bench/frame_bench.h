@@ -24,12 +24,12 @@ struct BenchSettings {
   // With centerlines (volume frame): also a "vessel glyph" row per level (thesis ch. 5): focus =
   // the TF within 2x the vessel radius, context = the TF at 30 % opacity in a slab 20 mm in front
   // of and behind the centerline, outside clipped; each frame builds its ray intervals. And a
-  // "hybrid cpr" row (issue 6 item 5): that frame with the projected CPR of every path composited
+  // "hybrid cpr" row (thesis fig. 5.4): that frame with the projected CPR of every path composited
   // into the focus's footprint.
   std::optional<Centerlines> vesselTree;
 };
 
-struct FrameTimes {
+struct FrameTimingRow {
   std::string level;        // "fast", "medium", "high", "medium-trilinear"
   std::string variant;      // "all", "reference", "no empty-space skipping", ...
   double medianMs = 0, minMs = 0, maxMs = 0;
@@ -51,7 +51,7 @@ struct BenchReport {
   double interruptMedianMs = 0, interruptMaxMs = 0;
   int interrupts = 0;
   int threads = 0;
-  std::vector<FrameTimes> rows;
+  std::vector<FrameTimingRow> rows;
 };
 
 BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, const BenchSettings& settings);

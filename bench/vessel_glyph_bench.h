@@ -1,6 +1,5 @@
 #pragma once
-// Timing of VesselGlyph interval construction (issue 5, item 6: <= 5 ms per view for 20 paths of
-// 1000 points at 512 x 512 x 1200, medium quality): buildRayRegions over N angles about one axis,
+// Timing of VesselGlyph interval construction: buildRayRegions over N angles about one axis,
 // median, min and max ms per view. Only the volume's geometry (dims, spacing) is used, so a
 // volume without voxels will do.
 #include <cstdint>

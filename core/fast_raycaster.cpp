@@ -116,7 +116,7 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
 // the same (the rendering model's rays differ only by v e_a from row to row), so they meet the
 // same cells in the same order: one pass along each column loads a cell's corners, tests its
 // transparency and computes its gradients once for all of them, and each row only interpolates
-// with its own fraction along a. At the high level (isd 0.5) about 2.5 rows share a slice pair.
+// with its own fraction along a. At the high level (isd 0.5) several rows share a slice pair.
 constexpr int kMaxBundleRows = 4;
 
 struct RowBundle {
@@ -471,8 +471,7 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.skipTiles = options.skipEmpty && options.skipTiles;
   f.shareRows = options.shareRows;
   // Cell skipping pays only with several samples per cell: at osd 1 (about one sample per cell)
-  // the test and leap cost more than the interpolation they save (`angioray bench`: medium with
-  // trilinear 119 ms without, 134 ms with; high at osd 0.3: 964 ms without, 842 ms with).
+  // the test and leap cost more than the interpolation they save (`angioray bench` times both).
   f.skipCells = options.skipEmpty && options.skipCells && params.sampling.osd < 0.75;
   f.rayStepQ = RaySamples(volume, f.view, glm::dvec3(0.0)).stepQ;
   f.templates = buildRayTemplates(volume, f.view, tiles, options.cancel);

@@ -5,12 +5,11 @@
 // group's voxels are read from the cache by all rays through it; row bundles: consecutive rows
 // that read the same voxels (same cell or nearest voxel along the rotation axis) walk each column
 // together, so a cell's corners, transparency and gradients serve all of them (at the high level
-// about 2.5 rows share a slice pair: 2x); cell transparency and the cell's gradients cached per ray
+// several rows share a slice pair); cell transparency and the cell's gradients cached per ray
 // (core/ray_samplers.h); early ray termination; bundles in parallel (oneTBB, dynamic balance).
 // Every evaluated sample uses the reference's operations (core/compositing.h), so the image is the
 // reference's for every filter, mode, axis and angle, up to float rounding: the compiler may fuse
-// a multiply and an add (-ffp-contract) in one inlined path and not in the other. Measured on the
-// 512x512x1200 phantom at medium with trilinear: at most 1.8e-7 per channel.
+// a multiply and an add (-ffp-contract) in one inlined path and not in the other.
 #include <atomic>
 #include <cstdint>
 #include <vector>
@@ -37,8 +36,8 @@ struct FastRenderOptions {
   bool shareRows = true;
   const std::atomic<bool>* cancel = nullptr;  // checked per template column, every 4 groups of a row
   // Optional: an earlier frame whose pixel memory the new frame takes over (it is left empty).
-  // Fresh memory for a frame costs page faults: ~25 ms of kernel page clearing for a 39 MB
-  // high-quality frame. A cancelled frame's unrendered rows are then undefined.
+  // Fresh memory for a frame costs page faults (the kernel clears every new page). A cancelled
+  // frame's unrendered rows are then undefined.
   Image* recycle = nullptr;
   // Optional: incremented as each image row is finished (the GUI's progress bar), from 0.
   std::atomic<int>* rowsDone = nullptr;

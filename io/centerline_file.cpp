@@ -1,7 +1,5 @@
 #include "io/centerline_file.h"
 
-#include <algorithm>
-#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -9,18 +7,13 @@
 #include "io/centerline_markups.h"
 #include "io/centerline_vtp.h"
 #include "io/input_error.h"
+#include "io/lowercase.h"
 
 namespace angio {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return text;
-}
 
 bool endsWith(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&

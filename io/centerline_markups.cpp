@@ -1,7 +1,5 @@
 #include "io/centerline_markups.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -9,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
+#include "io/lowercase.h"
 
 namespace angio {
 
@@ -16,12 +15,6 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 namespace {
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return text;
-}
 
 std::string stringOr(const Json& object, const char* key, const std::string& fallback) {
   const auto found = object.find(key);

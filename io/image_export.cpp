@@ -3,13 +3,13 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "io/atomic_write.h"
 #include "io/input_error.h"
+#include "io/lowercase.h"
 
 #ifndef ANGIORAY_VERSION
 #define ANGIORAY_VERSION "unknown"
@@ -31,9 +31,7 @@ struct EncodedPixels {
 };
 
 ExportFormat formatOf(const fs::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string extension = lowercase(path.extension().string());
   if (extension == ".png") return ExportFormat::Png8;
   if (extension == ".tif" || extension == ".tiff") return ExportFormat::Tiff16;
   if (extension == ".exr") return ExportFormat::ExrFloat;

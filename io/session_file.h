@@ -39,7 +39,7 @@ struct SessionView {
 // (vessel/cpr_display.h), or through the VesselGlyph focus TF.
 enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
 
-// The CPR section (issue 6 items 4-6): the view beside the image and the DVR+CPR hybrid in the
+// The CPR section: the view beside the image and the DVR+CPR hybrid in the
 // image share the path and the colouring. (The VesselGlyph settings the hybrid builds on are
 // SessionVesselGlyph's.)
 struct SessionCpr {
@@ -53,7 +53,7 @@ struct SessionCpr {
   friend bool operator==(const SessionCpr&, const SessionCpr&) = default;
 };
 
-// The VesselGlyph panel (issue 5 item 7, gui/app_vessel.h): the centerline file and what the user
+// The VesselGlyph panel (gui/app_vessel.h): the centerline file and what the user
 // set. JSON "vessel_glyph": {"centerlines", "centerlines_absolute", "enabled", "overlay", the
 // settings in io/vessel_glyph_json.h's form, "outside": "clip" | "main-tf", "focus_tf",
 // "context_tf" (TF JSON or null), "focus_preset", "context_preset"}.

@@ -1,7 +1,6 @@
 #include "io/tf_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -11,6 +10,7 @@
 
 #include "io/atomic_write.h"
 #include "io/input_error.h"
+#include "io/lowercase.h"
 
 #ifndef ANGIORAY_PRESET_DIR
 #define ANGIORAY_PRESET_DIR "presets"
@@ -156,12 +156,6 @@ fs::path presetDirectory() {
       fs::read_symlink("/proc/self/exe", error).parent_path() / "presets";
   if (!error && fs::is_directory(besideExecutable, error)) return besideExecutable;
   return ANGIORAY_PRESET_DIR;
-}
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return text;
 }
 
 std::string presetIdList(const std::vector<Preset>& presets) {

@@ -1,11 +1,12 @@
 #include "io/volume_formats.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include <itkMetaImageIO.h>
 #include <itkNiftiImageIO.h>
 #include <itkNrrdImageIO.h>
+
+#include "io/lowercase.h"
 
 namespace angio {
 
@@ -19,9 +20,7 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 }  // namespace
 
 std::optional<VolumeFormat> volumeFormatOf(const std::filesystem::path& path) {
-  std::string name = path.filename().string();
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string name = lowercase(path.filename().string());
   if (endsWith(name, ".mha") || endsWith(name, ".mhd")) return VolumeFormat::MetaImage;
   if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) return VolumeFormat::Nrrd;
   if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) return VolumeFormat::Nifti;

@@ -12,6 +12,7 @@
 
 #include "io/atomic_write.h"
 #include "io/input_error.h"
+#include "io/lowercase.h"
 #include "io/volume_formats.h"
 
 namespace angio {
@@ -68,8 +69,7 @@ void writeImage(const HuImage* image, VolumeFormat format, const std::filesystem
 }
 
 bool isDetachedHeader(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowercase(path.extension().string());
   return extension == ".mhd" || extension == ".nhdr";
 }
 

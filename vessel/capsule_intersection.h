@@ -1,6 +1,6 @@
 #pragma once
-// Ray against a tapered capsule ("round cone"), the building block of the VesselGlyph tube
-// (issue 5, item 5): the union of the balls B(c(s), r(s)) for s in [0, 1], centre and radius
+// Ray against a tapered capsule ("round cone"), the building block of the VesselGlyph tube:
+// the union of the balls B(c(s), r(s)) for s in [0, 1], centre and radius
 // interpolated linearly between two centerline points. That union is the convex hull of the two end
 // balls: the two balls plus the frustum of the cone tangent to both, between the tangent circles.
 // A tube around a polyline with interpolated radius is the union of its segments' round cones, so

@@ -1,5 +1,5 @@
 #pragma once
-// The centerline model of a vessel tree (issue 5, item 1): paths = polylines of points in mm with a
+// The centerline model of a vessel tree: paths = polylines of points in mm with a
 // lumen radius per point, each with a name. Paths run root to leaf; a bifurcation's trunk is
 // repeated in every path through it (vmtk's layout, also the phantom's) and kept as given —
 // sharedPrefixLength finds it.

@@ -1,5 +1,5 @@
 #pragma once
-// Curved planar reformation (issue 6; thesis sec. 1.3.2, 5.2.2; Kanitsar et al., IEEE Vis 2002):
+// Curved planar reformation (thesis sec. 1.3.2, 5.2.2; Kanitsar et al., IEEE Vis 2002):
 // the entry point. The geometry of the three projections is in vessel/cpr_layout.h, the
 // resampling in vessel/cpr_resample.h, the display (window/level or TF, marker, ruler) in
 // vessel/cpr_display.h.

@@ -1,5 +1,5 @@
 #pragma once
-// Showing a CPR (issue 6, item 4): grey through a window/level, or coloured through a transfer
+// Showing a CPR: grey through a window/level, or coloured through a transfer
 // function so it harmonises with the DVR (thesis sec. 5.2.2), with the centerline marked and an
 // arc-length ruler. Pixels the CPR does not sample are transparent black (A = 0), sampled ones
 // opaque, so a projected CPR can be laid over the DVR image it registers with.

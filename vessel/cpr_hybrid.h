@@ -1,5 +1,5 @@
 #pragma once
-// The DVR+CPR hybrid (issue 6 item 5; thesis sec. 5.2.2, fig. 5.4 and 5.5): DVR of the context
+// The DVR+CPR hybrid (thesis sec. 5.2.2, fig. 5.4 and 5.5): DVR of the context
 // with the focus cut out in image space, and the projected CPR (vessel/cpr_layout.h, which
 // registers pixel for pixel with the DVR image of the same view) composited into the cut.
 //
@@ -37,8 +37,8 @@ Image compositeHybrid(const Image& dvr, const Image& cpr, const std::vector<std:
 // The same hybrid in place, for a projected CPR `layout` (laid out in the DVR's view): equal to
 // compositeHybrid(dvr, displayCpr(layout, resampleCpr(volume, layout), display), footprint,
 // settings) with the display's marker and ruler off, but only the pixels the CPR shows in are
-// resampled and coloured, so it costs the footprint, not the whole image (issue 6 item 8: the
-// hybrid adds <= 10 % to the DVR frame). Throws as compositeHybrid.
+// resampled and coloured, so its cost follows the footprint, not the whole image. Throws as
+// compositeHybrid.
 void compositeCprInPlace(Image& dvr, const Volume& volume, const CprLayout& layout,
                          const std::vector<std::uint8_t>& footprint, const CprDisplay& display,
                          const HybridCompositing& settings);

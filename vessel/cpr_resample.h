@@ -9,7 +9,7 @@
 //   results blended by the fraction along k. cv::remap quantises the position inside a cell to
 //   1/32 of a voxel (INTER_BITS = 5) even for float maps, so at strong edges (lumen to wall,
 //   ~1000 HU per voxel) it is off by up to ~1000/64 HU; tests/vessel/cpr_test.cpp measures it.
-//   Kept for that comparison (issue 6, item 1), not used by default.
+//   Kept for that comparison, not used by default.
 #include <optional>
 #include <string>
 #include <vector>

@@ -513,8 +513,7 @@ class IntervalBuffer {
 };
 
 // Builds rows one at a time. Its per-column storage is kept from band to band and view to view
-// (one builder per thread, vessel_glyph's Scratch): built afresh for every band it cost about a
-// tenth of a view.
+// (one builder per thread, vessel_glyph's Scratch), so it is not allocated again for every band.
 class RowBuilder {
  public:
   RowBuilder() : columns_(0), focusChain_(0, Region::focus), contextChain_(0, Region::context) {}
@@ -853,8 +852,9 @@ void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGl
   out.intervals.clear();
   // A pipeline: bands are built in parallel, each into a buffer of its own, and appended to `out`
   // in order as soon as they are done, while their intervals are still in cache (appending them
-  // all at the end cost about a tenth of a view). Band n's buffer is n % tokens: at most `tokens`
-  // bands are in flight and they leave in order, so band n + tokens starts after n has left.
+  // all at the end would read them back from memory). Band n's buffer is n % tokens: at most
+  // `tokens` bands are in flight and they leave in order, so band n + tokens starts after n has
+  // left.
   const int tokens = 4 * tbb::this_task_arena::max_concurrency();
   bands.resize(std::size_t(tokens));
   int nextBand = 0;

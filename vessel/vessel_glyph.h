@@ -1,5 +1,5 @@
 #pragma once
-// VesselGlyph regions per ray (thesis ch. 5, issue 5 items 3-5): from the centerlines, every ray of
+// VesselGlyph regions per ray (thesis ch. 5): from the centerlines, every ray of
 // a view gets sorted depth intervals labelled focus or context (core/region_intervals.h); depths
 // not covered are "outside" (clipped or rendered with a third TF: the raycaster decides).
 //
@@ -120,8 +120,8 @@ RayRegions buildRayRegions(const ViewGeometry& view, const GlyphTubes& tubes,
 
 // For a renderer that builds the regions of many views of one set of centerlines: prepares the
 // tubes once and keeps its interval scratch from view to view; with the same `out` passed every
-// time, the big buffers are reused once sizes have settled (fresh memory costs page faults worth
-// about half a view's time). One build at a time per builder.
+// time, the big buffers are reused once sizes have settled (fresh memory costs page faults). One
+// build at a time per builder.
 class RayRegionBuilder {
  public:
   // Throws what prepareGlyphTubes throws.

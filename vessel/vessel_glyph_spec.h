@@ -1,6 +1,6 @@
 #pragma once
-// VesselGlyph region shapes as short text (issue 5 item 7, the `--vg-focus` / `--vg-context`
-// options and image metadata), all sizes in mm:
+// VesselGlyph region shapes as short text (the `--vg-focus` / `--vg-context` options and image
+// metadata), all sizes in mm:
 //   focus:   "circle:radius=2.0x"  (a factor of the vessel radius) or "circle:radius=3" / "3mm"
 //   context: "slab:front=20,back=20[,width=40]" (width = how far the slab reaches sideways from
 //            the centerline, each side; "inf" = the thesis's unbounded slab),

@@ -1,7 +1,7 @@
 // `angioray render` with VesselGlyph regions, the DVR+CPR hybrid and render sidecars, end to end
-// on the small phantom and its ground-truth centerlines (issue 5 item 7, issue 6 item 5, issue 4
-// item 6). Expectations come from the centerline geometry and from independent commands (`cpr`,
-// plain `render`), never from the output under test itself.
+// on the small phantom and its ground-truth centerlines. Expectations come from the centerline
+// geometry and from independent commands (`cpr`, plain `render`), never from the output under
+// test itself.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

@@ -699,7 +699,7 @@ TEST(CenterlineSharedData, CenterlinesLieInTheAortaLumen) {
 TEST(CenterlineSharedData, ResamplingKeepsLengthAndEndpoints) {
   const Centerlines centerlines = loadCenterlines(kSharedData / "aorta-centerlines.csv");
   // Steps up to about two voxels: the path zigzags by up to a voxel (it was tracked slice by slice),
-  // and coarser steps cut those corners (5 mm loses 2% of the length).
+  // and coarser steps cut those corners, which shortens the path.
   for (double step : {0.25, 0.5, 1.0, 2.0}) {
     const Centerlines resampled = resampleByArcLength(centerlines, step);
     for (std::size_t p = 0; p < centerlines.paths.size(); ++p) {

@@ -141,7 +141,7 @@ TEST(Phantom, HasFourRootToLeafPathsSharingTheAorta) {
 TEST(Phantom, CenterlinesLieInsideTheContrastFilledLumen) {
   // At 128 x 128 x 300 (3.2 x 3.2 x 4 mm voxels) the nearest voxel of a point on a 1.5 mm tibial
   // can be 3 mm away, beyond its lumen; partial volume still lifts most of them into the lumen
-  // range (the blend ramp is one voxel wide), so 95% per path must hold. At full size all do.
+  // range (the blend ramp is one voxel wide), so 95% per path must hold.
   const Phantom& phantom = mediumPhantom();
   for (const CenterlinePath& path : phantom.centerlines.paths) {
     std::size_t inLumen = 0;
@@ -199,9 +199,9 @@ TEST(Phantom, SomeSegmentsRunNearlyHorizontally) {
 }
 
 TEST(Phantom, CtaVesselsPresetShowsOneToTwoPercentOfVoxels) {
-  // A real peripheral run-off CTA shows ~1.5% under such a preset (lumen, cancellous bone, kidneys,
-  // edges of cortical bone). At full size the phantom shows 1.46%; coarser volumes a little more
-  // (partial-volume edges are two voxels wide, so wider in mm): 1.76% at half size, checked here.
+  // A real peripheral run-off CTA shows one to two percent of its voxels under such a preset
+  // (lumen, cancellous bone, kidneys, edges of cortical bone); coarser volumes a little more
+  // (partial-volume edges are two voxels wide, so wider in mm). Checked here at half size.
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels"));
   ASSERT_FALSE(table.anyVisible(densityOfHu(0), densityOfHu(130)));
   ASSERT_TRUE(table.anyVisible(densityOfHu(400), densityOfHu(400)));

@@ -1,6 +1,7 @@
-// Curved planar reformation (issue 6): the three projections' geometry against the math, bands of
-// synthetic tubes, registration with the DVR view, multi-path trunks, resampling against the
-// trilinear reference (and the OpenCV remap comparison), the real aorta, display and errors.
+// Curved planar reformation (Kanitsar et al., IEEE Vis 2002): the three projections' geometry
+// against the math, bands of synthetic tubes, registration with the DVR view, multi-path trunks,
+// resampling against the trilinear reference (and the OpenCV remap comparison), the real aorta,
+// display and errors.
 #include "vessel/cpr.h"
 
 #include <gtest/gtest.h>
