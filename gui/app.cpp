@@ -39,9 +39,9 @@ void FrameTimes::Stats::add(double ms) {
   maxMs = std::max(maxMs, ms);
 }
 
-App::App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<void()> wakeUi)
+App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, std::function<void()> wakeUi)
     : data_(std::move(dataset)),
-      state_(std::move(state)),
+      workstation_(std::move(start.document)),
       texture_(gl),
       wakeUi_(std::move(wakeUi)),
       renderer_(std::make_unique<ProgressiveRenderer>(data_.volume, ProgressiveCallbacks{{}, wakeUi_})),
@@ -52,14 +52,13 @@ App::App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<v
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
   ImGui::StyleColorsDark();
   startSession();
-  if (!state_.centerlinesFile.empty()) {  // `gui --centerlines` rather than a session's file
-    vessel_.path = state_.centerlinesFile;
-    state_.vesselGlyph.centerlines = state_.vesselGlyph.centerlinesAbsolute = "";
-    loadVesselCenterlines({vessel_.path, "", CenterlineLoad::From::panel});
+  if (!start.centerlinesFile.empty()) {  // `gui --centerlines` rather than a session's file
+    vessel_.ui.path = start.centerlinesFile;
+    commit(CenterlineFileEdit{});
+    loadVesselCenterlines({vessel_.ui.path, "", CenterlineLoad::From::panel});
   } else {
     loadSessionCenterlines();
   }
-  if (state_.cpr.hybrid) state_.vesselGlyph.enabled = true;  // a session's hybrid: VesselGlyph's focus is the cut
 }
 
 App::~App() {
@@ -68,9 +67,10 @@ App::~App() {
   if (histogramJob_.valid()) histogramJob_.wait();
 }
 
-void App::noteRect(const std::string& name) {
-  widgetRects_[name] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
-}
+void App::noteRect(const std::string& name) { angio::noteRect(widgetRects_, name); }
+
+void App::commit(const Edit& edit) { workstation_.apply(edit); }
+
 
 void App::frame(double previousFrameMs) {
   frameStart_ = Clock::now();
@@ -91,16 +91,15 @@ void App::frame(double previousFrameMs) {
   drawViewportWindow();
   drawCprView();
   drawStatusBar();
-  if (state_.view.autoSpin) {
-    state_.view.angleDeg =
-        wrapDegrees(state_.view.angleDeg + state_.view.spinDegreesPerSecond * ImGui::GetIO().DeltaTime);
-  }
+  const ViewState& view = doc().view;
+  if (view.autoSpin) commit(RotateEdit{view.spinDegreesPerSecond * ImGui::GetIO().DeltaTime});
   // While anything is held (a drag on the image or the TF plot, a slider, an arrow key) or the
   // view spins, only the fast level is wanted; letting go asks for the full progression.
-  const bool interacting = ImGui::IsAnyItemActive() || state_.view.autoSpin ||
+  const bool interacting = ImGui::IsAnyItemActive() || doc().view.autoSpin ||
                            ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)) ||
                            ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow));
   ImGui::Render();
+  if (doc().vesselGlyph.enabled && vessel_.physical) loadMissingRegionTfs();  // the request's regions need them
   requestRender(interacting);
 }
 
@@ -156,16 +155,16 @@ void App::pollRenderer() {
 
 // Asks for a render when anything that decides the image changed (or an interaction ended).
 void App::requestRender(bool interactive) {
-  if (!table_ || state_.tf != tableTf_) {
-    table_ = std::make_shared<const TfTable>(buildTable(state_.tf));
-    tableTf_ = state_.tf;
+  if (!table_ || doc().tf != tableTf_) {
+    table_ = std::make_shared<const TfTable>(buildTable(doc().tf));
+    tableTf_ = doc().tf;
   }
   ProgressiveRequest request;
-  request.params = renderParamsOf(state_);
+  request.params = renderParamsOf(doc());
   request.table = table_;
   request.regions = vesselRegions();
   request.interactive = interactive;
-  request.levels = state_.levels;
+  request.levels = doc().levels;
   if (lastRequest_ && *lastRequest_ == request) return;
   lastRequestId_ = renderer_->request(request);
   latency_.requested(lastRequestId_, frameStart_);
@@ -179,10 +178,8 @@ void App::handleKeys() {
   if (io.WantTextInput) return;
   const double step = io.KeyShift ? 10 : 1;
   // Arrows turn the patient like a drag in their direction (see drawViewport's grab semantics).
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)))
-    state_.view.angleDeg = wrapDegrees(state_.view.angleDeg + step);
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow)))
-    state_.view.angleDeg = wrapDegrees(state_.view.angleDeg - step);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) commit(RotateEdit{step});
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) commit(RotateEdit{-step});
   if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) undoTf();
   if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) redoTf();
 }
@@ -201,11 +198,12 @@ void App::drawViewportWindow() {
   ViewportImage image;
   ViewportOverlay overlay;
   const glm::dvec3 extent = domainExtent(data_.volume);
-  const int a = int(state_.view.axis), b = (a + 1) % 3, c = (a + 2) % 3;
+  const ViewState& view = doc().view;
+  const int a = int(view.axis), b = (a + 1) % 3, c = (a + 2) % 3;
   overlay.fitMm = glm::dvec2(std::max(std::hypot(extent[b], extent[c]), 1e-3), std::max(extent[a], 1e-3));
   char caption[96];
-  std::snprintf(caption, sizeof caption, "%.1f deg about %s%s", state_.view.angleDeg,
-                toString(state_.view.axis), state_.mode == Compositing::mip ? "   MIP" : "");
+  std::snprintf(caption, sizeof caption, "%.1f deg about %s%s", view.angleDeg, toString(view.axis),
+                doc().mode == Compositing::mip ? "   MIP" : "");
   overlay.caption = caption;
   if (shown_ && !texture_.empty()) {
     image = {texture_.id(), shown_->image->width, shown_->image->height,
@@ -216,16 +214,16 @@ void App::drawViewportWindow() {
                   image.width, image.height, s.isd, s.osd, toString(s.filter));
     overlay.levelLabel = label;
   }
-  viewport_ = drawViewport(image.texture ? &image : nullptr, state_.view, overlay);
+  viewport_ = drawViewport(image.texture ? &image : nullptr, view, overlay);
+  if (viewport_.zoomedOrPanned) commit(ViewEdit{*viewport_.zoomedOrPanned});
   drawCenterlineOverlay();
   moveCprCursorOnClick();
-  if (viewport_.rotateDegrees != 0)
-    state_.view.angleDeg = wrapDegrees(state_.view.angleDeg + viewport_.rotateDegrees);
+  if (viewport_.rotateDegrees != 0) commit(RotateEdit{viewport_.rotateDegrees});
   ImGui::End();
 }
 
 FramePacing App::pacing() const {
-  if (state_.view.autoSpin || incoming_ || renderer_->latestFrame() != shown_ ||
+  if (doc().view.autoSpin || incoming_ || renderer_->latestFrame() != shown_ ||
       ImGui::IsAnyMouseDown() || ImGui::IsAnyItemActive())
     return FramePacing::continuous;
   if (renderer_->status().busy || histogramJob_.valid() || export_.job.valid() || backgroundBusy())
@@ -266,12 +264,12 @@ nlohmann::json App::report() const {
     const LevelTiming& t = status.levels[q];
     if (t.done) levels[toString(Quality(q))] = {{"ms", t.ms}, {"samples_per_second", t.samplesPerSecond()}};
   }
-  const OrientationLetters letters = orientationLetters(state_.view.axis, state_.view.angleDeg);
+  const OrientationLetters letters = orientationLetters(doc().view.axis, doc().view.angleDeg);
   nlohmann::json layout = {{"viewport", rectJson(viewport_.min, viewport_.max)},
                            {"tf_plot", rectJson(tfView_.plotMin, tfView_.plotMax)}};
   for (const auto& [name, rect] : widgetRects_) layout[name] = rectJson(rect.first, rect.second);
   return {
-      {"state", toJson(state_)},
+      {"state", nlohmann::json::parse(toJson(doc()))},
       {"runtime",
        {{"dataset", {{"name", data_.name},
                      {"dims", {data_.volume.dims.x, data_.volume.dims.y, data_.volume.dims.z}}}},

@@ -24,13 +24,14 @@
 #include "gui/file_browser.h"
 #include "gui/latency_trace.h"
 #include "render/series_export.h"
-#include "gui/app_state.h"
 #include "gui/app_cpr.h"
 #include "gui/app_vessel.h"
+#include "gui/panel_widgets.h"
+#include "gui/session_file.h"
 #include "gui/tf_editor.h"
 #include "gui/viewport.h"
+#include "gui/workstation.h"
 #include "render/render_sidecar.h"
-#include "io/session_file.h"
 #include "io/tf_file.h"
 
 namespace angio {
@@ -39,6 +40,12 @@ struct LoadedDataset {
   Volume volume;
   std::string name;         // file or folder, or "phantom IxJxK"
   std::string description;  // e.g. "MetaImage float32"
+};
+
+// What the app starts with: the document, and what only this run needs.
+struct AppStart {
+  Document document;
+  std::string centerlinesFile;  // centerlines to load at start (`gui --centerlines`), if any
 };
 
 // UI frame times (ms, as the platform measured them: the window's exclude the buffer swap, the
@@ -64,7 +71,7 @@ class App {
  public:
   // `wakeUi` (optional, any thread) makes the platform's event wait return: called when the
   // renderer publishes a frame or goes idle.
-  App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<void()> wakeUi = {});
+  App(LoadedDataset dataset, AppStart start, const GlApi& gl, std::function<void()> wakeUi = {});
   ~App();
   App(const App&) = delete;
   App& operator=(const App&) = delete;
@@ -87,7 +94,7 @@ class App {
   // Data and session (gui/app_data.cpp, gui/app_session.cpp): loads in the background and
   // replaces the dataset on success (drag-and-drop, the file browser, recent files, scripts).
   void openDataset(const std::string& path);
-  Session session() const;  // what the window saves as the last session when it quits
+  Document session() const;  // what the window saves as the last session when it quits
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -97,14 +104,19 @@ class App {
   void pollHistogram();
   void pollRenderer();
   void requestRender(bool interactive);
+  const Document& doc() const { return workstation_.document(); }
+  // Every change of the document goes through here (to workstation_.apply).
+  void commit(const Edit& edit);
+  template <class PanelEdit>
+  void commit(const std::optional<PanelEdit>& edit) {
+    if (edit) commit(Edit{*edit});
+  }
   void handleKeys();
   void drawViewportWindow();
   void drawSidePanel();
   void drawStatusBar();
   void drawDataSection();
-  void drawViewSection();
   void drawTfSection();
-  void drawRenderingSection();
   void drawExportSection();
   void drawSeriesExport();   // gui/app_series.cpp
   void drawSessionSection(); // gui/app_session.cpp
@@ -113,7 +125,7 @@ class App {
   void pollBackgroundJobs(); // data load, series export
   bool backgroundBusy() const;
   void replaceDataset(LoadedDataset dataset);
-  void applySession(const Session& session);
+  void applySession(const Document& session);
   bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
   nlohmann::json dataReport() const;
   void pollExport();
@@ -123,11 +135,11 @@ class App {
   void drawTfTargetSelector();
   void drawCenterlineOverlay();
   void loadVesselCenterlines(const CenterlineLoad& request);  // in the background
-  void loadSessionCenterlines();  // state_.vesselGlyph's file (none: the loaded ones go)
+  void loadSessionCenterlines();  // the document's centerline file (none: the loaded ones go)
   void pollCenterlineLoad();
   void dropCenterlines();
   const Centerlines* framedCenterlines();
-  void ensureVesselTfs();
+  void loadMissingRegionTfs();  // a focus or context TF with no points: its preset
   std::shared_ptr<const RegionSource> vesselRegions();
   nlohmann::json vesselReport() const;
   ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
@@ -138,9 +150,8 @@ class App {
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
   nlohmann::json cprReport() const;
-  // DVR+CPR hybrid (gui/app_hybrid.cpp): its controls in the CPR section, and the finish step
-  // the progressive renderer runs on each VesselGlyph image when it is on.
-  void drawHybridControls();
+  // DVR+CPR hybrid (gui/app_hybrid.cpp): the finish step the progressive renderer runs on each
+  // VesselGlyph image when it is on.
   std::function<void(const ViewGeometry&, const RayRegions&, Image&)> hybridFinishStep();
   nlohmann::json hybridReport() const;
   // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it.
@@ -148,14 +159,14 @@ class App {
   std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
   RenderSidecar exportRecipe() const;  // of what the last request rendered
   Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
-  TransferFunction& editedTf();  // the TF the TF editor edits: main, focus or context
-  std::string& editedPreset();
+  const TransferFunction& editedTf() const;  // the TF the TF editor edits: main, focus or context
+  const std::string& editedPreset() const;
   void applyTf(const TransferFunction& tf, const std::string& preset);
   void undoTf();
   void redoTf();
 
   LoadedDataset data_;  // before renderer_: the worker reads data_.volume
-  AppState state_;
+  Workstation workstation_;
   StreamedTexture texture_;
   std::function<void()> wakeUi_;
   std::unique_ptr<ProgressiveRenderer> renderer_;  // replaced with the dataset
@@ -187,7 +198,7 @@ class App {
   std::vector<float> histogram_;  // log counts per density, empty until counted
   std::optional<DensityRange> huRange_;
   ViewportInteraction viewport_;
-  std::map<std::string, std::pair<ImVec2, ImVec2>> widgetRects_;
+  WidgetRects widgetRects_;
   bool quit_ = false;
 
   struct ExportPanel {
@@ -203,7 +214,7 @@ class App {
   FileBrowser browser_;
   BackgroundJob<LoadedDataset> load_;
   std::string loadPath_, loadError_;
-  std::optional<Session> offeredSession_;  // "Restore last session" banner
+  std::optional<Document> offeredSession_;  // "Restore last session" banner
   std::string sessionPath_ = "session.json";
   std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame
   SeriesPanel series_;

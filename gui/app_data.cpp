@@ -11,6 +11,7 @@
 
 #include "io/input_error.h"
 #include "gui/app.h"
+#include "gui/viewport.h"
 #include "io/volume_reader.h"
 
 namespace angio {
@@ -18,14 +19,6 @@ namespace angio {
 namespace fs = std::filesystem;
 
 namespace {
-
-// The LPS letter a direction mostly points to: +x L, -x R, +y P, -y A, +z S, -z I.
-char lpsLetter(glm::dvec3 direction) {
-  const glm::dvec3 a = glm::abs(direction);
-  const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-  static const char positive[] = "LPS", negative[] = "RAI";
-  return direction[axis] >= 0 ? positive[axis] : negative[axis];
-}
 
 LoadedDataset loadInBackground(const std::string& path, JobControl& control) {
   ReadOptions read;
@@ -59,7 +52,6 @@ void App::pollBackgroundJobs() {
     try {
       const double seconds = load_.seconds();
       replaceDataset(load_.take());
-      addRecentFile(state_.recentFiles, loadPath_);
       char took[32];
       std::snprintf(took, sizeof took, " (%.2f s)", seconds);
       message_ = "opened " + loadPath_ + took;
@@ -97,9 +89,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   requestTimes_.clear();
   latency_.restart();
   data_ = std::move(dataset);
-  state_.dataset = data_.name;
-  state_.view.zoom = 1;
-  state_.view.panPx = glm::dvec2(0.0);
+  commit(DatasetOpened{data_.name});
   histogram_.clear();
   huRange_.reset();
   renderer_ = std::make_unique<ProgressiveRenderer>(data_.volume, ProgressiveCallbacks{{}, wakeUi_});
@@ -119,9 +109,9 @@ void App::drawDataSection() {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(200);
   if (ImGui::BeginCombo("##recent", "recent files")) {
-    for (const std::string& file : state_.recentFiles)
+    for (const std::string& file : doc().recentFiles)
       if (ImGui::Selectable(file.c_str())) openDataset(file);
-    if (state_.recentFiles.empty()) ImGui::TextDisabled("(none yet)");
+    if (doc().recentFiles.empty()) ImGui::TextDisabled("(none yet)");
     ImGui::EndCombo();
   }
   if (load_.running()) {
@@ -172,8 +162,8 @@ nlohmann::json App::dataReport() const {
           {"hu_range", hu},
           {"loading", load_.running()},
           {"load_error", loadError_},
-          {"recent_files", state_.recentFiles},
-          {"panels_open", state_.panelsOpen},
+          {"recent_files", doc().recentFiles},
+          {"panels_open", doc().panelsOpen},
           {"session_offered", offeredSession_ ? offeredSession_->dataset : ""},
           {"series_running", seriesJob_.running()},
           {"movie_note", series_.movieNote}};

@@ -1,4 +1,4 @@
-// The side panel (data, view, transfer function, rendering) and the status bar of App.
+// The side panel of App (its sections, the TF section, the export section) and the status bar.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -8,41 +8,11 @@
 
 #include "gui/app.h"
 #include "gui/app_export.h"
+#include "gui/panel_rendering.h"
+#include "gui/panel_view.h"
 #include "render/export.h"
 
 namespace angio {
-
-namespace {
-
-
-struct NamedView {
-  const char* label;
-  double angleDeg;
-  const char* tooltip;
-};
-// About k (rendering model: theta = 0 looks along +P from the front; the viewer sits at -d).
-constexpr NamedView kNamedViews[] = {
-    {"AP", 0, "anterior view: looking from the front"},
-    {"PA", 180, "posterior view: looking from the back"},
-    {"L lat", 90, "left lateral: looking at the patient's left side"},
-    {"R lat", 270, "right lateral: looking at the patient's right side"},
-    {"LAO 45", 45, "left anterior oblique 45 deg"},
-    {"RAO 45", 315, "right anterior oblique 45 deg"},
-};
-
-struct NamedWindow {
-  const char* label;
-  double window, level;
-};
-constexpr NamedWindow kMipWindows[] = {{"CTA", 800, 300}, {"bone", 1500, 500}, {"soft tissue", 400, 40}};
-
-void helpMarker(const char* text) {
-  ImGui::SameLine();
-  ImGui::TextDisabled("(?)");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
-
-}  // namespace
 
 void App::drawSidePanel() {
   const ImGuiIO& io = ImGui::GetIO();
@@ -50,63 +20,31 @@ void App::drawSidePanel() {
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
   ImGui::Begin("##panel", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
   drawDataSection();
-  drawViewSection();
+  if (sectionHeader("View")) commit(drawViewPanel(doc().view));
   drawTfSection();
   drawVesselSection();
   drawCprSection();
-  drawRenderingSection();
+  if (sectionHeader("Rendering")) commit(drawRenderingPanel(doc()));
   drawExportSection();
   drawSeriesExport();  // part of the Export section
   drawSessionSection();
   ImGui::End();
 }
 
-void App::drawViewSection() {
-  if (!sectionHeader("View")) return;
-  ViewState& view = state_.view;
-  ImGui::TextUnformatted("axis");
-  for (Axis axis : {Axis::i, Axis::j, Axis::k}) {
-    ImGui::SameLine();
-    if (ImGui::RadioButton(toString(axis), view.axis == axis)) view.axis = axis;
-  }
-  helpMarker("Rotation axis: k = the patient's long axis (default), i = left-right, j = front-back.");
-  float angle = float(view.angleDeg);
-  ImGui::SetNextItemWidth(-80);
-  if (ImGui::SliderFloat("angle", &angle, 0, 360, "%.1f deg")) view.angleDeg = wrapDegrees(angle);
-  helpMarker("Left-drag on the image turns the patient with the mouse; arrow keys +-1 deg (shift: 10).");
-  for (std::size_t n = 0; n < std::size(kNamedViews); ++n) {
-    if (n % 3) ImGui::SameLine();
-    if (ImGui::Button(kNamedViews[n].label, ImVec2(90, 0))) view.angleDeg = kNamedViews[n].angleDeg;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%.0f deg)", kNamedViews[n].tooltip, kNamedViews[n].angleDeg);
-  }
-  ImGui::Checkbox("auto-spin", &view.autoSpin);
-  ImGui::SameLine();
-  float spin = float(view.spinDegreesPerSecond);
-  ImGui::SetNextItemWidth(130);
-  if (ImGui::SliderFloat("deg/s", &spin, -180, 180, "%.0f")) view.spinDegreesPerSecond = spin;
-  float perPixel = float(view.degreesPerPixel);
-  ImGui::SetNextItemWidth(130);
-  if (ImGui::SliderFloat("deg per pixel (drag)", &perPixel, 0.05f, 2.f, "%.2f")) view.degreesPerPixel = perPixel;
-  if (ImGui::Button("reset zoom/pan")) view.zoom = 1, view.panPx = glm::dvec2(0.0);
-  ImGui::SameLine();
-  ImGui::TextDisabled("zoom %.2fx (wheel), pan: right/middle drag", view.zoom);
-}
-
 void App::applyTf(const TransferFunction& tf, const std::string& preset) {
   tfHistory_.push(editedTf());
-  editedTf() = tf;
-  editedPreset() = preset;
+  commit(TfChange{vessel_.editing, tf, preset});
   tfView_.selected = tfView_.dragging = -1;
 }
 
 void App::undoTf() {
   if (tfView_.gestureBefore) return;  // not in the middle of an edit
-  if (auto previous = tfHistory_.undo(editedTf())) editedTf() = *previous, editedPreset().clear();
+  if (auto previous = tfHistory_.undo(editedTf())) commit(TfChange{vessel_.editing, *previous, ""});
 }
 
 void App::redoTf() {
   if (tfView_.gestureBefore) return;
-  if (auto next = tfHistory_.redo(editedTf())) editedTf() = *next, editedPreset().clear();
+  if (auto next = tfHistory_.redo(editedTf())) commit(TfChange{vessel_.editing, *next, ""});
 }
 
 void App::drawTfSection() {
@@ -136,10 +74,7 @@ void App::drawTfSection() {
 
   TfEdit edit = drawTfEditor(editedTf(), histogram_, tfView_);
   if (edit.committedBefore) tfHistory_.push(*edit.committedBefore);
-  if (edit.changed) {
-    editedTf() = std::move(edit.tf);
-    editedPreset().clear();
-  }
+  if (edit.changed) commit(TfChange{vessel_.editing, std::move(edit.tf), ""});
 
   ImGui::SetNextItemWidth(230);
   ImGui::InputText("##tfpath", &tfPath_);
@@ -161,36 +96,6 @@ void App::drawTfSection() {
       message_ = "saved " + tfPath_;
     } catch (const std::exception& error) {
       message_ = error.what();
-    }
-  }
-}
-
-void App::drawRenderingSection() {
-  if (!sectionHeader("Rendering")) return;
-  bool mip = state_.mode == Compositing::mip;
-  if (ImGui::Checkbox("MIP", &mip)) state_.mode = mip ? Compositing::mip : Compositing::dvr;
-  helpMarker("Maximum intensity projection through a window/level instead of the transfer function.");
-  if (mip) {
-    float window = float(state_.tf.mipWindow), level = float(state_.tf.mipLevel);
-    ImGui::SetNextItemWidth(200);
-    if (ImGui::SliderFloat("window (HU)", &window, 1, 4000, "%.0f")) state_.tf.mipWindow = window;
-    ImGui::SetNextItemWidth(200);
-    if (ImGui::SliderFloat("level (HU)", &level, -1024, 3071, "%.0f")) state_.tf.mipLevel = level;
-    for (std::size_t n = 0; n < std::size(kMipWindows); ++n) {
-      if (n) ImGui::SameLine();
-      if (ImGui::SmallButton(kMipWindows[n].label))
-        state_.tf.mipWindow = kMipWindows[n].window, state_.tf.mipLevel = kMipWindows[n].level;
-    }
-  } else {
-    ImGui::Checkbox("shading", &state_.shading.enabled);
-    if (state_.shading.enabled) {
-      float ka = float(state_.shading.ka), kd = float(state_.shading.kd);
-      ImGui::SameLine();
-      ImGui::SetNextItemWidth(90);
-      if (ImGui::SliderFloat("ka", &ka, 0, 1, "%.2f")) state_.shading.ka = ka;
-      ImGui::SameLine();
-      ImGui::SetNextItemWidth(90);
-      if (ImGui::SliderFloat("kd", &kd, 0, 1, "%.2f")) state_.shading.kd = kd;
     }
   }
 }

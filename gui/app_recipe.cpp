@@ -15,15 +15,15 @@ std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe() const {
   VesselGlyphRecipe recipe;
   std::error_code error;
   recipe.centerlines = std::filesystem::absolute(vg.file, error).lexically_normal().string();
-  recipe.settings = state_.vesselGlyph.settings;
-  recipe.focusTf = state_.vesselGlyph.focusTf;
-  recipe.contextTf = state_.vesselGlyph.contextTf;
-  if (state_.vesselGlyph.outsideRendered) recipe.outsideTf = state_.tf;  // what vesselRegions renders it with
+  recipe.settings = doc().vesselGlyph.settings;
+  recipe.focusTf = doc().vesselGlyph.focusTf;
+  recipe.contextTf = doc().vesselGlyph.contextTf;
+  if (doc().vesselGlyph.outsideRendered) recipe.outsideTf = doc().tf;  // what vesselRegions renders it with
   return recipe;
 }
 
 std::optional<HybridCprRecipe> App::hybridRecipe() const {
-  const SessionCpr& cpr = state_.cpr;
+  const CprState& cpr = doc().cpr;
   if (!cpr.hybrid) return std::nullopt;
   HybridCprRecipe recipe;
   recipe.path = cpr.path < 0 ? "all" : std::to_string(cpr.path);
@@ -34,7 +34,7 @@ std::optional<HybridCprRecipe> App::hybridRecipe() const {
 }
 
 RenderSidecar App::exportRecipe() const {
-  RenderSidecar recipe = exportSidecar(state_, data_.name, export_.isd);
+  RenderSidecar recipe = exportSidecar(doc(), data_.name, export_.isd);
   if (!vessel_.source) return recipe;  // plain DVR/MIP on screen
   recipe.vesselGlyph = vesselGlyphRecipe();
   if (vessel_.source->finish) recipe.hybrid = hybridRecipe();

@@ -12,7 +12,8 @@
 namespace angio {
 
 void App::drawSeriesExport() {
-  if (!state_.panelsOpen["Export"]) return;
+  const auto exportOpen = doc().panelsOpen.find("Export");
+  if (exportOpen == doc().panelsOpen.end() || !exportOpen->second) return;
   SeriesSpec& spec = series_.spec;
   ImGui::Separator();
   ImGui::TextUnformatted("Rotation series (isd above, high-quality sampling)");

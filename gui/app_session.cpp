@@ -7,38 +7,37 @@
 #include <imgui_stdlib.h>
 
 #include "gui/app.h"
-#include "io/session_file.h"
+#include "gui/session_file.h"
 
 namespace angio {
 
 namespace fs = std::filesystem;
 
 void App::startSession() {
-  panelsToApply_ = state_.panelsOpen;
+  panelsToApply_ = doc().panelsOpen;
   const fs::path last = lastSessionPath();
   std::error_code error;
   if (!fs::exists(last, error)) return;
   try {
-    Session session = loadSession(last);
-    state_.recentFiles = session.recentFiles;
+    Document session = loadSession(last);
+    commit(RecentFilesEdit{session.recentFiles});
     // Offered only when started without a volume (on the phantom) and it names something else.
-    if (isPhantomName(state_.dataset) && session.dataset != state_.dataset) offeredSession_ = std::move(session);
+    if (isPhantomName(doc().dataset) && session.dataset != doc().dataset) offeredSession_ = std::move(session);
   } catch (const std::exception& problem) {
     message_ = problem.what();
   }
 }
 
-Session App::session() const {
-  Session session = state_;
+Document App::session() const {
+  Document session = doc();
   session.dataset = absoluteDataset(session.dataset);
   return session;
 }
 
-void App::applySession(const Session& session) {
+void App::applySession(const Document& session) {
   tfHistory_.push(editedTf());
-  applySessionState(state_, session);  // the dataset changes when its load succeeds
-  loadSessionCenterlines();            // checked against the session's dataset once that is there
-  if (state_.cpr.hybrid) state_.vesselGlyph.enabled = true;  // the hybrid is VesselGlyph's (its focus is the cut)
+  commit(SessionEdit{session});  // the dataset changes when its load succeeds
+  loadSessionCenterlines();      // checked against the session's dataset once that is there
   panelsToApply_ = session.panelsOpen;
   if (session.dataset == data_.name || session.dataset.empty()) return;
   if (isPhantomName(session.dataset))
@@ -53,7 +52,7 @@ bool App::sectionHeader(const char* title) {
     panelsToApply_.erase(pending);
   }
   const bool open = ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen);
-  state_.panelsOpen[title] = open;
+  commit(PanelOpenEdit{title, open});
   return open;
 }
 

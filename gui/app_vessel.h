@@ -1,8 +1,8 @@
 #pragma once
-// The VesselGlyph panel's runtime state (issue 5 item 7; thesis ch. 5): the loaded centerlines and
-// what the progressive renderer got from them (core's RegionSource, made anew whenever any of it
-// changes). What the user set (centerline file, shapes, focus / context TFs) is the session's
-// SessionVesselGlyph, App's state_.vesselGlyph. Drawn by gui/app_vessel.cpp.
+// The VesselGlyph panel's runtime state (thesis ch. 5): the loaded centerlines and what the
+// progressive renderer got from them (core's RegionSource, made anew whenever any of it changes).
+// What the user set (centerline file, shapes, focus / context TFs) is the document's
+// VesselGlyphState. Drawn by gui/panel_vessel_glyph.cpp, run by gui/app_vessel.cpp.
 #include <array>
 #include <memory>
 #include <mutex>
@@ -13,14 +13,13 @@
 #include "core/transfer_function.h"
 #include "core/view_geometry.h"
 #include "gui/background_job.h"
+#include "gui/document.h"
+#include "gui/panel_vessel_glyph.h"
 #include "gui/tf_editor.h"
 #include "vessel/centerline.h"
 #include "vessel/vessel_glyph.h"
 
 namespace angio {
-
-// Which TF the TF editor edits.
-enum class TfTarget { main = 0, focus = 1, context = 2 };
 
 // RayRegionBuilder is not re-entrant: the renderer's worker and anyone else building regions from
 // the same builder take turns.
@@ -45,7 +44,7 @@ struct LoadedCenterlines {
 };
 
 struct VesselGlyphPanel {
-  std::string path = "centerlines.csv";  // the "Load centerlines..." field
+  VesselGlyphPanelUi ui;                 // the "Load centerlines..." field
   TfTarget editing = TfTarget::main;
   std::array<TfHistory, 3> histories;    // undo stacks of the targets not being edited
 
