@@ -26,6 +26,9 @@
 #include "render/series_export.h"
 #include "gui/app_cpr.h"
 #include "gui/app_vessel.h"
+#include "gui/panel_export.h"
+#include "gui/panel_session.h"
+#include "gui/panel_tf.h"
 #include "gui/panel_widgets.h"
 #include "gui/session_file.h"
 #include "gui/tf_editor.h"
@@ -91,8 +94,8 @@ class App {
   // State and runtime numbers for --state-out and the tests.
   nlohmann::json report() const;
 
-  // Data and session (gui/app_data.cpp, gui/app_session.cpp): loads in the background and
-  // replaces the dataset on success (drag-and-drop, the file browser, recent files, scripts).
+  // Loads in the background and replaces the dataset on success (drag-and-drop, the file
+  // browser, recent files, scripts).
   void openDataset(const std::string& path);
   Document session() const;  // what the window saves as the last session when it quits
 
@@ -101,38 +104,59 @@ class App {
   static constexpr float kPanelWidth = 430;   // the side panel on the right (screen pixels)
   static constexpr float kStatusHeight = 28;  // the status bar at the bottom
 
-  void pollHistogram();
-  void pollRenderer();
-  void requestRender(bool interactive);
+  // The frame (gui/app.cpp): the document's one way to change, keys, the viewport window.
   const Document& doc() const { return workstation_.document(); }
-  // Every change of the document goes through here (to workstation_.apply).
-  void commit(const Edit& edit);
+  void commit(const Edit& edit);  // to workstation_.apply: every change of the document
   template <class PanelEdit>
   void commit(const std::optional<PanelEdit>& edit) {
     if (edit) commit(Edit{*edit});
   }
+  void pollJobs();
+  void pollHistogram();
   void handleKeys();
   void drawViewportWindow();
+  ViewportOverlay viewportOverlay() const;
+  // The render-request path (gui/app_render_request.cpp): reads the document, never writes it.
+  void pollRenderer();
+  void requestRender(bool interactive);
+  std::shared_ptr<const RegionSource> vesselRegions();
+  // The DVR+CPR hybrid's finish step the renderer runs on each VesselGlyph image when it is on.
+  std::function<void(const ViewGeometry&, const RayRegions&, Image&)> hybridFinishStep();
+  // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it.
+  std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
+  std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
+  RenderSidecar exportRecipe() const;  // of what the last request rendered
+  Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
+  // The side panel and status bar (gui/app_panels.cpp): the sections are gui/panel_*.h; these
+  // give them what they show and act on what they return.
   void drawSidePanel();
+  bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
+  void noteRect(const std::string& name);  // the last widget's rectangle, for report()
   void drawStatusBar();
-  void drawDataSection();
   void drawTfSection();
   void drawExportSection();
-  void drawSeriesExport();   // gui/app_series.cpp
-  void drawSessionSection(); // gui/app_session.cpp
-  void drawSessionBanner();
-  void startSession();       // panel states to apply, recent files, the last session offered
-  void pollBackgroundJobs(); // data load, series export
+  void pollExport();
+  void drawSeriesExport();  // gui/app_series.cpp
+  // TF editing: the editor's target (main, focus or context), its undo stack.
+  const TransferFunction& editedTf() const;
+  const std::string& editedPreset() const;
+  void applyTf(const TransferFunction& tf, const std::string& preset);  // one undo step
+  void undoTf();
+  void redoTf();
+  void saveEditedTf();
+  void switchTfTarget(TfTarget target);  // gui/app_vessel.cpp
+  // Datasets (gui/app_data.cpp).
+  void drawDataSection();
+  void pollBackgroundJobs();  // data load, centerline load, series export
   bool backgroundBusy() const;
   void replaceDataset(LoadedDataset dataset);
+  // Sessions (gui/app_session.cpp).
+  void startSession();  // panel states to apply, recent files, the last session offered
   void applySession(const Document& session);
-  bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
-  nlohmann::json dataReport() const;
-  void pollExport();
-  void noteRect(const std::string& name);  // the last widget's rectangle, for report()
-  // VesselGlyph (gui/app_vessel.cpp).
+  void drawSessionSection();
+  void drawSessionBanner();
+  // VesselGlyph (gui/app_vessel.cpp): centerlines loaded in the background, the overlay.
   void drawVesselSection();
-  void drawTfTargetSelector();
   void drawCenterlineOverlay();
   void loadVesselCenterlines(const CenterlineLoad& request);  // in the background
   void loadSessionCenterlines();  // the document's centerline file (none: the loaded ones go)
@@ -140,8 +164,6 @@ class App {
   void dropCenterlines();
   const Centerlines* framedCenterlines();
   void loadMissingRegionTfs();  // a focus or context TF with no points: its preset
-  std::shared_ptr<const RegionSource> vesselRegions();
-  nlohmann::json vesselReport() const;
   ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();
@@ -149,21 +171,11 @@ class App {
   void updateCpr();
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
+  // The state report's parts (gui/app_report.cpp).
+  nlohmann::json dataReport() const;
+  nlohmann::json vesselReport() const;
   nlohmann::json cprReport() const;
-  // DVR+CPR hybrid (gui/app_hybrid.cpp): the finish step the progressive renderer runs on each
-  // VesselGlyph image when it is on.
-  std::function<void(const ViewGeometry&, const RayRegions&, Image&)> hybridFinishStep();
   nlohmann::json hybridReport() const;
-  // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it.
-  std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
-  std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
-  RenderSidecar exportRecipe() const;  // of what the last request rendered
-  Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
-  const TransferFunction& editedTf() const;  // the TF the TF editor edits: main, focus or context
-  const std::string& editedPreset() const;
-  void applyTf(const TransferFunction& tf, const std::string& preset);
-  void undoTf();
-  void redoTf();
 
   LoadedDataset data_;  // before renderer_: the worker reads data_.volume
   Workstation workstation_;
@@ -189,10 +201,9 @@ class App {
   ProgressiveStatus status_;  // this frame's snapshot
 
   // Panels.
-  TfEditorView tfView_;
+  TfPanelUi tfPanel_;
   TfHistory tfHistory_;
   std::vector<Preset> presets_;
-  std::string tfPath_ = "transfer-function.json";
   std::string message_;  // the last error or notice, shown in the status bar
   std::future<DensityHistogram> histogramJob_;
   std::vector<float> histogram_;  // log counts per density, empty until counted
@@ -202,8 +213,7 @@ class App {
   bool quit_ = false;
 
   struct ExportPanel {
-    std::string path = "angioray-export.png";
-    double isd = 0.5;
+    ExportPanelUi ui;
     std::future<std::string> job;
     std::shared_ptr<std::atomic<bool>> cancel;
     Clock::time_point started;
@@ -215,7 +225,7 @@ class App {
   BackgroundJob<LoadedDataset> load_;
   std::string loadPath_, loadError_;
   std::optional<Document> offeredSession_;  // "Restore last session" banner
-  std::string sessionPath_ = "session.json";
+  SessionPanelUi sessionPanel_;
   std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame
   SeriesPanel series_;
   BackgroundJob<SeriesResult> seriesJob_;

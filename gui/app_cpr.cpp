@@ -205,27 +205,4 @@ void App::drawCprView() {
   ImGui::End();
 }
 
-nlohmann::json App::cprReport() const {
-  const CprViewPanel& panel = cprView_;
-  nlohmann::json hovered = nullptr;
-  if (panel.hovered) {
-    hovered = {{"arc_mm", panel.hovered->arcMm}, {"hu", panel.hovered->hu}, {"path", panel.hovered->path}};
-    if (panel.markedOnDvr) hovered["dvr_screen"] = {panel.markedOnDvr->x, panel.markedOnDvr->y};
-  }
-  nlohmann::json cursor = nullptr;
-  if (panel.cursor) {
-    cursor = {{"path", panel.cursor->path}, {"arc_mm", panel.cursor->arcMm}};
-    if (panel.cursorPixel) cursor["cpr_pixel"] = {panel.cursorPixel->x, panel.cursorPixel->y};
-  }
-  return {{"shown", cprViewWidth() > 0},
-          {"cursor", cursor},
-          {"mode", toString(doc().cpr.mode)},
-          {"path", doc().cpr.path},
-          {"width", panel.cpr ? panel.cpr->layout.width : 0},
-          {"height", panel.cpr ? panel.cpr->layout.height : 0},
-          {"pixel_mm", panel.cpr ? panel.cpr->layout.pixelMm : 0.0},
-          {"error", panel.error},
-          {"hovered", hovered}};
-}
-
 }  // namespace angio

@@ -8,7 +8,10 @@
 
 #include "gui/app.h"
 #include "gui/app_export.h"
+#include "gui/panel_export.h"
 #include "gui/panel_rendering.h"
+#include "gui/panel_status.h"
+#include "gui/panel_tf.h"
 #include "gui/panel_view.h"
 #include "render/export.h"
 
@@ -34,100 +37,63 @@ void App::drawSidePanel() {
 void App::applyTf(const TransferFunction& tf, const std::string& preset) {
   tfHistory_.push(editedTf());
   commit(TfChange{vessel_.editing, tf, preset});
-  tfView_.selected = tfView_.dragging = -1;
+  tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
 }
 
 void App::undoTf() {
-  if (tfView_.gestureBefore) return;  // not in the middle of an edit
+  if (tfPanel_.editor.gestureBefore) return;  // not in the middle of an edit
   if (auto previous = tfHistory_.undo(editedTf())) commit(TfChange{vessel_.editing, *previous, ""});
 }
 
 void App::redoTf() {
-  if (tfView_.gestureBefore) return;
+  if (tfPanel_.editor.gestureBefore) return;
   if (auto next = tfHistory_.redo(editedTf())) commit(TfChange{vessel_.editing, *next, ""});
 }
 
 void App::drawTfSection() {
   if (!sectionHeader("Transfer function")) return;
-  drawTfTargetSelector();
-  const std::string current = editedPreset().empty() ? editedTf().name + " (edited)" : editedPreset();
-  ImGui::SetNextItemWidth(220);
-  if (ImGui::BeginCombo("preset", current.c_str())) {
-    for (const Preset& preset : presets_) {
-      if (!ImGui::Selectable(preset.id.c_str(), preset.id == editedPreset())) continue;
-      try {
-        applyTf(loadPresetOrFile(preset.file.string()), preset.id);
-      } catch (const std::exception& error) {
-        message_ = error.what();
-      }
-    }
-    ImGui::EndCombo();
-  }
-  ImGui::SameLine();
-  ImGui::BeginDisabled(!tfHistory_.canUndo());
-  if (ImGui::SmallButton("undo")) undoTf();
-  ImGui::EndDisabled();
-  ImGui::SameLine();
-  ImGui::BeginDisabled(!tfHistory_.canRedo());
-  if (ImGui::SmallButton("redo")) redoTf();
-  ImGui::EndDisabled();
+  TfPanelInfo info;
+  info.editing = vessel_.editing;
+  info.targetsShown = vessel_.physical || vessel_.editing != TfTarget::main;
+  info.canUndo = tfHistory_.canUndo();
+  info.canRedo = tfHistory_.canRedo();
+  info.histogram = &histogram_;
+  info.presets = &presets_;
+  TfPanelRequests requests = drawTfPanel(doc(), tfPanel_, info, widgetRects_);
+  if (!requests.message.empty()) message_ = requests.message;
+  if (requests.replace) applyTf(requests.replace->tf, requests.replace->preset);
+  if (requests.undo) undoTf();
+  if (requests.redo) redoTf();
+  if (requests.committedBefore) tfHistory_.push(*requests.committedBefore);
+  if (requests.edit) commit(*requests.edit);
+  if (requests.save) saveEditedTf();
+  if (requests.switchTo) switchTfTarget(*requests.switchTo);  // last: the requests above are the old target's
+}
 
-  TfEdit edit = drawTfEditor(editedTf(), histogram_, tfView_);
-  if (edit.committedBefore) tfHistory_.push(*edit.committedBefore);
-  if (edit.changed) commit(TfChange{vessel_.editing, std::move(edit.tf), ""});
-
-  ImGui::SetNextItemWidth(230);
-  ImGui::InputText("##tfpath", &tfPath_);
-  noteRect("tf_path");
-  ImGui::SameLine();
-  if (ImGui::Button("load")) {
-    try {
-      applyTf(loadTransferFunction(tfPath_), "");
-      message_ = "loaded " + tfPath_;
-    } catch (const std::exception& error) {
-      message_ = error.what();
-    }
-  }
-  noteRect("tf_load");
-  ImGui::SameLine();
-  if (ImGui::Button("save")) {
-    try {
-      saveTransferFunction(editedTf(), tfPath_);
-      message_ = "saved " + tfPath_;
-    } catch (const std::exception& error) {
-      message_ = error.what();
-    }
+void App::saveEditedTf() {
+  try {
+    saveTransferFunction(editedTf(), tfPanel_.path);
+    message_ = "saved " + tfPanel_.path;
+  } catch (const std::exception& error) {
+    message_ = error.what();
   }
 }
 
 void App::drawExportSection() {
   if (!sectionHeader("Export")) return;
-  ImGui::SetNextItemWidth(260);
-  ImGui::InputText("file##export", &export_.path);
-  noteRect("export_path");
-  helpMarker("Format by extension: .png (8-bit), .tif (16-bit), .exr (float RGBA). A JSON sidecar "
-             "(FILE.json) records every parameter.");
-  const double isdMin = 0.1, isdMax = 5;
-  ImGui::SetNextItemWidth(120);
-  ImGui::SliderScalar("isd", ImGuiDataType_Double, &export_.isd, &isdMin, &isdMax, "%.2f");
-  helpMarker("Image sampling distance in voxel units: 0.5 = the high level, 0.25 for print.");
-  if (export_.job.valid()) {
-    const double seconds = std::chrono::duration<double>(Clock::now() - export_.started).count();
-    ImGui::Text("rendering ... %.0f s", seconds);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("cancel##export")) export_.cancel->store(true);
-    return;
-  }
-  if (ImGui::Button("Export image")) {
-    export_.cancel = std::make_shared<std::atomic<bool>>(false);
-    export_.started = Clock::now();
-    export_.job = std::async(std::launch::async, [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
-                                                  path = export_.path, cancel = export_.cancel] {
-      return exportView(data_.volume, centerlines, recipe, path, cancel.get());
-    });
-    message_ = "exporting " + export_.path;
-  }
-  noteRect("export_button");
+  JobInfo job;
+  job.running = export_.job.valid();
+  job.seconds = std::chrono::duration<double>(Clock::now() - export_.started).count();
+  const ExportRequests requests = drawImageExport(export_.ui, job, widgetRects_);
+  if (requests.cancel) export_.cancel->store(true);
+  if (!requests.start) return;
+  export_.cancel = std::make_shared<std::atomic<bool>>(false);
+  export_.started = Clock::now();
+  export_.job = std::async(std::launch::async, [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
+                                                path = export_.ui.path, cancel = export_.cancel] {
+    return exportView(data_.volume, centerlines, recipe, path, cancel.get());
+  });
+  message_ = "exporting " + export_.ui.path;
 }
 
 void App::pollExport() {
@@ -143,43 +109,12 @@ void App::pollExport() {
 }
 
 void App::drawStatusBar() {
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - kStatusHeight));
-  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kStatusHeight));
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 5));
-  ImGui::Begin("##status", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
-  ImGui::PopStyleVar();
-  if (shown_) {
-    ImGui::Text("shown: %s", toString(shown_->level));
-  } else {
-    ImGui::TextUnformatted("shown: -");
-  }
-  for (int q = 0; q < kQualityLevels; ++q) {
-    ImGui::SameLine(0, 14);
-    const LevelTiming& t = status_.levels[q];
-    if (t.done) ImGui::Text("%s %.0f ms", toString(Quality(q)), t.ms);
-    else ImGui::TextDisabled("%s -", toString(Quality(q)));
-  }
-  ImGui::SameLine(0, 14);
-  if (status_.rendering) {
-    char label[48];
-    std::snprintf(label, sizeof label, "%s %.0f ms", toString(*status_.rendering), status_.renderingMs);
-    ImGui::ProgressBar(float(status_.estimatedProgress()), ImVec2(150, 0), label);
-  } else {
-    ImGui::ProgressBar(status_.busy ? 0.f : 1.f, ImVec2(150, 0), status_.busy ? "preparing" : "done");
-  }
-  double samplesPerSecond = 0;
-  for (const LevelTiming& t : status_.levels)
-    if (t.done) samplesPerSecond = t.samplesPerSecond();
-  ImGui::SameLine(0, 14);
-  ImGui::Text("%.0f Msamples/s", samplesPerSecond * 1e-6);
-  ImGui::SameLine(0, 14);
-  ImGui::Text("UI %.1f ms", lastFrameMs_);
-  if (!message_.empty() || !status_.error.empty()) {
-    ImGui::SameLine(0, 14);
-    ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "%s", status_.error.empty() ? message_.c_str() : status_.error.c_str());
-  }
-  ImGui::End();
+  StatusInfo info;
+  if (shown_) info.shownLevel = shown_->level;
+  info.status = status_;
+  info.uiFrameMs = lastFrameMs_;
+  info.message = message_;
+  angio::drawStatusBar(info, kStatusHeight);
 }
 
 }  // namespace angio

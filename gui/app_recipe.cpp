@@ -34,7 +34,7 @@ std::optional<HybridCprRecipe> App::hybridRecipe() const {
 }
 
 RenderSidecar App::exportRecipe() const {
-  RenderSidecar recipe = exportSidecar(doc(), data_.name, export_.isd);
+  RenderSidecar recipe = exportSidecar(doc(), data_.name, export_.ui.isd);
   if (!vessel_.source) return recipe;  // plain DVR/MIP on screen
   recipe.vesselGlyph = vesselGlyphRecipe();
   if (vessel_.source->finish) recipe.hybrid = hybridRecipe();

@@ -1,12 +1,12 @@
-// Sessions in the app: the Session section (save/load), the "Restore last session" banner, the
-// side-panel sections whose open state a session keeps.
+// Sessions in the app: the Session section's save and load and the "Restore last session" banner
+// (gui/panel_session.h), the side-panel sections whose open state a session keeps.
 #include <exception>
 #include <filesystem>
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include "gui/app.h"
+#include "gui/panel_session.h"
 #include "gui/session_file.h"
 
 namespace angio {
@@ -58,50 +58,27 @@ bool App::sectionHeader(const char* title) {
 
 void App::drawSessionSection() {
   if (!sectionHeader("Session")) return;
-  ImGui::SetNextItemWidth(190);
-  ImGui::InputText("##sessionpath", &sessionPath_);
-  noteRect("session_path");
-  ImGui::SameLine();
-  if (ImGui::Button("Save session")) {
-    try {
-      saveSession(session(), sessionPath_);
-      message_ = "saved session " + sessionPath_;
-    } catch (const std::exception& error) {
-      message_ = error.what();
+  const SessionPanelRequests requests = drawSessionPanel(sessionPanel_, widgetRects_);
+  const std::string& path = sessionPanel_.path;
+  try {
+    if (requests.save) {
+      saveSession(session(), path);
+      message_ = "saved session " + path;
     }
-  }
-  noteRect("session_save");
-  ImGui::SameLine();
-  if (ImGui::Button("Load session")) {
-    try {
-      applySession(loadSession(sessionPath_));
-      message_ = "loaded session " + sessionPath_;
-    } catch (const std::exception& error) {
-      message_ = error.what();
+    if (requests.load) {
+      applySession(loadSession(path));
+      message_ = "loaded session " + path;
     }
+  } catch (const std::exception& error) {
+    message_ = error.what();
   }
-  noteRect("session_load");
 }
 
-// A small window over the top of the image: "Restore last session: <dataset> [Restore] [Dismiss]".
 void App::drawSessionBanner() {
   if (!offeredSession_) return;
-  ImGui::SetNextWindowPos(ImVec2(12, 12));
-  ImGui::SetNextWindowBgAlpha(0.9f);
-  ImGui::Begin("##lastsession", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();  // above the viewport, drawn after it
-  ImGui::Text("Restore last session: %s", offeredSession_->dataset.c_str());
-  ImGui::SameLine();
-  const bool restore = ImGui::Button("Restore");
-  noteRect("session_restore");
-  ImGui::SameLine();
-  const bool dismiss = ImGui::Button("Dismiss");
-  noteRect("session_dismiss");
-  ImGui::End();
-  if (restore) applySession(*offeredSession_);
-  if (restore || dismiss) offeredSession_.reset();
+  const BannerChoice choice = angio::drawSessionBanner(offeredSession_->dataset, widgetRects_);
+  if (choice == BannerChoice::restore) applySession(*offeredSession_);
+  if (choice != BannerChoice::none) offeredSession_.reset();
 }
 
 }  // namespace angio

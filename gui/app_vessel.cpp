@@ -22,16 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kTargetNames[] = {"main", "focus", "context"};
-
-// What the hybrid's finish step depends on beyond the regions and the focus TF ("" = off).
-std::string hybridSettingsKey(const CprState& cpr) {
-  if (!cpr.hybrid) return "";
-  char key[96];
-  std::snprintf(key, sizeof key, "%d %d %.17g", cpr.path, int(cpr.colouring), cpr.transitionMm);
-  return key;
-}
-
 }  // namespace
 
 glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm) {
@@ -155,25 +145,14 @@ void App::loadMissingRegionTfs() {
   }
 }
 
-// "TF editor edits: main | focus | context": each target keeps its own undo stack.
-void App::drawTfTargetSelector() {
-  if (!vessel_.physical && vessel_.editing == TfTarget::main) return;
-  ImGui::TextUnformatted("TF editor edits:");
-  for (int n = 0; n < 3; ++n) {
-    ImGui::SameLine();
-    const TfTarget target = TfTarget(n);
-    char label[32];
-    std::snprintf(label, sizeof label, "%s##tftarget", kTargetNames[n]);
-    if (ImGui::RadioButton(label, vessel_.editing == target) && vessel_.editing != target &&
-        !tfView_.gestureBefore) {
-      loadMissingRegionTfs();
-      vessel_.histories[int(vessel_.editing)] = tfHistory_;
-      tfHistory_ = vessel_.histories[n];
-      vessel_.editing = target;
-      tfView_.selected = tfView_.dragging = -1;
-    }
-    noteRect(std::string("vg_edit_") + kTargetNames[n]);
-  }
+// Each target keeps its own undo stack; not in the middle of an edit gesture.
+void App::switchTfTarget(TfTarget target) {
+  if (tfPanel_.editor.gestureBefore) return;
+  loadMissingRegionTfs();
+  vessel_.histories[int(vessel_.editing)] = tfHistory_;
+  tfHistory_ = vessel_.histories[int(target)];
+  vessel_.editing = target;
+  tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
 }
 
 void App::drawVesselSection() {
@@ -193,51 +172,6 @@ void App::drawVesselSection() {
   if (!result.message.empty()) message_ = result.message;
   if (result.edit) commit(*result.edit);
   if (result.loadCenterlines) loadVesselCenterlines({vg.ui.path, "", CenterlineLoad::From::panel});
-}
-
-// The request's regions: null for plain DVR (VesselGlyph off, nothing loaded, or a problem);
-// a new source whenever the shape, a region TF or the outside TF changed, else the last one.
-std::shared_ptr<const RegionSource> App::vesselRegions() {
-  VesselGlyphPanel& vg = vessel_;
-  const VesselGlyphState& set = doc().vesselGlyph;
-  vg.problem.clear();
-  if (!set.enabled || !vg.physical) return vg.source = nullptr;
-  bool changed = !vg.source;
-  try {
-    const Centerlines* centerlines = framedCenterlines();
-    if (!vg.builder || vg.builder->builder.settings() != set.settings) {
-      vg.builder = std::make_shared<GuardedRegionBuilder>(*centerlines, set.settings);
-      changed = true;
-    }
-  } catch (const std::exception& error) {
-    vg.problem = error.what();
-    return vg.source = nullptr;
-  }
-  const auto refresh = [&](std::shared_ptr<const TfTable>& table, TransferFunction& builtFrom,
-                           const TransferFunction& tf) {
-    if (table && builtFrom == tf) return;
-    table = std::make_shared<const TfTable>(buildTable(tf));
-    builtFrom = tf;
-    changed = true;
-  };
-  refresh(vg.focusTable, vg.focusTableTf, set.focusTf);
-  refresh(vg.contextTable, vg.contextTableTf, set.contextTf);
-  const std::shared_ptr<const TfTable> outside = set.outsideRendered ? table_ : nullptr;
-  if (outside != vg.outsideTable) vg.outsideTable = outside, changed = true;
-  const std::string hybrid = hybridSettingsKey(doc().cpr);
-  if (hybrid != vg.hybridFor) vg.hybridFor = hybrid, changed = true;
-  if (!changed) return vg.source;
-
-  auto source = std::make_shared<RegionSource>();
-  source->build = [builder = vg.builder](const ViewGeometry& view, RayRegions& out) {
-    std::lock_guard lock(builder->mutex);
-    builder->builder.build(view, out);
-  };
-  source->focus = vg.focusTable;
-  source->context = vg.contextTable;
-  source->outside = vg.outsideTable;
-  source->finish = hybridFinishStep();  // the DVR+CPR hybrid, if on (gui/app_hybrid.cpp)
-  return vg.source = std::move(source);
 }
 
 // The centerlines projected with the shown frame's view, over the image (follows zoom and pan).
@@ -261,28 +195,6 @@ void App::drawCenterlineOverlay() {
       draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 200), ImDrawFlags_None, 1.5f);
   }
   draw->PopClipRect();
-}
-
-nlohmann::json App::vesselReport() const {
-  const VesselGlyphPanel& vg = vessel_;
-  const VesselGlyphState& set = doc().vesselGlyph;
-  return {{"enabled", set.enabled},
-          {"rendering", vg.source != nullptr},
-          {"overlay", set.overlay},
-          {"centerlines", vg.file},
-          {"paths", vg.physical ? vg.physical->paths.size() : 0},
-          {"focus", focusSpecText(set.settings.focus)},
-          {"context", contextSpecText(set.settings)},
-          {"outside", set.outsideRendered ? "main-tf" : "clip"},
-          {"cleft", set.settings.cleft},
-          {"half_vessel", set.settings.halfVessel},
-          {"focus_tf", set.focusPreset.empty() ? set.focusTf.name : set.focusPreset},
-          {"context_tf", set.contextPreset.empty() ? set.contextTf.name : set.contextPreset},
-          {"tf_editing", kTargetNames[int(vg.editing)]},
-          {"error", vg.error},
-          {"problem", vg.problem},
-          {"cpr", cprReport()},
-          {"hybrid", hybridReport()}};
 }
 
 }  // namespace angio

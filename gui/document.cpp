@@ -6,6 +6,16 @@
 
 namespace angio {
 
+const char* cprColouringName(CprColouring colouring) {
+  constexpr const char* kNames[] = {"cta-lumen", "calcium", "focus-tf"};
+  return kNames[int(colouring)];
+}
+
+const char* tfTargetName(TfTarget target) {
+  constexpr const char* kNames[] = {"main", "focus", "context"};
+  return kNames[int(target)];
+}
+
 const TransferFunction& tfOf(const Document& document, TfTarget target) {
   switch (target) {
     case TfTarget::focus: return document.vesselGlyph.focusTf;

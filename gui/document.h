@@ -39,6 +39,9 @@ struct ViewState {
 // (vessel/cpr_display.h), or through the VesselGlyph focus TF.
 enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
 
+// "cta-lumen", "calcium", "focus-tf" (session files and the state report).
+const char* cprColouringName(CprColouring colouring);
+
 // The CPR section: the view beside the image and the DVR+CPR hybrid in the image share the path
 // and the colouring. (The VesselGlyph settings the hybrid builds on are VesselGlyphState's.)
 struct CprState {
@@ -85,6 +88,7 @@ struct Document {
 // Which TF the TF editor edits.
 enum class TfTarget { main = 0, focus = 1, context = 2 };
 
+const char* tfTargetName(TfTarget target);  // "main", "focus", "context"
 const TransferFunction& tfOf(const Document& document, TfTarget target);
 const std::string& presetOf(const Document& document, TfTarget target);
 

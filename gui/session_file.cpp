@@ -24,12 +24,11 @@ namespace {
 constexpr const char* kFormat = "angioray-session";
 constexpr int kVersion = 1;
 
-constexpr const char* kColourings[] = {"cta-lumen", "calcium", "focus-tf"};
 constexpr double kMaxTransitionMm = 100;
 
 Json cprJson(const CprState& cpr) {
   return {{"shown", cpr.shown}, {"mode", toString(cpr.mode)}, {"path", cpr.path},
-          {"colouring", kColourings[int(cpr.colouring)]}, {"hybrid", cpr.hybrid},
+          {"colouring", cprColouringName(cpr.colouring)}, {"hybrid", cpr.hybrid},
           {"transition_mm", cpr.transitionMm}};
 }
 
@@ -55,6 +54,7 @@ Json samplingJson(const Sampling& sampling) {
 struct SessionReader {
   const fs::path& source;
   std::string where = "";  // the keys' section in messages, e.g. "vessel_glyph.focus."
+  Json empty = Json::object();  // a missing section reads as this
 
   [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, problem); }
   SessionReader in(const char* key) const { return {source, where + key + "."}; }
@@ -79,7 +79,6 @@ struct SessionReader {
     return object[key].get<std::string>();
   }
   const Json& section(const Json& object, const char* key) const {
-    static const Json empty = Json::object();
     if (!object.contains(key)) return empty;
     if (!object[key].is_object()) fail(where + key + " is not an object");
     return object[key];
@@ -198,9 +197,11 @@ struct SessionReader {
     cpr.path = int(number(c, "path", -1, 1e6, cpr.path));
     if (c.contains("colouring")) {
       const std::string colouring = text(c, "colouring");
-      const auto known = std::find(std::begin(kColourings), std::end(kColourings), colouring);
-      if (known == std::end(kColourings)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
-      cpr.colouring = CprColouring(known - std::begin(kColourings));
+      const CprColouring all[] = {CprColouring::ctaLumen, CprColouring::calcium, CprColouring::focusTf};
+      const auto known = std::find_if(std::begin(all), std::end(all),
+                                      [&](CprColouring c) { return colouring == cprColouringName(c); });
+      if (known == std::end(all)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
+      cpr.colouring = *known;
     }
     cpr.hybrid = flag(c, "hybrid", cpr.hybrid);
     cpr.transitionMm = number(c, "transition_mm", 0, kMaxTransitionMm, cpr.transitionMm);

@@ -5,7 +5,11 @@
 #include <imgui.h>
 
 #include "gui/panel_cpr.h"
+#include "gui/panel_data.h"
+#include "gui/panel_export.h"
 #include "gui/panel_rendering.h"
+#include "gui/panel_session.h"
+#include "gui/panel_tf.h"
 #include "gui/panel_vessel_glyph.h"
 #include "gui/panel_view.h"
 #include "gui/viewport.h"
@@ -186,6 +190,98 @@ TEST_F(GuiPanels, TheViewportZoomsWithTheWheelAndTurnsWithALeftDrag) {
   const ViewportInteraction turned = frame([&] { return drawViewport(nullptr, view, overlay); }, right, true);
   EXPECT_DOUBLE_EQ(turned.rotateDegrees, -10 * view.degreesPerPixel);  // grab: the front moves right
   EXPECT_FALSE(turned.zoomedOrPanned);
+}
+
+TEST_F(GuiPanels, TheTfSectionOffersTheRegionTfsOnlyWhenAskedAndSwitchesOnAClick) {
+  Document document;
+  TfPanelUi ui;
+  TfPanelInfo info;
+  WidgetRects rects;
+  const auto draw = [&] { return drawTfPanel(document, ui, info, rects); };
+  for (int n = 0; n < 3; ++n) {
+    const TfPanelRequests idle = frame(draw);
+    EXPECT_FALSE(idle.switchTo || idle.replace || idle.edit || idle.committedBefore);
+    EXPECT_FALSE(idle.undo || idle.redo || idle.save);
+  }
+  EXPECT_FALSE(rects.count("vg_edit_focus"));
+  info.targetsShown = true;
+  frame(draw);
+  ASSERT_TRUE(rects.count("vg_edit_focus"));
+  const TfPanelRequests clicked = click(draw, centre(rects["vg_edit_focus"]));
+  ASSERT_TRUE(clicked.switchTo);
+  EXPECT_EQ(*clicked.switchTo, TfTarget::focus);
+  EXPECT_FALSE(clicked.edit);
+}
+
+TEST_F(GuiPanels, TheTfSectionLoadsAMissingFileAsAMessageNotAnEdit) {
+  Document document;
+  TfPanelUi ui;
+  ui.path = "/nonexistent/tf.json";
+  TfPanelInfo info;
+  WidgetRects rects;
+  const auto draw = [&] { return drawTfPanel(document, ui, info, rects); };
+  frame(draw);
+  ASSERT_TRUE(rects.count("tf_load"));
+  const TfPanelRequests loaded = click(draw, centre(rects["tf_load"]));
+  EXPECT_FALSE(loaded.replace);
+  EXPECT_NE(loaded.message.find("/nonexistent/tf.json"), std::string::npos) << loaded.message;
+}
+
+TEST_F(GuiPanels, TheSessionSectionAsksToSaveOrLoad) {
+  SessionPanelUi ui;
+  WidgetRects rects;
+  const auto draw = [&] { return drawSessionPanel(ui, rects); };
+  frame(draw);
+  const SessionPanelRequests save = click(draw, centre(rects["session_save"]));
+  EXPECT_TRUE(save.save);
+  EXPECT_FALSE(save.load);
+  const SessionPanelRequests load = click(draw, centre(rects["session_load"]));
+  EXPECT_TRUE(load.load);
+  EXPECT_FALSE(load.save);
+}
+
+TEST_F(GuiPanels, TheDataSectionAsksToBrowseAndToDismissALoadError) {
+  const Document document;
+  DataPanelInfo info;
+  info.name = "phantom 8x8x8";
+  WidgetRects rects;
+  const auto draw = [&] { return drawDataPanel(document, info, rects); };
+  frame(draw);
+  EXPECT_FALSE(rects.count("data_dismiss"));
+  EXPECT_TRUE(click(draw, centre(rects["data_open"])).browse);
+  info.loadError = "broken.mha: not a volume";
+  frame(draw);
+  ASSERT_TRUE(rects.count("data_dismiss"));
+  const DataPanelRequests dismissed = click(draw, centre(rects["data_dismiss"]));
+  EXPECT_TRUE(dismissed.dismissError);
+  EXPECT_FALSE(dismissed.browse || dismissed.cancelLoad || dismissed.open);
+}
+
+TEST_F(GuiPanels, TheExportSectionStartsAJobUnlessOneIsRunning) {
+  ExportPanelUi ui;
+  SeriesPanel series;
+  JobInfo job;
+  WidgetRects rects;
+  const auto draw = [&] {
+    const ExportRequests image = drawImageExport(ui, job, rects);
+    const ExportRequests rotation = drawSeriesExport(series, job, rects);
+    return std::make_pair(image, rotation);
+  };
+  frame(draw);
+  ASSERT_TRUE(rects.count("export_button") && rects.count("series_button"));
+  const auto image = click(draw, centre(rects["export_button"]));
+  EXPECT_TRUE(image.first.start);
+  EXPECT_FALSE(image.second.start);
+  const auto rotation = click(draw, centre(rects["series_button"]));
+  EXPECT_TRUE(rotation.second.start);
+  EXPECT_FALSE(rotation.first.start);
+
+  job.running = true;
+  rects.clear();
+  frame(draw);
+  EXPECT_FALSE(rects.count("export_button"));
+  ASSERT_TRUE(rects.count("series_cancel"));
+  EXPECT_TRUE(click(draw, centre(rects["series_cancel"])).second.cancel);
 }
 
 TEST(GuiOrientation, LpsLettersNameTheDominantAxisAndATieGoesToTheEarlierAxis) {
