@@ -32,6 +32,7 @@
 #include "gui/panel_widgets.h"
 #include "gui/session_file.h"
 #include "gui/tf_editor.h"
+#include "gui/tf_targets.h"
 #include "gui/viewport.h"
 #include "gui/workstation.h"
 #include "render/render_sidecar.h"
@@ -202,7 +203,7 @@ class App {
 
   // Panels.
   TfPanelUi tfPanel_;
-  TfHistory tfHistory_;
+  TfTargets tfTargets_;
   std::vector<Preset> presets_;
   std::string message_;  // the last error or notice, shown in the status bar
   std::future<DensityHistogram> histogramJob_;

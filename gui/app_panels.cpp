@@ -1,17 +1,15 @@
-// The side panel of App (its sections, the TF section, the export section) and the status bar.
+// The side panel of App (its sections in order; the Export section's image export) and the status bar.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include "gui/app.h"
 #include "gui/app_export.h"
 #include "gui/panel_export.h"
 #include "gui/panel_rendering.h"
 #include "gui/panel_status.h"
-#include "gui/panel_tf.h"
 #include "gui/panel_view.h"
 #include "render/export.h"
 
@@ -32,51 +30,6 @@ void App::drawSidePanel() {
   drawSeriesExport();  // part of the Export section
   drawSessionSection();
   ImGui::End();
-}
-
-void App::applyTf(const TransferFunction& tf, const std::string& preset) {
-  tfHistory_.push(editedTf());
-  commit(TfChange{vessel_.editing, tf, preset});
-  tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
-}
-
-void App::undoTf() {
-  if (tfPanel_.editor.gestureBefore) return;  // not in the middle of an edit
-  if (auto previous = tfHistory_.undo(editedTf())) commit(TfChange{vessel_.editing, *previous, ""});
-}
-
-void App::redoTf() {
-  if (tfPanel_.editor.gestureBefore) return;
-  if (auto next = tfHistory_.redo(editedTf())) commit(TfChange{vessel_.editing, *next, ""});
-}
-
-void App::drawTfSection() {
-  if (!sectionHeader("Transfer function")) return;
-  TfPanelInfo info;
-  info.editing = vessel_.editing;
-  info.targetsShown = vessel_.physical || vessel_.editing != TfTarget::main;
-  info.canUndo = tfHistory_.canUndo();
-  info.canRedo = tfHistory_.canRedo();
-  info.histogram = &histogram_;
-  info.presets = &presets_;
-  TfPanelRequests requests = drawTfPanel(doc(), tfPanel_, info, widgetRects_);
-  if (!requests.message.empty()) message_ = requests.message;
-  if (requests.replace) applyTf(requests.replace->tf, requests.replace->preset);
-  if (requests.undo) undoTf();
-  if (requests.redo) redoTf();
-  if (requests.committedBefore) tfHistory_.push(*requests.committedBefore);
-  if (requests.edit) commit(*requests.edit);
-  if (requests.save) saveEditedTf();
-  if (requests.switchTo) switchTfTarget(*requests.switchTo);  // last: the requests above are the old target's
-}
-
-void App::saveEditedTf() {
-  try {
-    saveTransferFunction(editedTf(), tfPanel_.path);
-    message_ = "saved " + tfPanel_.path;
-  } catch (const std::exception& error) {
-    message_ = error.what();
-  }
 }
 
 void App::drawExportSection() {

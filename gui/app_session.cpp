@@ -35,7 +35,7 @@ Document App::session() const {
 }
 
 void App::applySession(const Document& session) {
-  tfHistory_.push(editedTf());
+  tfTargets_.history().push(editedTf());
   commit(SessionEdit{session});  // the dataset changes when its load succeeds
   loadSessionCenterlines();      // checked against the session's dataset once that is there
   panelsToApply_ = session.panelsOpen;

@@ -9,12 +9,10 @@
 #include <filesystem>
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include "core/view_geometry.h"
 #include "gui/app.h"
 #include "io/centerline_file.h"
-#include "vessel/vessel_glyph_spec.h"
 
 namespace angio {
 
@@ -129,10 +127,6 @@ const Centerlines* App::framedCenterlines() {
   return &*vg.inVolume;
 }
 
-const TransferFunction& App::editedTf() const { return tfOf(doc(), vessel_.editing); }
-
-const std::string& App::editedPreset() const { return presetOf(doc(), vessel_.editing); }
-
 void App::loadMissingRegionTfs() {
   const VesselGlyphState& set = doc().vesselGlyph;
   try {
@@ -143,16 +137,6 @@ void App::loadMissingRegionTfs() {
   } catch (const std::exception& error) {
     message_ = error.what();
   }
-}
-
-// Each target keeps its own undo stack; not in the middle of an edit gesture.
-void App::switchTfTarget(TfTarget target) {
-  if (tfPanel_.editor.gestureBefore) return;
-  loadMissingRegionTfs();
-  vessel_.histories[int(vessel_.editing)] = tfHistory_;
-  tfHistory_ = vessel_.histories[int(target)];
-  vessel_.editing = target;
-  tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
 }
 
 void App::drawVesselSection() {

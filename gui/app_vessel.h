@@ -3,7 +3,6 @@
 // progressive renderer got from them (core's RegionSource, made anew whenever any of it changes).
 // What the user set (centerline file, shapes, focus / context TFs) is the document's
 // VesselGlyphState. Drawn by gui/panel_vessel_glyph.cpp, run by gui/app_vessel.cpp.
-#include <array>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,7 +14,6 @@
 #include "gui/background_job.h"
 #include "gui/document.h"
 #include "gui/panel_vessel_glyph.h"
-#include "gui/tf_editor.h"
 #include "vessel/centerline.h"
 #include "vessel/vessel_glyph.h"
 
@@ -45,8 +43,6 @@ struct LoadedCenterlines {
 
 struct VesselGlyphPanel {
   VesselGlyphPanelUi ui;                 // the "Load centerlines..." field
-  TfTarget editing = TfTarget::main;
-  std::array<TfHistory, 3> histories;    // undo stacks of the targets not being edited
 
   // Loading (pollCenterlineLoad takes the result once the dataset is there to check it against).
   CenterlineLoad loading;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "gui/tf_targets.h"
+
 namespace angio {
 namespace {
 
@@ -136,6 +138,20 @@ TEST(GuiWorkstation, RenderingEditsKeepTheMipWindowInTheMainTf) {
   EXPECT_EQ(workstation.document().mode, Compositing::mip);
   EXPECT_DOUBLE_EQ(workstation.document().tf.mipWindow, 1500);
   EXPECT_DOUBLE_EQ(workstation.document().tf.mipLevel, 500);
+}
+
+TEST(GuiWorkstation, EachTfTargetKeepsItsOwnUndoStack) {
+  TfTargets targets;
+  EXPECT_EQ(targets.editing(), TfTarget::main);
+  targets.history().push(twoPointTf(0));
+  targets.edit(TfTarget::focus);
+  EXPECT_FALSE(targets.history().canUndo());
+  targets.history().push(twoPointTf(300));
+  targets.edit(TfTarget::main);
+  ASSERT_TRUE(targets.history().canUndo());
+  EXPECT_EQ(targets.history().undo(twoPointTf(50)), twoPointTf(0));
+  targets.edit(TfTarget::focus);
+  EXPECT_EQ(targets.history().undo(twoPointTf(50)), twoPointTf(300));
 }
 
 }  // namespace
