@@ -201,7 +201,7 @@ class App {
   double lastFrameMs_ = 0;
   ProgressiveStatus status_;  // this frame's snapshot
 
-  // Panels.
+  // The panels' own state and what they show.
   TfPanelUi tfPanel_;
   TfTargets tfTargets_;
   std::vector<Preset> presets_;

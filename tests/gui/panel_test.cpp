@@ -284,6 +284,22 @@ TEST_F(GuiPanels, TheExportSectionStartsAJobUnlessOneIsRunning) {
   EXPECT_TRUE(click(draw, centre(rects["series_cancel"])).second.cancel);
 }
 
+TEST_F(GuiPanels, ADoubleClickOnTheViewportResetsZoomAndPan) {
+  ViewState view;
+  view.zoom = 4;
+  view.panPx = {30, -12};
+  const ViewportOverlay overlay;
+  const ImVec2 middle(kWidth / 2, kHeight / 2);
+  const auto draw = [&] { return drawViewport(nullptr, view, overlay); };
+  EXPECT_FALSE(click(draw, middle).reset);
+  // The second press, within the double-click time, is the double-click.
+  const ViewportInteraction reset = frame(draw, middle, true);
+  EXPECT_TRUE(reset.reset);
+  ASSERT_TRUE(reset.zoomedOrPanned);
+  EXPECT_DOUBLE_EQ(reset.zoomedOrPanned->zoom, 1);
+  EXPECT_EQ(reset.zoomedOrPanned->panPx, glm::dvec2(0.0));
+}
+
 TEST(GuiOrientation, LpsLettersNameTheDominantAxisAndATieGoesToTheEarlierAxis) {
   EXPECT_EQ(lpsLetter({1, 0, 0}), 'L');
   EXPECT_EQ(lpsLetter({-1, 0, 0}), 'R');

@@ -140,6 +140,20 @@ TEST(GuiWorkstation, RenderingEditsKeepTheMipWindowInTheMainTf) {
   EXPECT_DOUBLE_EQ(workstation.document().tf.mipLevel, 500);
 }
 
+TEST(GuiWorkstation, ALoadedCenterlineFileIsRecordedAndNothingElseChanges) {
+  Document start;
+  start.vesselGlyph.enabled = true;
+  start.vesselGlyph.settings.cleft = true;
+  Workstation workstation(start);
+  workstation.apply(CenterlineFileEdit{"c.csv", "/data/c.csv"});
+  Document expected = start;
+  expected.vesselGlyph.centerlines = "c.csv";
+  expected.vesselGlyph.centerlinesAbsolute = "/data/c.csv";
+  EXPECT_EQ(workstation.document(), expected);
+  workstation.apply(CenterlineFileEdit{});  // `gui --centerlines`: the session's file is not the one shown
+  EXPECT_EQ(workstation.document(), start);
+}
+
 TEST(GuiWorkstation, EachTfTargetKeepsItsOwnUndoStack) {
   TfTargets targets;
   EXPECT_EQ(targets.editing(), TfTarget::main);
