@@ -2,6 +2,7 @@
 // run its headless twin.
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 
 #include "io/input_error.h"
@@ -50,23 +51,31 @@ LoadedDataset loadDataset(const GuiOptions& options) {
   return dataset;
 }
 
-AppState initialState(const GuiOptions& options, const LoadedDataset& dataset) {
-  AppState state;
-  state.dataset = dataset.name;
+// The command line's document, with a session's contents (but its dataset and recent files) over
+// it; the app's Workstation wraps the angle.
+AppStart initialState(const GuiOptions& options, const LoadedDataset& dataset, const std::optional<Document>& session) {
+  AppStart start;
+  Document& document = start.document;
+  document.dataset = dataset.name;
   const auto axis = parseAxis(options.axis);
   if (!axis) throw std::runtime_error("axis '" + options.axis + "' is not i, j or k");
-  state.view.axis = *axis;
-  state.view.angleDeg = wrapDegrees(options.angleDeg);
-  state.tf = loadPresetOrFile(options.tf);
+  document.view.axis = *axis;
+  document.view.angleDeg = options.angleDeg;
+  document.tf = loadPresetOrFile(options.tf);
   for (const Preset& preset : listPresets())
-    if (preset.id == options.tf) state.tfPreset = preset.id;
-  if (options.mip) state.mode = Compositing::mip;
-  state.centerlinesFile = options.centerlines;
-  return state;
+    if (preset.id == options.tf) document.tfPreset = preset.id;
+  if (options.mip) document.mode = Compositing::mip;
+  if (session) {
+    Workstation withSession(std::move(document));
+    withSession.apply(SessionEdit{*session});
+    document = withSession.document();
+  }
+  start.centerlinesFile = options.centerlines;
+  return start;
 }
 
 // The session's dataset unless a VOLUME was given (a phantom session: its size).
-GuiOptions withSessionDataset(GuiOptions options, const Session& session) {
+GuiOptions withSessionDataset(GuiOptions options, const Document& session) {
   if (!options.volume.empty() || session.dataset.empty()) return options;
   if (isPhantomName(session.dataset)) options.phantomSize = session.dataset.substr(8);
   else options.volume = session.dataset;
@@ -89,12 +98,11 @@ int runGui(const GuiOptions& options) {
   if (!options.headless && !windowSystemAvailable())
     throw std::runtime_error("no display to open a window on (DISPLAY/WAYLAND_DISPLAY unset or "
                              "unusable); use --headless");
-  std::optional<Session> session;
+  std::optional<Document> session;
   if (!options.session.empty()) session = loadSession(options.session);
   const GuiOptions effective = session ? withSessionDataset(options, *session) : options;
   LoadedDataset dataset = loadDataset(effective);
-  AppState state = initialState(effective, dataset);
-  if (session) applySessionState(state, *session);
+  AppStart start = initialState(effective, dataset, session);
   if (options.headless) {
     HeadlessOptions headless;
     headless.width = size.x;
@@ -103,7 +111,7 @@ int runGui(const GuiOptions& options) {
     headless.screenshot = options.screenshot;
     headless.stateOut = options.stateOut;
     headless.timeoutSeconds = options.timeoutSeconds;
-    return runHeadless(std::move(dataset), std::move(state), headless);
+    return runHeadless(std::move(dataset), std::move(start), headless);
   }
   WindowOptions window;
   window.width = size.x;
@@ -111,7 +119,7 @@ int runGui(const GuiOptions& options) {
   window.quitAfterSeconds = options.quitAfterSeconds;
   window.stateOut = options.stateOut;
   window.screenshot = options.screenshot;
-  return runWindow(std::move(dataset), std::move(state), window);
+  return runWindow(std::move(dataset), std::move(start), window);
 }
 
 }  // namespace angio

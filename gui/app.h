@@ -24,13 +24,18 @@
 #include "gui/file_browser.h"
 #include "gui/latency_trace.h"
 #include "render/series_export.h"
-#include "gui/app_state.h"
 #include "gui/app_cpr.h"
 #include "gui/app_vessel.h"
+#include "gui/panel_export.h"
+#include "gui/panel_session.h"
+#include "gui/panel_tf.h"
+#include "gui/panel_widgets.h"
+#include "gui/session_file.h"
 #include "gui/tf_editor.h"
+#include "gui/tf_targets.h"
 #include "gui/viewport.h"
+#include "gui/workstation.h"
 #include "render/recipe_json.h"
-#include "io/session_file.h"
 #include "io/tf_file.h"
 
 namespace angio {
@@ -39,6 +44,12 @@ struct LoadedDataset {
   Volume volume;
   std::string name;         // file or folder, or "phantom IxJxK"
   std::string description;  // e.g. "MetaImage float32"
+};
+
+// What the app starts with: the document, and what only this run needs.
+struct AppStart {
+  Document document;
+  std::string centerlinesFile;  // centerlines to load at start (`gui --centerlines`), if any
 };
 
 // UI frame times (ms, as the platform measured them: the window's exclude the buffer swap, the
@@ -64,7 +75,7 @@ class App {
  public:
   // `wakeUi` (optional, any thread) makes the platform's event wait return: called when the
   // renderer publishes a frame or goes idle.
-  App(LoadedDataset dataset, AppState state, const GlApi& gl, std::function<void()> wakeUi = {});
+  App(LoadedDataset dataset, AppStart start, const GlApi& gl, std::function<void()> wakeUi = {});
   ~App();
   App(const App&) = delete;
   App& operator=(const App&) = delete;
@@ -84,52 +95,77 @@ class App {
   // State and runtime numbers for --state-out and the tests.
   nlohmann::json report() const;
 
-  // Data and session (gui/app_data.cpp, gui/app_session.cpp): loads in the background and
-  // replaces the dataset on success (drag-and-drop, the file browser, recent files, scripts).
+  // Loads in the background and replaces the dataset on success (drag-and-drop, the file
+  // browser, recent files, scripts).
   void openDataset(const std::string& path);
-  Session session() const;  // what the window saves as the last session when it quits
+  Document session() const;  // what the window saves as the last session when it quits
 
  private:
   using Clock = std::chrono::steady_clock;
   static constexpr float kPanelWidth = 430;   // the side panel on the right (screen pixels)
   static constexpr float kStatusHeight = 28;  // the status bar at the bottom
 
-  std::unique_ptr<ProgressiveRenderer> makeRenderer();
+  // The frame (gui/app.cpp): the document's one way to change, keys, the viewport window.
+  const Document& doc() const { return workstation_.document(); }
+  void commit(const Edit& edit);  // to workstation_.apply: every change of the document
+  template <class PanelEdit>
+  void commit(const std::optional<PanelEdit>& edit) {
+    if (edit) commit(Edit{*edit});
+  }
+  void pollJobs();
   void pollHistogram();
-  void pollRenderer();
-  void requestRender(bool interactive);
   void handleKeys();
   void drawViewportWindow();
+  ViewportOverlay viewportOverlay() const;
+  // The render-request path (gui/app_render_request.cpp): reads the document, never writes it.
+  std::unique_ptr<ProgressiveRenderer> makeRenderer();
+  void pollRenderer();
+  void requestRender(bool interactive);
+  // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it, and the
+  // window renders its scene, the recipe without its view, prepared again only when it changes.
+  std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
+  std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
+  std::shared_ptr<const PreparedScene> currentScene();
+  std::shared_ptr<const PreparedScene> prepareScene(RenderRecipe recipe, const Centerlines& centerlines);
+  RenderRecipe exportRecipe() const;  // of what the last request rendered
+  Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
+  // The side panel and status bar (gui/app_panels.cpp): the sections are gui/panel_*.h; these
+  // give them what they show and act on what they return.
   void drawSidePanel();
+  bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
+  void noteRect(const std::string& name);  // the last widget's rectangle, for report()
   void drawStatusBar();
-  void drawDataSection();
-  void drawViewSection();
   void drawTfSection();
-  void drawRenderingSection();
   void drawExportSection();
-  void drawSeriesExport();   // gui/app_series.cpp
-  void drawSessionSection(); // gui/app_session.cpp
-  void drawSessionBanner();
-  void startSession();       // panel states to apply, recent files, the last session offered
-  void pollBackgroundJobs(); // data load, series export
+  void pollExport();
+  void drawSeriesExport();  // gui/app_series.cpp
+  // TF editing: the editor's target (main, focus or context), its undo stack.
+  const TransferFunction& editedTf() const;
+  const std::string& editedPreset() const;
+  void applyTf(const TransferFunction& tf, const std::string& preset);  // one undo step
+  void undoTf();
+  void redoTf();
+  void saveEditedTf();
+  void switchTfTarget(TfTarget target);  // gui/app_vessel.cpp
+  // Datasets (gui/app_data.cpp).
+  void drawDataSection();
+  void pollBackgroundJobs();  // data load, centerline load, series export
   bool backgroundBusy() const;
   void replaceDataset(LoadedDataset dataset);
-  void applySession(const Session& session);
-  bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
-  nlohmann::json dataReport() const;
-  void pollExport();
-  void noteRect(const std::string& name);  // the last widget's rectangle, for report()
-  // VesselGlyph (gui/app_vessel.cpp).
+  // Sessions (gui/app_session.cpp).
+  void startSession();  // panel states to apply, recent files, the last session offered
+  void applySession(const Document& session);
+  void drawSessionSection();
+  void drawSessionBanner();
+  // VesselGlyph (gui/app_vessel.cpp): centerlines loaded in the background, the overlay.
   void drawVesselSection();
-  void drawTfTargetSelector();
   void drawCenterlineOverlay();
   void loadVesselCenterlines(const CenterlineLoad& request);  // in the background
-  void loadSessionCenterlines();  // state_.vesselGlyph's file (none: the loaded ones go)
+  void loadSessionCenterlines();  // the document's centerline file (none: the loaded ones go)
   void pollCenterlineLoad();
   void dropCenterlines();
   const Centerlines* framedCenterlines();
-  void ensureVesselTfs();
-  nlohmann::json vesselReport() const;
+  void loadMissingRegionTfs();  // a focus or context TF with no points: its preset
   ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();
@@ -137,28 +173,14 @@ class App {
   void updateCpr();
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
+  // The state report's parts (gui/app_report.cpp).
+  nlohmann::json dataReport() const;
+  nlohmann::json vesselReport() const;
   nlohmann::json cprReport() const;
-  // DVR+CPR hybrid (gui/app_hybrid.cpp): its controls in the CPR section, and the finish step
-  // the progressive renderer runs on each VesselGlyph image when it is on.
-  void drawHybridControls();
   nlohmann::json hybridReport() const;
-  // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it.
-  std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
-  std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
-  // The scene the window renders (gui/app_recipe.cpp): the recipe an export renders, without its
-  // view, prepared again only when it changes.
-  std::shared_ptr<const PreparedScene> currentScene();
-  std::shared_ptr<const PreparedScene> prepareScene(RenderRecipe recipe, const Centerlines& centerlines);
-  RenderSidecar exportRecipe() const;  // of what the last request rendered
-  Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
-  TransferFunction& editedTf();  // the TF the TF editor edits: main, focus or context
-  std::string& editedPreset();
-  void applyTf(const TransferFunction& tf, const std::string& preset);
-  void undoTf();
-  void redoTf();
 
   LoadedDataset data_;  // before renderer_: the worker reads data_.volume
-  AppState state_;
+  Workstation workstation_;
   StreamedTexture texture_;
   std::function<void()> wakeUi_;
   RenderThreads threads_;  // before renderer_, which renders in its arenas
@@ -182,22 +204,20 @@ class App {
   double lastFrameMs_ = 0;
   ProgressiveStatus status_;  // this frame's snapshot
 
-  // Panels.
-  TfEditorView tfView_;
-  TfHistory tfHistory_;
+  // The panels' own state and what they show.
+  TfPanelUi tfPanel_;
+  TfTargets tfTargets_;
   std::vector<Preset> presets_;
-  std::string tfPath_ = "transfer-function.json";
   std::string message_;  // the last error or notice, shown in the status bar
   std::future<DensityHistogram> histogramJob_;
   std::vector<float> histogram_;  // log counts per density, empty until counted
   std::optional<DensityRange> huRange_;
   ViewportInteraction viewport_;
-  std::map<std::string, std::pair<ImVec2, ImVec2>> widgetRects_;
+  WidgetRects widgetRects_;
   bool quit_ = false;
 
   struct ExportPanel {
-    std::string path = "angioray-export.png";
-    double isd = 0.5;
+    ExportPanelUi ui;
     std::future<std::string> job;
     std::shared_ptr<std::atomic<bool>> cancel;
     Clock::time_point started;
@@ -208,8 +228,8 @@ class App {
   FileBrowser browser_;
   BackgroundJob<LoadedDataset> load_;
   std::string loadPath_, loadError_;
-  std::optional<Session> offeredSession_;  // "Restore last session" banner
-  std::string sessionPath_ = "session.json";
+  std::optional<Document> offeredSession_;  // "Restore last session" banner
+  SessionPanelUi sessionPanel_;
   std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame
   SeriesPanel series_;
   BackgroundJob<SeriesResult> seriesJob_;

@@ -1,4 +1,4 @@
-// The CPR view of App (issue 6 item 6; thesis sec. 5.2.2, fig. 5.4): the curved planar
+// The CPR view of App (thesis sec. 5.2.2, fig. 5.4): the curved planar
 // reformation of the selected path beside the DVR view, at the view's axis and angle (so rotating
 // the view turns the straightened CPR's vector of interest). Hovering it shows the arc length and
 // HU under the mouse and marks that point on the DVR image.
@@ -11,6 +11,7 @@
 
 #include "core/view_geometry.h"
 #include "gui/app.h"
+#include "gui/panel_cpr.h"
 #include "io/tf_file.h"
 
 namespace angio {
@@ -19,16 +20,7 @@ namespace {
 
 constexpr float kCprShare = 0.35f;  // of the room left of the side panel
 constexpr double kMaxCprPixelMm = 1.0;  // finer than coarse volumes' DVR pixels, for the ruler
-constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
-constexpr const char* kColourings[] = {"CTA lumen", "calcium", "focus TF"};
-constexpr const char* kColouringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
 constexpr float kClickReachPx = 12;  // a click this near a projected centerline moves the cursor
-
-std::string pathLabel(const Centerlines& centerlines, int path) {
-  if (path < 0 || path >= int(centerlines.paths.size())) return "all paths";
-  const std::string& name = centerlines.paths[path].name;
-  return std::to_string(path) + (name.empty() ? "" : ": " + name);
-}
 
 // Where a centerline point lies in the CPR image: on its path's curve, or, on a trunk the path
 // shares with an earlier path (drawn once, vessel/cpr_layout.h), on that path's curve.
@@ -80,35 +72,14 @@ void App::moveCprCursorOnClick() {
 }
 
 float App::cprViewWidth() const {
-  if (!state_.cpr.shown || !vessel_.physical) return 0;
+  if (!doc().cpr.shown || !vessel_.physical) return 0;
   return std::floor(std::max(ImGui::GetIO().DisplaySize.x - kPanelWidth, 0.f) * kCprShare);
 }
 
 void App::drawCprSection() {
   if (!vessel_.physical || !sectionHeader("CPR")) return;  // the section needs centerlines
-  CprViewPanel& panel = cprView_;
-  ImGui::Checkbox("CPR view beside the image", &state_.cpr.shown);
-  noteRect("cpr_shown");
-  for (std::size_t n = 0; n < std::size(kModes); ++n) {
-    if (n) ImGui::SameLine();
-    if (ImGui::RadioButton(toString(kModes[n]), state_.cpr.mode == kModes[n])) state_.cpr.mode = kModes[n];
-    noteRect(std::string("cpr_mode_") + toString(kModes[n]));
-  }
-  ImGui::SetNextItemWidth(220);
-  if (ImGui::BeginCombo("path##cpr", pathLabel(*vessel_.physical, state_.cpr.path).c_str())) {
-    for (int n = -1; n < int(vessel_.physical->paths.size()); ++n)
-      if (ImGui::Selectable(pathLabel(*vessel_.physical, n).c_str(), state_.cpr.path == n)) state_.cpr.path = n;
-    ImGui::EndCombo();
-  }
-  noteRect("cpr_path");
-  ImGui::TextUnformatted("colour");
-  for (int n = 0; n < 3; ++n) {
-    ImGui::SameLine();
-    if (ImGui::RadioButton(kColourings[n], int(state_.cpr.colouring) == n)) state_.cpr.colouring = CprColouring(n);
-    noteRect(std::string("cpr_colour_") + kColouringKeys[n]);
-  }
-  if (!panel.error.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", panel.error.c_str());
-  drawHybridControls();
+  const CprPanelInfo info{&*vessel_.physical, doc().vesselGlyph.enabled, cprView_.error, vessel_.hybridProblem};
+  commit(drawCprPanel(doc().cpr, info, widgetRects_));
 }
 
 // Recomputes the CPR when its inputs changed (not while a slider or a spin changes them every
@@ -122,25 +93,26 @@ void App::updateCpr() {
     panel.error = error.what();
   }
   if (!centerlines) return;
-  ensureVesselTfs();
+  loadMissingRegionTfs();
+  const Document& state = doc();
   char view[96];
-  std::snprintf(view, sizeof view, "%s %.17g %d %d %d", toString(state_.view.axis), state_.view.angleDeg,
-                int(state_.cpr.mode), state_.cpr.path, int(state_.cpr.colouring));
+  std::snprintf(view, sizeof view, "%s %.17g %d %d %d", toString(state.view.axis), state.view.angleDeg,
+                int(state.cpr.mode), state.cpr.path, int(state.cpr.colouring));
   const std::string key = vessel_.framedFor + " " + vessel_.file + " " + view +
-                          (state_.cpr.colouring == CprColouring::focusTf ? toJson(state_.vesselGlyph.focusTf) : "");
+                          (state.cpr.colouring == CprColouring::focusTf ? toJson(state.vesselGlyph.focusTf) : "");
   if (key == panel.madeFor) return;
-  if (panel.cpr && (ImGui::IsAnyItemActive() || state_.view.autoSpin)) return;
+  if (panel.cpr && (ImGui::IsAnyItemActive() || state.view.autoSpin)) return;
   panel.madeFor = key;
   panel.hovered.reset();
   try {
-    const auto paths = selectPaths(*centerlines, state_.cpr.path < 0 ? "all" : std::to_string(state_.cpr.path));
-    // The high level's pixel size, so a projected CPR registers with the DVR image (issue 6 item 1).
-    const double pixelMm = std::min(state_.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm);
-    const ViewGeometry geometry = cprView(data_.volume, state_.view.axis, state_.view.angleDeg, pixelMm);
-    Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{state_.cpr.mode, {}});
+    const auto paths = selectPaths(*centerlines, state.cpr.path < 0 ? "all" : std::to_string(state.cpr.path));
+    // The high level's pixel size, so a projected CPR registers with the DVR image.
+    const double pixelMm = std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm);
+    const ViewGeometry geometry = cprView(data_.volume, state.view.axis, state.view.angleDeg, pixelMm);
+    Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{state.cpr.mode, {}});
     CprDisplay display;
-    if (state_.cpr.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
-    if (state_.cpr.colouring == CprColouring::focusTf) display.tf = state_.vesselGlyph.focusTf;
+    if (state.cpr.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
+    if (state.cpr.colouring == CprColouring::focusTf) display.tf = state.vesselGlyph.focusTf;
     panel.frame = makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
     panel.texture.begin(panel.frame);
     while (!panel.texture.step(std::size_t(64) << 20)) {
@@ -168,7 +140,8 @@ void App::drawCprView() {
   ImGui::Begin("##cpr", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::Text("CPR %s, %s", toString(state_.cpr.mode), pathLabel(*vessel_.physical, state_.cpr.path).c_str());
+  const CprState& cprState = doc().cpr;
+  ImGui::Text("CPR %s, %s", toString(cprState.mode), cprPathLabel(*vessel_.physical, cprState.path).c_str());
   const ImVec2 hoverLine = ImGui::GetCursorScreenPos();
   ImGui::NewLine();
   if (!panel.error.empty()) ImGui::TextWrapped("%s", panel.error.c_str());
@@ -201,8 +174,8 @@ void App::drawCprView() {
     std::snprintf(text, sizeof text, "hover the CPR: arc length, HU");
   draw->AddText(hoverLine, panel.hovered ? IM_COL32(255, 230, 90, 255) : IM_COL32(150, 150, 150, 255), text);
   panel.cursorPixel.reset();
-  if (panel.cursor && (state_.cpr.path < 0 || state_.cpr.path == panel.cursor->path))
-    panel.cursorPixel = cprPixelOf(panel.cpr->layout, state_.cpr.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
+  if (panel.cursor && (cprState.path < 0 || cprState.path == panel.cursor->path))
+    panel.cursorPixel = cprPixelOf(panel.cpr->layout, cprState.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
   if (panel.cursorPixel) {
     const ImVec2 mark(panel.imageMin.x + float(panel.cursorPixel->x + 0.5) * scale,
                       panel.imageMin.y + float(panel.cursorPixel->y + 0.5) * scale);
@@ -222,29 +195,6 @@ void App::drawCprView() {
     front->PopClipRect();
   }
   ImGui::End();
-}
-
-nlohmann::json App::cprReport() const {
-  const CprViewPanel& panel = cprView_;
-  nlohmann::json hovered = nullptr;
-  if (panel.hovered) {
-    hovered = {{"arc_mm", panel.hovered->arcMm}, {"hu", panel.hovered->hu}, {"path", panel.hovered->path}};
-    if (panel.markedOnDvr) hovered["dvr_screen"] = {panel.markedOnDvr->x, panel.markedOnDvr->y};
-  }
-  nlohmann::json cursor = nullptr;
-  if (panel.cursor) {
-    cursor = {{"path", panel.cursor->path}, {"arc_mm", panel.cursor->arcMm}};
-    if (panel.cursorPixel) cursor["cpr_pixel"] = {panel.cursorPixel->x, panel.cursorPixel->y};
-  }
-  return {{"shown", cprViewWidth() > 0},
-          {"cursor", cursor},
-          {"mode", toString(state_.cpr.mode)},
-          {"path", state_.cpr.path},
-          {"width", panel.cpr ? panel.cpr->layout.width : 0},
-          {"height", panel.cpr ? panel.cpr->layout.height : 0},
-          {"pixel_mm", panel.cpr ? panel.cpr->layout.pixelMm : 0.0},
-          {"error", panel.error},
-          {"hovered", hovered}};
 }
 
 }  // namespace angio

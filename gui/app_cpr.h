@@ -1,5 +1,5 @@
 #pragma once
-// The CPR view's state (issue 6 item 6; thesis sec. 5.2.2; Kanitsar et al., IEEE Vis 2002): the
+// The CPR view's state (thesis sec. 5.2.2; Kanitsar et al., IEEE Vis 2002): the
 // curved planar reformation of the selected centerline path at the view's axis and angle, shown
 // beside the DVR view; hovering it reads arc length and HU and marks the point on the DVR image.
 // Drawn by gui/app_cpr.cpp.
@@ -10,7 +10,7 @@
 #include <imgui.h>
 
 #include "gui/app_gl.h"
-#include "io/session_file.h"
+#include "gui/document.h"
 #include "vessel/cpr.h"
 
 namespace angio {
@@ -25,7 +25,7 @@ struct CenterlinePlace {
 struct CprViewPanel {
   explicit CprViewPanel(const GlApi& gl) : texture(gl) {}
 
-  // What the user set is the session's (AppState::cpr: shown, mode, path, colouring, hybrid).
+  // What the user set is the document's CprState (shown, mode, path, colouring, hybrid).
 
   // What is shown.
   StreamedTexture texture;

@@ -1,16 +1,15 @@
-// The Data section of App: open a volume file or DICOM folder (file browser, recent files,
-// drag-and-drop, scripts), load it in the background with progress and cancel, replace the
-// dataset on success, keep the previous one and show a dismissable error on failure; the
-// dataset's dims, spacing, orientation and HU range.
-#include <cmath>
+// Datasets in App: open a volume file or DICOM folder (the Data section's file browser and recent
+// files, gui/panel_data.h; drag-and-drop, scripts), load it in the background with progress and
+// cancel, replace the dataset on success, keep the previous one and show a dismissable error on
+// failure.
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 
-#include <imgui.h>
-
 #include "io/input_error.h"
 #include "gui/app.h"
+#include "gui/panel_data.h"
+#include "gui/viewport.h"
 #include "io/volume_reader.h"
 
 namespace angio {
@@ -18,14 +17,6 @@ namespace angio {
 namespace fs = std::filesystem;
 
 namespace {
-
-// The LPS letter a direction mostly points to: +x L, -x R, +y P, -y A, +z S, -z I.
-char lpsLetter(glm::dvec3 direction) {
-  const glm::dvec3 a = glm::abs(direction);
-  const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-  static const char positive[] = "LPS", negative[] = "RAI";
-  return direction[axis] >= 0 ? positive[axis] : negative[axis];
-}
 
 LoadedDataset loadInBackground(const std::string& path, JobControl& control) {
   ReadOptions read;
@@ -59,7 +50,6 @@ void App::pollBackgroundJobs() {
     try {
       const double seconds = load_.seconds();
       replaceDataset(load_.take());
-      addRecentFile(state_.recentFiles, loadPath_);
       char took[32];
       std::snprintf(took, sizeof took, " (%.2f s)", seconds);
       message_ = "opened " + loadPath_ + took;
@@ -97,9 +87,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   requestTimes_.clear();
   latency_.restart();
   data_ = std::move(dataset);
-  state_.dataset = data_.name;
-  state_.view.zoom = 1;
-  state_.view.panPx = glm::dvec2(0.0);
+  commit(DatasetOpened{data_.name});
   histogram_.clear();
   huRange_.reset();
   scene_.reset();  // of the old volume
@@ -111,73 +99,26 @@ void App::drawDataSection() {
   drawSessionBanner();
   if (const auto chosen = drawFileBrowser(browser_)) openDataset(chosen->string());
   if (!sectionHeader("Data")) return;
-  if (ImGui::Button("Open...")) {
+  DataPanelInfo info;
+  info.volume = &data_.volume;
+  info.name = data_.name;
+  info.description = data_.description;
+  info.densities = huRange_;
+  info.loading = load_.running();
+  info.loadProgress = load_.progress();
+  info.loadSeconds = load_.seconds();
+  info.cancelRequested = load_.cancelRequested();
+  info.loadPath = loadPath_;
+  info.loadError = loadError_;
+  const DataPanelRequests requests = drawDataPanel(doc(), info, widgetRects_);
+  if (requests.browse) {
     const fs::path current = loadPath_.empty() ? fs::path(data_.name) : fs::path(loadPath_);
     std::error_code error;
     browser_.show(fs::is_directory(current.parent_path(), error) ? current.parent_path() : fs::current_path());
   }
-  noteRect("data_open");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(200);
-  if (ImGui::BeginCombo("##recent", "recent files")) {
-    for (const std::string& file : state_.recentFiles)
-      if (ImGui::Selectable(file.c_str())) openDataset(file);
-    if (state_.recentFiles.empty()) ImGui::TextDisabled("(none yet)");
-    ImGui::EndCombo();
-  }
-  if (load_.running()) {
-    char label[64];
-    std::snprintf(label, sizeof label, "loading %.0f%% (%.0f s)", 100 * load_.progress(), load_.seconds());
-    ImGui::ProgressBar(float(load_.progress()), ImVec2(260, 0), label);
-    ImGui::SameLine();
-    ImGui::BeginDisabled(load_.cancelRequested());
-    if (ImGui::Button("Cancel##load")) load_.cancel();
-    ImGui::EndDisabled();
-    ImGui::TextDisabled("%s", loadPath_.c_str());
-  }
-  if (!loadError_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.35f, 1));
-    ImGui::TextWrapped("could not open: %s", loadError_.c_str());
-    ImGui::PopStyleColor();
-    if (ImGui::SmallButton("Dismiss##loaderror")) loadError_.clear();
-    noteRect("data_dismiss");
-  }
-
-  const Volume& v = data_.volume;
-  ImGui::TextWrapped("%s", data_.name.c_str());
-  if (!data_.description.empty()) ImGui::TextDisabled("%s", data_.description.c_str());
-  ImGui::Text("%d x %d x %d voxels, %.3g x %.3g x %.3g mm", v.dims.x, v.dims.y, v.dims.z,
-              v.spacing.x, v.spacing.y, v.spacing.z);
-  ImGui::Text("axes i j k -> %c %c %c, origin %.1f %.1f %.1f mm (LPS)", lpsLetter(v.direction[0]),
-              lpsLetter(v.direction[1]), lpsLetter(v.direction[2]), v.origin.x, v.origin.y, v.origin.z);
-  if (ImGui::IsItemHovered()) {
-    const glm::dmat3& d = v.direction;
-    ImGui::SetTooltip("direction (columns = i, j, k in LPS):\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f",
-                      d[0].x, d[1].x, d[2].x, d[0].y, d[1].y, d[2].y, d[0].z, d[1].z, d[2].z);
-  }
-  if (huRange_)
-    ImGui::Text("HU %.0f .. %.0f", huOfDensity(huRange_->minDensity), huOfDensity(huRange_->maxDensity));
-  else
-    ImGui::TextDisabled("HU range: counting...");
-}
-
-nlohmann::json App::dataReport() const {
-  const Volume& v = data_.volume;
-  nlohmann::json hu = nullptr;
-  if (huRange_) hu = {huOfDensity(huRange_->minDensity), huOfDensity(huRange_->maxDensity)};
-  return {{"name", data_.name},
-          {"description", data_.description},
-          {"dims", {v.dims.x, v.dims.y, v.dims.z}},
-          {"spacing", {v.spacing.x, v.spacing.y, v.spacing.z}},
-          {"orientation", std::string{lpsLetter(v.direction[0]), lpsLetter(v.direction[1]), lpsLetter(v.direction[2])}},
-          {"hu_range", hu},
-          {"loading", load_.running()},
-          {"load_error", loadError_},
-          {"recent_files", state_.recentFiles},
-          {"panels_open", state_.panelsOpen},
-          {"session_offered", offeredSession_ ? offeredSession_->dataset : ""},
-          {"series_running", seriesJob_.running()},
-          {"movie_note", series_.movieNote}};
+  if (requests.open) openDataset(*requests.open);
+  if (requests.cancelLoad) load_.cancel();
+  if (requests.dismissError) loadError_.clear();
 }
 
 }  // namespace angio

@@ -2,7 +2,7 @@
 
 namespace angio {
 
-RenderSidecar exportSidecar(const AppState& state, const std::string& dataset, double isd) {
+RenderSidecar exportSidecar(const Document& state, const std::string& dataset, double isd) {
   RenderSidecar sidecar;
   sidecar.dataset = absoluteDataset(dataset);
   sidecar.quality = Quality::high;

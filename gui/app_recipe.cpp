@@ -17,15 +17,15 @@ std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe() const {
   VesselGlyphRecipe recipe;
   std::error_code error;
   recipe.centerlines = std::filesystem::absolute(vg.file, error).lexically_normal().string();
-  recipe.settings = state_.vesselGlyph.settings;
-  recipe.focusTf = state_.vesselGlyph.focusTf;
-  recipe.contextTf = state_.vesselGlyph.contextTf;
-  if (state_.vesselGlyph.outsideRendered) recipe.outsideTf = state_.tf;
+  recipe.settings = doc().vesselGlyph.settings;
+  recipe.focusTf = doc().vesselGlyph.focusTf;
+  recipe.contextTf = doc().vesselGlyph.contextTf;
+  if (doc().vesselGlyph.outsideRendered) recipe.outsideTf = doc().tf;
   return recipe;
 }
 
 std::optional<HybridCprRecipe> App::hybridRecipe() const {
-  const SessionCpr& cpr = state_.cpr;
+  const CprState& cpr = doc().cpr;
   if (!cpr.hybrid) return std::nullopt;
   HybridCprRecipe recipe;
   recipe.path = cpr.path < 0 ? "all" : std::to_string(cpr.path);
@@ -39,10 +39,9 @@ std::optional<HybridCprRecipe> App::hybridRecipe() const {
 std::shared_ptr<const PreparedScene> App::currentScene() {
   RenderRecipe recipe;
   recipe.dataset = absoluteDataset(data_.name);
-  recipe.tf = state_.tf;
+  recipe.tf = doc().tf;
   const Centerlines* centerlines = nullptr;
-  if (state_.vesselGlyph.enabled && vessel_.physical) {
-    ensureVesselTfs();
+  if (doc().vesselGlyph.enabled && vessel_.physical) {
     try {
       centerlines = framedCenterlines();
     } catch (const std::exception& error) {
@@ -83,8 +82,8 @@ std::shared_ptr<const PreparedScene> App::prepareScene(RenderRecipe recipe, cons
   }
 }
 
-RenderSidecar App::exportRecipe() const {
-  RenderSidecar recipe = exportSidecar(state_, data_.name, export_.isd);
+RenderRecipe App::exportRecipe() const {
+  RenderRecipe recipe = exportSidecar(doc(), data_.name, export_.ui.isd);
   if (!scene_) return recipe;  // nothing rendered yet: plain DVR/MIP
   recipe.vesselGlyph = scene_->recipe().vesselGlyph;
   recipe.hybrid = scene_->recipe().hybrid;

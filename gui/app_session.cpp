@@ -1,44 +1,43 @@
-// Sessions in the app: the Session section (save/load), the "Restore last session" banner, the
-// side-panel sections whose open state a session keeps.
+// Sessions in the app: the Session section's save and load and the "Restore last session" banner
+// (gui/panel_session.h), the side-panel sections whose open state a session keeps.
 #include <exception>
 #include <filesystem>
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
 
 #include "gui/app.h"
-#include "io/session_file.h"
+#include "gui/panel_session.h"
+#include "gui/session_file.h"
 
 namespace angio {
 
 namespace fs = std::filesystem;
 
 void App::startSession() {
-  panelsToApply_ = state_.panelsOpen;
+  panelsToApply_ = doc().panelsOpen;
   const fs::path last = lastSessionPath();
   std::error_code error;
   if (!fs::exists(last, error)) return;
   try {
-    Session session = loadSession(last);
-    state_.recentFiles = session.recentFiles;
+    Document session = loadSession(last);
+    commit(RecentFilesEdit{session.recentFiles});
     // Offered only when started without a volume (on the phantom) and it names something else.
-    if (isPhantomName(state_.dataset) && session.dataset != state_.dataset) offeredSession_ = std::move(session);
+    if (isPhantomName(doc().dataset) && session.dataset != doc().dataset) offeredSession_ = std::move(session);
   } catch (const std::exception& problem) {
     message_ = problem.what();
   }
 }
 
-Session App::session() const {
-  Session session = state_;
+Document App::session() const {
+  Document session = doc();
   session.dataset = absoluteDataset(session.dataset);
   return session;
 }
 
-void App::applySession(const Session& session) {
-  tfHistory_.push(editedTf());
-  applySessionState(state_, session);  // the dataset changes when its load succeeds
-  loadSessionCenterlines();            // checked against the session's dataset once that is there
-  if (state_.cpr.hybrid) state_.vesselGlyph.enabled = true;  // the hybrid is VesselGlyph's (its focus is the cut)
+void App::applySession(const Document& session) {
+  tfTargets_.history().push(editedTf());
+  commit(SessionEdit{session});  // the dataset changes when its load succeeds
+  loadSessionCenterlines();      // checked against the session's dataset once that is there
   panelsToApply_ = session.panelsOpen;
   if (session.dataset == data_.name || session.dataset.empty()) return;
   if (isPhantomName(session.dataset))
@@ -53,56 +52,33 @@ bool App::sectionHeader(const char* title) {
     panelsToApply_.erase(pending);
   }
   const bool open = ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen);
-  state_.panelsOpen[title] = open;
+  commit(PanelOpenEdit{title, open});
   return open;
 }
 
 void App::drawSessionSection() {
   if (!sectionHeader("Session")) return;
-  ImGui::SetNextItemWidth(190);
-  ImGui::InputText("##sessionpath", &sessionPath_);
-  noteRect("session_path");
-  ImGui::SameLine();
-  if (ImGui::Button("Save session")) {
-    try {
-      saveSession(session(), sessionPath_);
-      message_ = "saved session " + sessionPath_;
-    } catch (const std::exception& error) {
-      message_ = error.what();
+  const SessionPanelRequests requests = drawSessionPanel(sessionPanel_, widgetRects_);
+  const std::string& path = sessionPanel_.path;
+  try {
+    if (requests.save) {
+      saveSession(session(), path);
+      message_ = "saved session " + path;
     }
-  }
-  noteRect("session_save");
-  ImGui::SameLine();
-  if (ImGui::Button("Load session")) {
-    try {
-      applySession(loadSession(sessionPath_));
-      message_ = "loaded session " + sessionPath_;
-    } catch (const std::exception& error) {
-      message_ = error.what();
+    if (requests.load) {
+      applySession(loadSession(path));
+      message_ = "loaded session " + path;
     }
+  } catch (const std::exception& error) {
+    message_ = error.what();
   }
-  noteRect("session_load");
 }
 
-// A small window over the top of the image: "Restore last session: <dataset> [Restore] [Dismiss]".
 void App::drawSessionBanner() {
   if (!offeredSession_) return;
-  ImGui::SetNextWindowPos(ImVec2(12, 12));
-  ImGui::SetNextWindowBgAlpha(0.9f);
-  ImGui::Begin("##lastsession", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();  // above the viewport, drawn after it
-  ImGui::Text("Restore last session: %s", offeredSession_->dataset.c_str());
-  ImGui::SameLine();
-  const bool restore = ImGui::Button("Restore");
-  noteRect("session_restore");
-  ImGui::SameLine();
-  const bool dismiss = ImGui::Button("Dismiss");
-  noteRect("session_dismiss");
-  ImGui::End();
-  if (restore) applySession(*offeredSession_);
-  if (restore || dismiss) offeredSession_.reset();
+  const BannerChoice choice = angio::drawSessionBanner(offeredSession_->dataset, widgetRects_);
+  if (choice == BannerChoice::restore) applySession(*offeredSession_);
+  if (choice != BannerChoice::none) offeredSession_.reset();
 }
 
 }  // namespace angio

@@ -1,26 +1,18 @@
 #pragma once
-// The VesselGlyph panel's runtime state (issue 5 item 7; thesis ch. 5): the loaded centerlines and
-// what the progressive renderer got from them (core's RegionSource, made anew whenever any of it
-// changes). What the user set (centerline file, shapes, focus / context TFs) is the session's
-// SessionVesselGlyph, App's state_.vesselGlyph. Drawn by gui/app_vessel.cpp.
-#include <array>
-#include <memory>
-#include <mutex>
+// The VesselGlyph panel's runtime state (thesis ch. 5): the loaded centerlines, mapped into the
+// shown dataset's frame, and why VesselGlyph or the hybrid is not rendered. What the user set (centerline file, shapes, focus / context TFs) is the document's
+// VesselGlyphState. Drawn by gui/panel_vessel_glyph.cpp, run by gui/app_vessel.cpp.
 #include <optional>
 #include <string>
 
-#include "render/progressive_renderer.h"
-#include "core/transfer_function.h"
 #include "core/view_geometry.h"
 #include "gui/background_job.h"
-#include "gui/tf_editor.h"
+#include "gui/document.h"
+#include "gui/panel_vessel_glyph.h"
 #include "vessel/centerline.h"
 #include "vessel/vessel_glyph.h"
 
 namespace angio {
-
-// Which TF the TF editor edits.
-enum class TfTarget { main = 0, focus = 1, context = 2 };
 
 // A centerline file being read off the UI thread: the panel's button, `gui --centerlines`, a
 // session (which names the file as given and as an absolute path: the first that exists is read).
@@ -36,9 +28,7 @@ struct LoadedCenterlines {
 };
 
 struct VesselGlyphPanel {
-  std::string path = "centerlines.csv";  // the "Load centerlines..." field
-  TfTarget editing = TfTarget::main;
-  std::array<TfHistory, 3> histories;    // undo stacks of the targets not being edited
+  VesselGlyphPanelUi ui;                 // the "Load centerlines..." field
 
   // Loading (pollCenterlineLoad takes the result once the dataset is there to check it against).
   CenterlineLoad loading;

@@ -17,7 +17,7 @@
 
 #include "io/atomic_write.h"
 #include "io/image_export.h"
-#include "io/session_file.h"
+#include "gui/session_file.h"
 
 namespace angio {
 
@@ -116,11 +116,11 @@ bool windowSystemAvailable() {
   return true;
 }
 
-int runWindow(LoadedDataset dataset, AppState state, const WindowOptions& options) {
+int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options) {
   Window window(options);
   std::signal(SIGINT, requestClose);
   std::signal(SIGTERM, requestClose);
-  App app(std::move(dataset), std::move(state), window.gl(), [] { glfwPostEmptyEvent(); });
+  App app(std::move(dataset), std::move(start), window.gl(), [] { glfwPostEmptyEvent(); });
   glfwSetWindowUserPointer(window.handle(), &app);
   glfwSetDropCallback(window.handle(), openDropped);
   const auto opened = Clock::now();

@@ -8,7 +8,6 @@
 #include <mutex>
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <stdexcept>
 #include <thread>
 
@@ -35,18 +34,24 @@ struct ScriptedInput {
   bool ctrl = false, shift = false;
 };
 
+struct NamedKey {
+  const char* name;
+  int key;
+};
 // Key names of the script, mapped to ImGuiKey (the headless key map is the identity).
+constexpr NamedKey kKeys[] = {
+    {"Tab", ImGuiKey_Tab},         {"Left", ImGuiKey_LeftArrow},  {"Right", ImGuiKey_RightArrow},
+    {"Up", ImGuiKey_UpArrow},      {"Down", ImGuiKey_DownArrow},  {"PageUp", ImGuiKey_PageUp},
+    {"PageDown", ImGuiKey_PageDown}, {"Home", ImGuiKey_Home},     {"End", ImGuiKey_End},
+    {"Delete", ImGuiKey_Delete},   {"Backspace", ImGuiKey_Backspace}, {"Space", ImGuiKey_Space},
+    {"Enter", ImGuiKey_Enter},     {"Escape", ImGuiKey_Escape},   {"A", ImGuiKey_A},
+    {"C", ImGuiKey_C},             {"V", ImGuiKey_V},             {"X", ImGuiKey_X},
+    {"Y", ImGuiKey_Y},             {"Z", ImGuiKey_Z}};
+
 int keyOf(const std::string& name) {
-  static const std::map<std::string, int> keys = {
-      {"Tab", ImGuiKey_Tab},         {"Left", ImGuiKey_LeftArrow},  {"Right", ImGuiKey_RightArrow},
-      {"Up", ImGuiKey_UpArrow},      {"Down", ImGuiKey_DownArrow},  {"PageUp", ImGuiKey_PageUp},
-      {"PageDown", ImGuiKey_PageDown}, {"Home", ImGuiKey_Home},     {"End", ImGuiKey_End},
-      {"Delete", ImGuiKey_Delete},   {"Backspace", ImGuiKey_Backspace}, {"Space", ImGuiKey_Space},
-      {"Enter", ImGuiKey_Enter},     {"Escape", ImGuiKey_Escape},   {"A", ImGuiKey_A},
-      {"C", ImGuiKey_C},             {"V", ImGuiKey_V},             {"X", ImGuiKey_X},
-      {"Y", ImGuiKey_Y},             {"Z", ImGuiKey_Z}};
-  const auto found = keys.find(name);
-  return found == keys.end() ? -1 : found->second;
+  for (const NamedKey& named : kKeys)
+    if (name == named.name) return named.key;
+  return -1;
 }
 
 void writeJson(const std::filesystem::path& path, const nlohmann::json& json) {
@@ -59,7 +64,7 @@ void writeJson(const std::filesystem::path& path, const nlohmann::json& json) {
 
 class HeadlessSession {
  public:
-  HeadlessSession(LoadedDataset dataset, AppState state, const HeadlessOptions& options)
+  HeadlessSession(LoadedDataset dataset, AppStart start, const HeadlessOptions& options)
       : options_(options), pixels_(std::size_t(options.width) * options.height * 4) {
     context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!context_) throw std::runtime_error("OSMesa: cannot create an OpenGL context");
@@ -73,7 +78,7 @@ class HeadlessSession {
     io.DisplaySize = ImVec2(float(options.width), float(options.height));
     for (int key = 0; key < ImGuiKey_COUNT; ++key) io.KeyMap[key] = key;
     ImGui_ImplOpenGL2_Init();
-    app_ = std::make_unique<App>(std::move(dataset), std::move(state), gl_, [this] { wake(); });
+    app_ = std::make_unique<App>(std::move(dataset), std::move(start), gl_, [this] { wake(); });
   }
 
   ~HeadlessSession() {
@@ -267,8 +272,8 @@ class HeadlessSession {
 
 }  // namespace
 
-int runHeadless(LoadedDataset dataset, AppState state, const HeadlessOptions& options) {
-  HeadlessSession session(std::move(dataset), std::move(state), options);
+int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options) {
+  HeadlessSession session(std::move(dataset), std::move(start), options);
   session.run();
   return 0;
 }

@@ -12,15 +12,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinZoom = 0.1, kMaxZoom = 64;
 constexpr float kFitMargin = 0.95f;  // leave room for the letters at zoom 1
 
-// The LPS letter of a direction in the volume frame (voxel axes i, j, k along +L, +P, +S).
-char letterOf(const glm::dvec3& direction) {
-  static const char positive[] = {'L', 'P', 'S'}, negative[] = {'R', 'A', 'I'};
-  int dominant = 0;
-  for (int n = 1; n < 3; ++n)
-    if (std::abs(direction[n]) > std::abs(direction[dominant]) + 1e-9) dominant = n;
-  return direction[dominant] >= 0 ? positive[dominant] : negative[dominant];
-}
-
 void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 colour, const char* text) {
   draw->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
   draw->AddText(at, colour, text);
@@ -76,6 +67,14 @@ void drawScaleBar(ImDrawList* draw, double pixelsPerMm, ImVec2 min, ImVec2 max) 
 
 }  // namespace
 
+char lpsLetter(const glm::dvec3& direction) {
+  constexpr char positive[] = {'L', 'P', 'S'}, negative[] = {'R', 'A', 'I'};
+  int dominant = 0;
+  for (int n = 1; n < 3; ++n)
+    if (std::abs(direction[n]) > std::abs(direction[dominant]) + 1e-9) dominant = n;
+  return direction[dominant] >= 0 ? positive[dominant] : negative[dominant];
+}
+
 OrientationLetters orientationLetters(Axis axis, double angleDeg) {
   const int a = int(axis), b = (a + 1) % 3, c = (a + 2) % 3;  // (a, b, c) cyclic
   const double t = angleDeg * kPi / 180;
@@ -83,7 +82,7 @@ OrientationLetters orientationLetters(Axis axis, double angleDeg) {
   right[b] = std::cos(t);
   right[c] = std::sin(t);
   up[a] = 1;
-  return {letterOf(right), letterOf(-right), letterOf(up), letterOf(-up)};
+  return {lpsLetter(right), lpsLetter(-right), lpsLetter(up), lpsLetter(-up)};
 }
 
 double scaleBarMm(double pixelsPerMm, double targetPx) {
@@ -95,9 +94,10 @@ double scaleBarMm(double pixelsPerMm, double targetPx) {
   return best;
 }
 
-ViewportInteraction drawViewport(const ViewportImage* image, ViewState& view,
+ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& shownView,
                                  const ViewportOverlay& overlay) {
   ViewportInteraction result;
+  ViewState view = shownView;
   const ImVec2 min = ImGui::GetCursorScreenPos();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const ImVec2 size(std::max(avail.x, 16.f), std::max(avail.y, 16.f));
@@ -123,6 +123,8 @@ ViewportInteraction drawViewport(const ViewportImage* image, ViewState& view,
     view.panPx = glm::dvec2(0.0);
     result.reset = true;
   }
+
+  if (!(view == shownView)) result.zoomedOrPanned = view;
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(min, max, true);

@@ -2,13 +2,14 @@
 // The viewport: the rendered image as a texture, aspect-correct, zoomed with the wheel about the
 // cursor, panned with the right or middle button, rotated with a left drag; double-click resets
 // zoom and pan. Overlays: orientation letters on the image edges, a scale bar in mm, the angle.
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
 
 #include "core/render_params.h"
-#include "gui/app_state.h"
+#include "gui/document.h"
 
 namespace angio {
 
@@ -28,11 +29,16 @@ struct ViewportOverlay {
 
 struct ViewportInteraction {
   double rotateDegrees = 0;  // from a left drag this frame
+  std::optional<ViewState> zoomedOrPanned;  // the view with this frame's zoom and pan, if changed
   bool reset = false;        // double-click: zoom and pan were reset
   ImVec2 min, max;           // the viewport's screen rectangle
   bool hasImage = false;     // an image was drawn, at:
   ImVec2 imageMin, imageMax; // its screen rectangle (may reach beyond the viewport)
 };
+
+// The LPS letter a direction in the volume frame mostly points to (voxel axes i, j, k along +L,
+// +P, +S; -x R, -y A, -z I); a tie goes to the earlier axis.
+char lpsLetter(const glm::dvec3& direction);
 
 // The letters (L/R/A/P/S/I) of the dominant LPS axis of +r, -r, +up and -up for a view about
 // `axis` at `angleDeg` (rendering model, View: r = cos(t) e_b + sin(t) e_c, up = e_a).
@@ -45,7 +51,7 @@ OrientationLetters orientationLetters(Axis axis, double angleDeg);
 double scaleBarMm(double pixelsPerMm, double targetPx);
 
 // Draws into the current window's remaining content region; `image` may be null (nothing yet).
-ViewportInteraction drawViewport(const ViewportImage* image, ViewState& view,
+ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& view,
                                  const ViewportOverlay& overlay);
 
 }  // namespace angio

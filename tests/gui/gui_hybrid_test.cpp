@@ -1,9 +1,9 @@
-// The DVR+CPR hybrid in the workstation (thesis fig. 5.4) through the headless twin: the
-// CPR section's checkbox turns the shown VesselGlyph image into the hybrid, which differs from the
-// VesselGlyph image inside the focus footprint and equals it outside the footprint and its
-// transition band; an export writes the shown image with a sidecar from which `angioray render
-// --params` (another process, reading the files) renders the same pixels; a session carries the
-// hybrid's settings (path, band, colouring) in and out.
+// The DVR+CPR hybrid in the workstation through the headless twin: the CPR section's checkbox turns
+// the shown VesselGlyph image into the hybrid, which differs from the VesselGlyph image inside the
+// focus footprint and equals it outside the footprint and its transition band; an export writes the
+// shown image with a sidecar from which `angioray render --params` (another process, reading the
+// files) renders the same pixels; a session carries the hybrid's settings (path, band, colouring)
+// in and out.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>

@@ -1,6 +1,6 @@
-// The VesselGlyph panel through the headless twin: centerlines loaded from the
-// command line or the panel, the VesselGlyph checkbox re-renders with regions, the overlay draws
-// the projected centerlines over the vessels, broken files are reported and the app keeps running.
+// The VesselGlyph panel through the headless twin: centerlines loaded from the command line or the
+// panel, the VesselGlyph checkbox re-renders with regions, the overlay draws the projected
+// centerlines over the vessels, broken files are reported and the app keeps running.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

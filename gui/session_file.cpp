@@ -1,4 +1,4 @@
-#include "io/session_file.h"
+#include "gui/session_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,16 +24,15 @@ namespace {
 constexpr const char* kFormat = "angioray-session";
 constexpr int kVersion = 1;
 
-constexpr const char* kColourings[] = {"cta-lumen", "calcium", "focus-tf"};
 constexpr double kMaxTransitionMm = 100;
 
-Json cprJson(const SessionCpr& cpr) {
+Json cprJson(const CprState& cpr) {
   return {{"shown", cpr.shown}, {"mode", toString(cpr.mode)}, {"path", cpr.path},
-          {"colouring", kColourings[int(cpr.colouring)]}, {"hybrid", cpr.hybrid},
+          {"colouring", cprColouringName(cpr.colouring)}, {"hybrid", cpr.hybrid},
           {"transition_mm", cpr.transitionMm}};
 }
 
-Json vesselGlyphJson(const SessionVesselGlyph& vg) {
+Json vesselGlyphJson(const VesselGlyphState& vg) {
   const auto tfOrNull = [](const TransferFunction& tf) { return tf.points.empty() ? Json(nullptr) : Json::parse(toJson(tf)); };
   Json json = {{"centerlines", vg.centerlines}, {"centerlines_absolute", vg.centerlinesAbsolute},
                {"enabled", vg.enabled}, {"overlay", vg.overlay}};
@@ -55,6 +54,7 @@ Json samplingJson(const Sampling& sampling) {
 struct SessionReader {
   const fs::path& source;
   std::string where = "";  // the keys' section in messages, e.g. "vessel_glyph.focus."
+  Json empty = Json::object();  // a missing section reads as this
 
   [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, problem); }
   SessionReader in(const char* key) const { return {source, where + key + "."}; }
@@ -79,7 +79,6 @@ struct SessionReader {
     return object[key].get<std::string>();
   }
   const Json& section(const Json& object, const char* key) const {
-    static const Json empty = Json::object();
     if (!object.contains(key)) return empty;
     if (!object[key].is_object()) fail(where + key + " is not an object");
     return object[key];
@@ -112,8 +111,8 @@ struct SessionReader {
   }
 
   // The VesselGlyph section (where = "vessel_glyph.").
-  SessionVesselGlyph vesselGlyph(const Json& v) const {
-    SessionVesselGlyph vg;
+  VesselGlyphState vesselGlyph(const Json& v) const {
+    VesselGlyphState vg;
     vg.centerlines = text(v, "centerlines");
     vg.centerlinesAbsolute = text(v, "centerlines_absolute");
     vg.enabled = flag(v, "enabled", vg.enabled);
@@ -152,8 +151,8 @@ struct SessionReader {
     return vg;
   }
 
-  SessionView view(const Json& v) const {
-    SessionView view;
+  ViewState view(const Json& v) const {
+    ViewState view;
     if (v.contains("axis")) {
       const auto axis = parseAxis(text(v, "axis"));
       if (!axis) fail("view axis is not i, j or k");
@@ -186,8 +185,8 @@ struct SessionReader {
     return sampling;
   }
 
-  SessionCpr cpr(const Json& c) const {
-    SessionCpr cpr;
+  CprState cpr(const Json& c) const {
+    CprState cpr;
     cpr.shown = flag(c, "shown", cpr.shown);
     if (c.contains("mode")) {
       const auto mode = parseCprMode(text(c, "mode"));
@@ -198,19 +197,21 @@ struct SessionReader {
     cpr.path = int(number(c, "path", -1, 1e6, cpr.path));
     if (c.contains("colouring")) {
       const std::string colouring = text(c, "colouring");
-      const auto known = std::find(std::begin(kColourings), std::end(kColourings), colouring);
-      if (known == std::end(kColourings)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
-      cpr.colouring = CprColouring(known - std::begin(kColourings));
+      const CprColouring all[] = {CprColouring::ctaLumen, CprColouring::calcium, CprColouring::focusTf};
+      const auto known = std::find_if(std::begin(all), std::end(all),
+                                      [&](CprColouring c) { return colouring == cprColouringName(c); });
+      if (known == std::end(all)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
+      cpr.colouring = *known;
     }
     cpr.hybrid = flag(c, "hybrid", cpr.hybrid);
     cpr.transitionMm = number(c, "transition_mm", 0, kMaxTransitionMm, cpr.transitionMm);
     return cpr;
   }
 
-  Session session(const Json& json) const {
+  Document session(const Json& json) const {
     if (!json.is_object()) fail("a session is a JSON object");
     if (json.contains("format") && text(json, "format") != kFormat) fail("is not an angioray session");
-    Session session;
+    Document session;
     session.dataset = text(json, "dataset");
     session.view = view(section(json, "view"));
     if (json.contains("transfer_function")) {
@@ -248,8 +249,8 @@ struct SessionReader {
 
 }  // namespace
 
-std::string toJson(const Session& session) {
-  const SessionView& v = session.view;
+std::string toJson(const Document& session) {
+  const ViewState& v = session.view;
   Json levels = Json::object();
   for (int q = 0; q < kQualityLevels; ++q) levels[toString(Quality(q))] = samplingJson(session.levels[q]);
   Json panels = Json::object();
@@ -279,7 +280,7 @@ std::string toJson(const Session& session) {
   return json.dump(2);
 }
 
-Session parseSession(const std::string& text, const fs::path& source) {
+Document parseSession(const std::string& text, const fs::path& source) {
   Json json;
   try {
     json = Json::parse(text);
@@ -290,7 +291,7 @@ Session parseSession(const std::string& text, const fs::path& source) {
   return SessionReader{source}.session(json);
 }
 
-Session loadSession(const fs::path& path) {
+Document loadSession(const fs::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, fs::exists(path) ? "cannot be read" : "does not exist");
   std::stringstream text;
@@ -298,7 +299,7 @@ Session loadSession(const fs::path& path) {
   return parseSession(text.str(), path);
 }
 
-void saveSession(const Session& session, const fs::path& path) {
+void saveSession(const Document& session, const fs::path& path) {
   std::error_code error;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
   if (error) throw InputError(path, "cannot create its folder: " + error.message());
@@ -317,11 +318,5 @@ fs::path configDirectory() {
 }
 
 fs::path lastSessionPath() { return configDirectory() / "last-session.json"; }
-
-void addRecentFile(std::vector<std::string>& recent, const std::string& path) {
-  recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
-  recent.insert(recent.begin(), path);
-  if (recent.size() > kMaxRecentFiles) recent.resize(kMaxRecentFiles);
-}
 
 }  // namespace angio

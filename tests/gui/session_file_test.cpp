@@ -1,7 +1,7 @@
 // Session files: a saved session loads back field for field (the VesselGlyph section too); bad
 // files are one-line InputErrors naming the file and the key; the last session lives under
 // XDG_CONFIG_HOME; recent files stay unique and few.
-#include "io/session_file.h"
+#include "gui/session_file.h"
 
 #include <gtest/gtest.h>
 
@@ -48,8 +48,8 @@ class SessionFileTest : public test_support::TempFolderTest {
 };
 
 // Every field away from its default, so a field that is not written or not read shows.
-Session unusualSession() {
-  Session s;
+Document unusualSession() {
+  Document s;
   s.dataset = "/data/cta/aorta.mha";
   s.view = {Axis::j, 123.25, 2.5, {-40.5, 17.0}, 0.8, true, -45};
   s.tf.name = "my vessels";
@@ -65,7 +65,7 @@ Session unusualSession() {
   s.cpr = {true, CprMode::projected, 1, CprColouring::focusTf, true, 3.5};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
-  SessionVesselGlyph& vg = s.vesselGlyph;
+  VesselGlyphState& vg = s.vesselGlyph;
   vg.centerlines = "cl/aorta.vtp";
   vg.centerlinesAbsolute = "/data/cta/cl/aorta.vtp";
   vg.enabled = true;
@@ -111,10 +111,10 @@ void expectSameRadius(const TubeRadius& a, const TubeRadius& b, const char* what
 }
 
 TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
-  const Session saved = unusualSession();
+  const Document saved = unusualSession();
   const fs::path file = dir_ / "sub" / "session.json";  // the folder is created
   saveSession(saved, file);
-  const Session loaded = loadSession(file);
+  const Document loaded = loadSession(file);
   EXPECT_EQ(loaded.dataset, saved.dataset);
   EXPECT_EQ(loaded.view.axis, Axis::j);
   EXPECT_DOUBLE_EQ(loaded.view.angleDeg, 123.25);
@@ -151,7 +151,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
   EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
-  const SessionVesselGlyph &vg = loaded.vesselGlyph, &want = saved.vesselGlyph;
+  const VesselGlyphState &vg = loaded.vesselGlyph, &want = saved.vesselGlyph;
   EXPECT_EQ(vg.centerlines, "cl/aorta.vtp");
   EXPECT_EQ(vg.centerlinesAbsolute, "/data/cta/cl/aorta.vtp");
   EXPECT_TRUE(vg.enabled);
@@ -176,8 +176,8 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
 }
 
 TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
-  const Session loaded = loadSession(write("partial.json", R"({"dataset": "x.mha", "view": {"angle_deg": 90}})"));
-  const Session defaults;
+  const Document loaded = loadSession(write("partial.json", R"({"dataset": "x.mha", "view": {"angle_deg": 90}})"));
+  const Document defaults;
   EXPECT_EQ(loaded.dataset, "x.mha");
   EXPECT_DOUBLE_EQ(loaded.view.angleDeg, 90);
   EXPECT_EQ(loaded.view.axis, defaults.view.axis);
@@ -193,10 +193,10 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
 }
 
 TEST_F(SessionFileTest, VesselGlyphSectionKeepsDefaultsForMissingKeysAndTakesAnUnboundedSlab) {
-  const Session loaded = loadSession(write("vg.json", R"({"vessel_glyph": {"centerlines": "c.csv",
+  const Document loaded = loadSession(write("vg.json", R"({"vessel_glyph": {"centerlines": "c.csv",
       "context": {"half_width_mm": "inf", "back_mm": 5}, "focus": {"radius": 2.5}, "focus_tf": null}})"));
-  const SessionVesselGlyph& vg = loaded.vesselGlyph;
-  const SessionVesselGlyph defaults;
+  const VesselGlyphState& vg = loaded.vesselGlyph;
+  const VesselGlyphState defaults;
   EXPECT_EQ(vg.centerlines, "c.csv");
   EXPECT_TRUE(std::isinf(vg.settings.slab.halfWidthMm));
   EXPECT_DOUBLE_EQ(vg.settings.slab.backMm, 5);
@@ -206,7 +206,7 @@ TEST_F(SessionFileTest, VesselGlyphSectionKeepsDefaultsForMissingKeysAndTakesAnU
   EXPECT_TRUE(vg.focusTf.points.empty());
   EXPECT_EQ(vg.overlay, defaults.overlay);
   // Written back as "inf".
-  Session again = loaded;
+  Document again = loaded;
   again.tf = unusualSession().tf;  // a session always has a main TF
   saveSession(again, dir_ / "again.json");
   EXPECT_TRUE(std::isinf(loadSession(dir_ / "again.json").vesselGlyph.settings.slab.halfWidthMm));

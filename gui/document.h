@@ -1,21 +1,19 @@
 #pragma once
-// Session files: what the workstation needs to come back to where the user left it (dataset,
-// rotation axis and angle, zoom/pan, the full transfer function with its MIP window, shading,
-// the quality levels' sampling, the CPR view and DVR+CPR hybrid settings, the VesselGlyph panel
-// (centerline file, region shapes, focus and context TFs in full), which side-panel sections are
-// open, recently opened files), as JSON. Written atomically; every problem reading one is an
-// InputError, one line naming the file and the key.
-// The window app writes the last session to lastSessionPath() when it quits.
-#include <filesystem>
+// The workstation's document: what the user edits and a session file keeps (dataset, view, main
+// TF with its MIP window, mode, shading, the quality levels' sampling, the CPR view and DVR+CPR
+// hybrid, the VesselGlyph panel's settings and TFs, which side-panel sections are open, recent
+// files), as plain values. Only Workstation::apply (gui/workstation.h) changes one; the session
+// file (gui/session_file.h) is its JSON. Runtime things (textures, the renderer, jobs) live in App.
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "render/progressive_renderer.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
+#include "render/progressive_renderer.h"
 #include "vessel/cpr_layout.h"
 #include "vessel/vessel_glyph.h"
 
@@ -23,7 +21,9 @@ namespace angio {
 
 constexpr std::size_t kMaxRecentFiles = 10;
 
-struct SessionView {
+// Rotation axis and angle (theta of the rendering model, kept in [0, 360)), zoom (1 = the whole
+// volume fits the viewport), pan (screen pixels), drag speed, auto-spin.
+struct ViewState {
   Axis axis = Axis::k;
   double angleDeg = 0;
   double zoom = 1;
@@ -32,17 +32,19 @@ struct SessionView {
   bool autoSpin = false;
   double spinDegreesPerSecond = 30;
 
-  friend bool operator==(const SessionView&, const SessionView&) = default;
+  friend bool operator==(const ViewState&, const ViewState&) = default;
 };
 
 // How the CPR section colours a CPR: grey through the CTA-lumen or calcium window
 // (vessel/cpr_display.h), or through the VesselGlyph focus TF.
 enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
 
-// The CPR section: the view beside the image and the DVR+CPR hybrid in the
-// image share the path and the colouring. (The VesselGlyph settings the hybrid builds on are
-// SessionVesselGlyph's.)
-struct SessionCpr {
+// "cta-lumen", "calcium", "focus-tf" (session files and the state report).
+const char* cprColouringName(CprColouring colouring);
+
+// The CPR section: the view beside the image and the DVR+CPR hybrid in the image share the path
+// and the colouring. (The VesselGlyph settings the hybrid builds on are VesselGlyphState's.)
+struct CprState {
   bool shown = false;  // the CPR view beside the image
   CprMode mode = CprMode::straightened;
   int path = -1;       // centerline path index, -1 = all paths
@@ -50,14 +52,11 @@ struct SessionCpr {
   bool hybrid = false;       // the DVR+CPR hybrid (needs VesselGlyph on)
   double transitionMm = 0;   // the hybrid's transition band, 0 = hard edge
 
-  friend bool operator==(const SessionCpr&, const SessionCpr&) = default;
+  friend bool operator==(const CprState&, const CprState&) = default;
 };
 
-// The VesselGlyph panel (gui/app_vessel.h): the centerline file and what the user
-// set. JSON "vessel_glyph": {"centerlines", "centerlines_absolute", "enabled", "overlay", the
-// settings in io/vessel_glyph_json.h's form, "outside": "clip" | "main-tf", "focus_tf",
-// "context_tf" (TF JSON or null), "focus_preset", "context_preset"}.
-struct SessionVesselGlyph {
+// The VesselGlyph panel (thesis ch. 5): the centerline file and what the user set.
+struct VesselGlyphState {
   std::string centerlines;          // the centerline file as given ("" = none)
   std::string centerlinesAbsolute;  // the same, absolute when it was loaded (tried first)
   bool enabled = false;             // VesselGlyph rendering on
@@ -67,36 +66,44 @@ struct SessionVesselGlyph {
   TransferFunction focusTf, contextTf;  // no points: the presets below, loaded on first use
   std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";  // "" = edited
 
-  friend bool operator==(const SessionVesselGlyph&, const SessionVesselGlyph&) = default;
+  friend bool operator==(const VesselGlyphState&, const VesselGlyphState&) = default;
 };
 
-struct Session {
+struct Document {
   std::string dataset;  // file or folder; "phantom IxJxK" for the generated phantom
-  SessionView view;
+  ViewState view;
   TransferFunction tf;   // includes the MIP window/level
   std::string tfPreset;  // empty if edited or loaded from a file
   Compositing mode = Compositing::dvr;
   Shading shading;
   LevelSamplings levels = defaultLevelSamplings();
-  SessionCpr cpr;
-  SessionVesselGlyph vesselGlyph;
+  CprState cpr;
+  VesselGlyphState vesselGlyph;
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 
-  friend bool operator==(const Session&, const Session&) = default;
+  friend bool operator==(const Document&, const Document&) = default;
 };
 
-std::string toJson(const Session& session);
-Session parseSession(const std::string& json, const std::filesystem::path& source);
-Session loadSession(const std::filesystem::path& path);
-void saveSession(const Session& session, const std::filesystem::path& path);  // atomic
+// Which TF the TF editor edits.
+enum class TfTarget { main = 0, focus = 1, context = 2 };
 
-// $XDG_CONFIG_HOME/angioray, else $HOME/.config/angioray (created by saveSession as needed).
-std::filesystem::path configDirectory();
-// configDirectory() / "last-session.json".
-std::filesystem::path lastSessionPath();
+const char* tfTargetName(TfTarget target);  // "main", "focus", "context"
+const TransferFunction& tfOf(const Document& document, TfTarget target);
+const std::string& presetOf(const Document& document, TfTarget target);
+
+// theta wrapped into [0, 360).
+double wrapDegrees(double degrees);
+
+// The render parameters the document asks for (sampling left at its default: each level sets it).
+RenderParams renderParamsOf(const Document& document);
 
 // Puts `path` first in `recent` (removing an older entry of it), keeping kMaxRecentFiles.
 void addRecentFile(std::vector<std::string>& recent, const std::string& path);
+
+// "phantom IxJxK" names the generated phantom rather than a file.
+bool isPhantomName(const std::string& dataset);
+// A dataset on disk as an absolute path (sessions and sidecars work from any folder), else as is.
+std::string absoluteDataset(const std::string& dataset);
 
 }  // namespace angio

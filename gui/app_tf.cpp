@@ -1,0 +1,67 @@
+// TF editing in App: the Transfer function section (gui/panel_tf.h) and what it asks for, the
+// editor's target (main, focus or context) with an undo stack each (gui/tf_targets.h).
+#include <exception>
+
+#include "gui/app.h"
+#include "gui/panel_tf.h"
+
+namespace angio {
+
+const std::string& App::editedPreset() const { return presetOf(doc(), tfTargets_.editing()); }
+
+const TransferFunction& App::editedTf() const { return tfOf(doc(), tfTargets_.editing()); }
+
+void App::applyTf(const TransferFunction& tf, const std::string& preset) {
+  tfTargets_.history().push(editedTf());
+  commit(TfChange{tfTargets_.editing(), tf, preset});
+  tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
+}
+
+void App::undoTf() {
+  if (tfPanel_.editor.gestureBefore) return;  // not in the middle of an edit
+  if (auto previous = tfTargets_.history().undo(editedTf())) commit(TfChange{tfTargets_.editing(), *previous, ""});
+}
+
+void App::redoTf() {
+  if (tfPanel_.editor.gestureBefore) return;
+  if (auto next = tfTargets_.history().redo(editedTf())) commit(TfChange{tfTargets_.editing(), *next, ""});
+}
+
+void App::drawTfSection() {
+  if (!sectionHeader("Transfer function")) return;
+  TfPanelInfo info;
+  info.editing = tfTargets_.editing();
+  info.targetsShown = vessel_.physical || tfTargets_.editing() != TfTarget::main;
+  info.canUndo = tfTargets_.history().canUndo();
+  info.canRedo = tfTargets_.history().canRedo();
+  info.histogram = &histogram_;
+  info.presets = &presets_;
+  TfPanelRequests requests = drawTfPanel(doc(), tfPanel_, info, widgetRects_);
+  if (!requests.message.empty()) message_ = requests.message;
+  if (requests.replace) applyTf(requests.replace->tf, requests.replace->preset);
+  if (requests.undo) undoTf();
+  if (requests.redo) redoTf();
+  if (requests.committedBefore) tfTargets_.history().push(*requests.committedBefore);
+  if (requests.edit) commit(*requests.edit);
+  if (requests.save) saveEditedTf();
+  if (requests.switchTo) switchTfTarget(*requests.switchTo);  // last: the requests above are the old target's
+}
+
+void App::saveEditedTf() {
+  try {
+    saveTransferFunction(editedTf(), tfPanel_.path);
+    message_ = "saved " + tfPanel_.path;
+  } catch (const std::exception& error) {
+    message_ = error.what();
+  }
+}
+
+// Each target keeps its own undo stack; not in the middle of an edit gesture.
+void App::switchTfTarget(TfTarget target) {
+  if (tfPanel_.editor.gestureBefore) return;
+  loadMissingRegionTfs();
+  tfTargets_.edit(target);
+  tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
+}
+
+}  // namespace angio

@@ -1,0 +1,67 @@
+#include "gui/document.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace angio {
+
+const char* cprColouringName(CprColouring colouring) {
+  constexpr const char* kNames[] = {"cta-lumen", "calcium", "focus-tf"};
+  return kNames[int(colouring)];
+}
+
+const char* tfTargetName(TfTarget target) {
+  constexpr const char* kNames[] = {"main", "focus", "context"};
+  return kNames[int(target)];
+}
+
+const TransferFunction& tfOf(const Document& document, TfTarget target) {
+  switch (target) {
+    case TfTarget::focus: return document.vesselGlyph.focusTf;
+    case TfTarget::context: return document.vesselGlyph.contextTf;
+    case TfTarget::main: break;
+  }
+  return document.tf;
+}
+
+const std::string& presetOf(const Document& document, TfTarget target) {
+  switch (target) {
+    case TfTarget::focus: return document.vesselGlyph.focusPreset;
+    case TfTarget::context: return document.vesselGlyph.contextPreset;
+    case TfTarget::main: break;
+  }
+  return document.tfPreset;
+}
+
+double wrapDegrees(double degrees) {
+  const double wrapped = std::fmod(degrees, 360.0);
+  return wrapped < 0 ? wrapped + 360.0 : wrapped;
+}
+
+RenderParams renderParamsOf(const Document& document) {
+  RenderParams params;
+  params.axis = document.view.axis;
+  params.angleDeg = document.view.angleDeg;
+  params.shading = document.shading;
+  params.compositing = document.mode;
+  params.mip = {document.tf.mipWindow, document.tf.mipLevel};
+  return params;
+}
+
+void addRecentFile(std::vector<std::string>& recent, const std::string& path) {
+  recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
+  recent.insert(recent.begin(), path);
+  if (recent.size() > kMaxRecentFiles) recent.resize(kMaxRecentFiles);
+}
+
+bool isPhantomName(const std::string& dataset) { return dataset.rfind("phantom ", 0) == 0; }
+
+std::string absoluteDataset(const std::string& dataset) {
+  std::error_code error;
+  if (isPhantomName(dataset) || !std::filesystem::exists(dataset, error)) return dataset;
+  const std::filesystem::path absolute = std::filesystem::absolute(dataset, error);
+  return error ? dataset : absolute.lexically_normal().string();
+}
+
+}  // namespace angio

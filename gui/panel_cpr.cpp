@@ -1,0 +1,78 @@
+#include "gui/panel_cpr.h"
+
+#include <iterator>
+
+#include <imgui.h>
+
+namespace angio {
+
+namespace {
+
+constexpr double kMaxTransitionMm = 10;
+constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
+constexpr const char* kColourings[] = {"CTA lumen", "calcium", "focus TF"};
+constexpr const char* kColouringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
+const ImVec4 kErrorColour(1, 0.45f, 0.35f, 1), kWarningColour(1, 0.8f, 0.4f, 1);
+
+void drawCprView(CprState& cpr, const Centerlines& centerlines, WidgetRects& rects) {
+  ImGui::Checkbox("CPR view beside the image", &cpr.shown);
+  noteRect(rects, "cpr_shown");
+  for (std::size_t n = 0; n < std::size(kModes); ++n) {
+    if (n) ImGui::SameLine();
+    if (ImGui::RadioButton(toString(kModes[n]), cpr.mode == kModes[n])) cpr.mode = kModes[n];
+    noteRect(rects, std::string("cpr_mode_") + toString(kModes[n]));
+  }
+  ImGui::SetNextItemWidth(220);
+  if (ImGui::BeginCombo("path##cpr", cprPathLabel(centerlines, cpr.path).c_str())) {
+    for (int n = -1; n < int(centerlines.paths.size()); ++n)
+      if (ImGui::Selectable(cprPathLabel(centerlines, n).c_str(), cpr.path == n)) cpr.path = n;
+    ImGui::EndCombo();
+  }
+  noteRect(rects, "cpr_path");
+  ImGui::TextUnformatted("colour");
+  for (int n = 0; n < 3; ++n) {
+    ImGui::SameLine();
+    if (ImGui::RadioButton(kColourings[n], int(cpr.colouring) == n)) cpr.colouring = CprColouring(n);
+    noteRect(rects, std::string("cpr_colour_") + kColouringKeys[n]);
+  }
+}
+
+void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, WidgetRects& rects) {
+  ImGui::Separator();
+  ImGui::Checkbox("DVR+CPR hybrid", &cpr.hybrid);
+  // As it will be once this frame's edit is applied: turning the hybrid on turns VesselGlyph on.
+  const bool vesselGlyphOn = info.vesselGlyphEnabled || (cpr.hybrid && !hybridBefore);
+  noteRect(rects, "cpr_hybrid");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The projected CPR of the path above, coloured as above, in the VesselGlyph "
+                      "focus's footprint of the image (thesis fig. 5.4)");
+  if (!cpr.hybrid) return;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(150);
+  const double lo = 0, hi = kMaxTransitionMm;
+  ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm");
+  noteRect(rects, "cpr_transition");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Width of the band over which the CPR fades into the DVR (0: hard edge)");
+  if (!vesselGlyphOn) ImGui::TextColored(kWarningColour, "the hybrid needs VesselGlyph on (its focus is the cut)");
+  if (!info.hybridProblem.empty()) ImGui::TextColored(kErrorColour, "%s", info.hybridProblem.c_str());
+}
+
+}  // namespace
+
+std::string cprPathLabel(const Centerlines& centerlines, int path) {
+  if (path < 0 || path >= int(centerlines.paths.size())) return "all paths";
+  const std::string& name = centerlines.paths[path].name;
+  return std::to_string(path) + (name.empty() ? "" : ": " + name);
+}
+
+std::optional<CprEdit> drawCprPanel(const CprState& cpr, const CprPanelInfo& info, WidgetRects& rects) {
+  if (!info.physical) return std::nullopt;
+  CprState edited = cpr;
+  drawCprView(edited, *info.physical, rects);
+  if (!info.error.empty()) ImGui::TextColored(kErrorColour, "%s", info.error.c_str());
+  drawHybrid(edited, cpr.hybrid, info, rects);
+  if (edited == cpr) return std::nullopt;
+  return CprEdit{edited};
+}
+
+}  // namespace angio

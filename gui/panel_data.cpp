@@ -1,0 +1,73 @@
+#include "gui/panel_data.h"
+
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "core/voxel.h"
+#include "gui/viewport.h"
+
+namespace angio {
+
+namespace {
+
+void drawLoad(const DataPanelInfo& info, DataPanelRequests& requests, WidgetRects& rects) {
+  if (info.loading) {
+    char label[64];
+    std::snprintf(label, sizeof label, "loading %.0f%% (%.0f s)", 100 * info.loadProgress, info.loadSeconds);
+    ImGui::ProgressBar(float(info.loadProgress), ImVec2(260, 0), label);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(info.cancelRequested);
+    if (ImGui::Button("Cancel##load")) requests.cancelLoad = true;
+    ImGui::EndDisabled();
+    ImGui::TextDisabled("%s", info.loadPath.c_str());
+  }
+  if (info.loadError.empty()) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.35f, 1));
+  ImGui::TextWrapped("could not open: %s", info.loadError.c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::SmallButton("Dismiss##loaderror")) requests.dismissError = true;
+  noteRect(rects, "data_dismiss");
+}
+
+void drawDataset(const DataPanelInfo& info) {
+  ImGui::TextWrapped("%s", info.name.c_str());
+  if (!info.description.empty()) ImGui::TextDisabled("%s", info.description.c_str());
+  if (info.volume) {
+    const Volume& v = *info.volume;
+    ImGui::Text("%d x %d x %d voxels, %.3g x %.3g x %.3g mm", v.dims.x, v.dims.y, v.dims.z, v.spacing.x,
+                v.spacing.y, v.spacing.z);
+    ImGui::Text("axes i j k -> %c %c %c, origin %.1f %.1f %.1f mm (LPS)", lpsLetter(v.direction[0]),
+                lpsLetter(v.direction[1]), lpsLetter(v.direction[2]), v.origin.x, v.origin.y, v.origin.z);
+    if (ImGui::IsItemHovered()) {
+      const glm::dmat3& d = v.direction;
+      ImGui::SetTooltip("direction (columns = i, j, k in LPS):\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f",
+                        d[0].x, d[1].x, d[2].x, d[0].y, d[1].y, d[2].y, d[0].z, d[1].z, d[2].z);
+    }
+  }
+  if (info.densities)
+    ImGui::Text("HU %.0f .. %.0f", huOfDensity(info.densities->minDensity), huOfDensity(info.densities->maxDensity));
+  else
+    ImGui::TextDisabled("HU range: counting...");
+}
+
+}  // namespace
+
+DataPanelRequests drawDataPanel(const Document& document, const DataPanelInfo& info, WidgetRects& rects) {
+  DataPanelRequests requests;
+  requests.browse = ImGui::Button("Open...");
+  noteRect(rects, "data_open");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::BeginCombo("##recent", "recent files")) {
+    for (const std::string& file : document.recentFiles)
+      if (ImGui::Selectable(file.c_str())) requests.open = file;
+    if (document.recentFiles.empty()) ImGui::TextDisabled("(none yet)");
+    ImGui::EndCombo();
+  }
+  drawLoad(info, requests, rects);
+  drawDataset(info);
+  return requests;
+}
+
+}  // namespace angio

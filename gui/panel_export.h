@@ -1,0 +1,33 @@
+#pragma once
+// The Export section: one image of the current view at a chosen image sampling distance, and a
+// rotation series (render/series_export.h), each with its running job's progress and Cancel.
+// The settings are the section's own; what it returns are requests.
+#include <string>
+
+#include "gui/panel_widgets.h"
+#include "render/series_export.h"
+
+namespace angio {
+
+struct ExportPanelUi {
+  std::string path = "angioray-export.png";
+  double isd = 0.5;  // voxel units
+};
+
+// A background job as the section shows it.
+struct JobInfo {
+  bool running = false;
+  double progress = 0;  // [0, 1]
+  double seconds = 0;   // since it started
+  bool cancelRequested = false;
+};
+
+struct ExportRequests {
+  bool start = false, cancel = false;
+};
+
+ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRects& rects);
+// The settings of `series` (folder, angles, format, movie) and its last movie note.
+ExportRequests drawSeriesExport(SeriesPanel& series, const JobInfo& job, WidgetRects& rects);
+
+}  // namespace angio

@@ -1,0 +1,58 @@
+#include "gui/panel_rendering.h"
+
+#include <iterator>
+
+#include <imgui.h>
+
+#include "gui/panel_widgets.h"
+
+namespace angio {
+
+namespace {
+
+struct NamedWindow {
+  const char* label;
+  double window, level;
+};
+constexpr NamedWindow kMipWindows[] = {{"CTA", 800, 300}, {"bone", 1500, 500}, {"soft tissue", 400, 40}};
+
+void drawMipWindow(RenderingEdit& edit) {
+  float window = float(edit.mipWindow), level = float(edit.mipLevel);
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::SliderFloat("window (HU)", &window, 1, 4000, "%.0f")) edit.mipWindow = window;
+  ImGui::SetNextItemWidth(200);
+  if (ImGui::SliderFloat("level (HU)", &level, -1024, 3071, "%.0f")) edit.mipLevel = level;
+  for (std::size_t n = 0; n < std::size(kMipWindows); ++n) {
+    if (n) ImGui::SameLine();
+    if (ImGui::SmallButton(kMipWindows[n].label))
+      edit.mipWindow = kMipWindows[n].window, edit.mipLevel = kMipWindows[n].level;
+  }
+}
+
+void drawShading(Shading& shading) {
+  ImGui::Checkbox("shading", &shading.enabled);
+  if (!shading.enabled) return;
+  float ka = float(shading.ka), kd = float(shading.kd);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  if (ImGui::SliderFloat("ka", &ka, 0, 1, "%.2f")) shading.ka = ka;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  if (ImGui::SliderFloat("kd", &kd, 0, 1, "%.2f")) shading.kd = kd;
+}
+
+}  // namespace
+
+std::optional<RenderingEdit> drawRenderingPanel(const Document& document) {
+  const RenderingEdit before{document.mode, document.shading, document.tf.mipWindow, document.tf.mipLevel};
+  RenderingEdit edit = before;
+  bool mip = edit.mode == Compositing::mip;
+  if (ImGui::Checkbox("MIP", &mip)) edit.mode = mip ? Compositing::mip : Compositing::dvr;
+  helpMarker("Maximum intensity projection through a window/level instead of the transfer function.");
+  if (mip) drawMipWindow(edit);
+  else drawShading(edit.shading);
+  if (edit == before) return std::nullopt;
+  return edit;
+}
+
+}  // namespace angio

@@ -1,0 +1,144 @@
+#include "gui/panel_vessel_glyph.h"
+
+#include <cstdio>
+#include <exception>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace angio {
+
+namespace {
+
+constexpr const char* kContextNames[] = {"none", "slab", "tube"};
+const ImVec4 kErrorColour(1, 0.45f, 0.35f, 1), kWarningColour(1, 0.8f, 0.4f, 1);
+
+// A slider for a double; true when it changed.
+bool sliderMm(const char* label, double& value, double lo, double hi, const char* format = "%.1f mm") {
+  ImGui::SetNextItemWidth(180);
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format);
+}
+
+// The preset combo of a region TF: loads the chosen preset into `tf`.
+void regionTfCombo(const char* label, const std::vector<Preset>& presets, TransferFunction& tf,
+                   std::string& preset, std::string& message) {
+  const std::string current = preset.empty() ? tf.name + " (edited)" : preset;
+  ImGui::SetNextItemWidth(200);
+  if (!ImGui::BeginCombo(label, current.c_str())) return;
+  for (const Preset& candidate : presets) {
+    if (!ImGui::Selectable(candidate.id.c_str(), candidate.id == preset)) continue;
+    try {
+      tf = loadPresetOrFile(candidate.file.string());
+      preset = candidate.id;
+    } catch (const std::exception& error) {
+      message = error.what();
+    }
+  }
+  ImGui::EndCombo();
+}
+
+// The file field, the Load button and what the last load gave.
+bool drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info, WidgetRects& rects) {
+  ImGui::SetNextItemWidth(230);
+  ImGui::InputText("##vgpath", &ui.path);
+  noteRect(rects, "vg_path");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(info.loading);
+  const bool load = ImGui::Button("Load centerlines...");
+  ImGui::EndDisabled();
+  noteRect(rects, "vg_load");
+  if (info.loading) ImGui::TextDisabled("loading %s ...", info.loadingFile.c_str());
+  if (!info.error.empty()) ImGui::TextColored(kErrorColour, "%s", info.error.c_str());
+  if (info.physical)
+    ImGui::TextDisabled("%zu paths, %zu points: %s", info.physical->paths.size(), centerlinePointCount(*info.physical),
+                        info.file.c_str());
+  if (!info.warnings.empty()) ImGui::TextColored(kWarningColour, "%s", info.warnings.c_str());
+  return load;
+}
+
+void drawFocus(TubeRadius& focus, WidgetRects& rects) {
+  ImGui::TextUnformatted("focus radius");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("x vessel radius", focus.mode == RadiusMode::kVesselFactor))
+    focus = {RadiusMode::kVesselFactor, 2.0, 0.0};
+  noteRect(rects, "vg_focus_factor");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("mm##focus", focus.mode == RadiusMode::kConstant)) focus = {RadiusMode::kConstant, 5.0, 0.0};
+  noteRect(rects, "vg_focus_mm");
+  if (focus.mode == RadiusMode::kVesselFactor) {
+    ImGui::SetNextItemWidth(180);
+    const double lo = 0.5, hi = 6;
+    ImGui::SliderScalar("x radius##focus", ImGuiDataType_Double, &focus.value, &lo, &hi, "%.2fx");
+  } else {
+    sliderMm("radius##focus", focus.value, 0.5, 40);
+  }
+  noteRect(rects, "vg_focus_radius");
+}
+
+void drawContext(VesselGlyphSettings& s, WidgetRects& rects) {
+  ImGui::TextUnformatted("context");
+  for (int n = 0; n < 3; ++n) {
+    ImGui::SameLine();
+    char label[32];
+    std::snprintf(label, sizeof label, "%s##context", kContextNames[n]);
+    if (ImGui::RadioButton(label, int(s.context) == n)) s.context = ContextShape(n);
+    noteRect(rects, std::string("vg_context_") + kContextNames[n]);
+  }
+  if (s.context == ContextShape::kSlab) {
+    sliderMm("in front (d1)", s.slab.frontMm, 0, 200);
+    sliderMm("behind (d2)", s.slab.backMm, 0, 200);
+    sliderMm("half width", s.slab.halfWidthMm, 5, 300);
+  } else if (s.context == ContextShape::kTube) {
+    s.contextTube.mode = RadiusMode::kConstant;
+    sliderMm("radius##context", s.contextTube.value, 1, 150);
+  }
+}
+
+void drawOutsideAndCuts(VesselGlyphState& set, WidgetRects& rects) {
+  ImGui::TextUnformatted("outside");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("clipped", !set.outsideRendered)) set.outsideRendered = false;
+  ImGui::SameLine();
+  if (ImGui::RadioButton("main TF", set.outsideRendered)) set.outsideRendered = true;
+  noteRect(rects, "vg_outside_main");
+  ImGui::Checkbox("foreground cleft", &set.settings.cleft);
+  noteRect(rects, "vg_cleft");
+  ImGui::SameLine();
+  ImGui::Checkbox("half vessel", &set.settings.halfVessel);
+  noteRect(rects, "vg_half_vessel");
+}
+
+}  // namespace
+
+std::size_t centerlinePointCount(const Centerlines& centerlines) {
+  std::size_t n = 0;
+  for (const CenterlinePath& path : centerlines.paths) n += path.points.size();
+  return n;
+}
+
+VesselGlyphPanelResult drawVesselGlyphPanel(const VesselGlyphState& state, VesselGlyphPanelUi& ui,
+                                            const VesselGlyphPanelInfo& info, WidgetRects& rects) {
+  VesselGlyphPanelResult result;
+  result.loadCenterlines = drawLoading(ui, info, rects);
+  if (!info.physical) return result;  // the rest once there are centerlines
+
+  VesselGlyphState set = state;
+  ImGui::Checkbox("VesselGlyph on", &set.enabled);
+  noteRect(rects, "vg_enable");
+  ImGui::SameLine();
+  ImGui::Checkbox("centerline overlay", &set.overlay);
+  noteRect(rects, "vg_overlay");
+  if (!info.problem.empty()) ImGui::TextColored(kErrorColour, "%s", info.problem.c_str());
+  drawFocus(set.settings.focus, rects);
+  drawContext(set.settings, rects);
+  drawOutsideAndCuts(set, rects);
+  if (info.presets) {
+    regionTfCombo("focus TF", *info.presets, set.focusTf, set.focusPreset, result.message);
+    regionTfCombo("context TF", *info.presets, set.contextTf, set.contextPreset, result.message);
+  }
+  ImGui::TextDisabled("edit them in the TF editor: \"TF editor edits\" above it");
+  if (!(set == state)) result.edit = VesselGlyphEdit{std::move(set)};
+  return result;
+}
+
+}  // namespace angio

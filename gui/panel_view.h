@@ -1,0 +1,12 @@
+#pragma once
+// The View section: rotation axis and angle, the named radiological views, auto-spin, drag speed,
+// zoom/pan reset. Returns the edited view when a widget changed it.
+#include <optional>
+
+#include "gui/workstation.h"
+
+namespace angio {
+
+std::optional<ViewEdit> drawViewPanel(const ViewState& view);
+
+}  // namespace angio

@@ -1,0 +1,26 @@
+#pragma once
+// Session files: the workstation's document (gui/document.h) as JSON, so the user comes back to
+// where they left off. The VesselGlyph section is "vessel_glyph": {"centerlines",
+// "centerlines_absolute", "enabled", "overlay", the settings in io/vessel_glyph_json.h's form,
+// "outside": "clip" | "main-tf", "focus_tf", "context_tf" (TF JSON or null), "focus_preset",
+// "context_preset"}. Written atomically; every problem reading one is an
+// InputError, one line naming the file and the key.
+// The window app writes the last session to lastSessionPath() when it quits.
+#include <filesystem>
+#include <string>
+
+#include "gui/document.h"
+
+namespace angio {
+
+std::string toJson(const Document& session);
+Document parseSession(const std::string& json, const std::filesystem::path& source);
+Document loadSession(const std::filesystem::path& path);
+void saveSession(const Document& session, const std::filesystem::path& path);  // atomic
+
+// $XDG_CONFIG_HOME/angioray, else $HOME/.config/angioray (created by saveSession as needed).
+std::filesystem::path configDirectory();
+// configDirectory() / "last-session.json".
+std::filesystem::path lastSessionPath();
+
+}  // namespace angio

@@ -1,0 +1,75 @@
+#include "gui/workstation.h"
+
+#include <utility>
+
+namespace angio {
+
+namespace {
+
+TransferFunction& tfIn(Document& document, TfTarget target) {
+  if (target == TfTarget::focus) return document.vesselGlyph.focusTf;
+  if (target == TfTarget::context) return document.vesselGlyph.contextTf;
+  return document.tf;
+}
+std::string& presetIn(Document& document, TfTarget target) {
+  if (target == TfTarget::focus) return document.vesselGlyph.focusPreset;
+  if (target == TfTarget::context) return document.vesselGlyph.contextPreset;
+  return document.tfPreset;
+}
+
+void change(Document& d, const ViewEdit& edit) { d.view = edit.view; }
+void change(Document& d, const RotateEdit& edit) { d.view.angleDeg += edit.degrees; }
+void change(Document& d, const TfChange& edit) {
+  tfIn(d, edit.target) = edit.tf;
+  presetIn(d, edit.target) = edit.preset;
+}
+void change(Document& d, const RenderingEdit& edit) {
+  d.mode = edit.mode;
+  d.shading = edit.shading;
+  d.tf.mipWindow = edit.mipWindow;
+  d.tf.mipLevel = edit.mipLevel;
+}
+void change(Document& d, const VesselGlyphEdit& edit) { d.vesselGlyph = edit.vesselGlyph; }
+void change(Document& d, const CprEdit& edit) { d.cpr = edit.cpr; }
+void change(Document& d, const CenterlineFileEdit& edit) {
+  d.vesselGlyph.centerlines = edit.given;
+  d.vesselGlyph.centerlinesAbsolute = edit.absolute;
+}
+void change(Document& d, const DatasetOpened& edit) {
+  d.dataset = edit.dataset;
+  d.view.zoom = 1;
+  d.view.panPx = glm::dvec2(0.0);
+  addRecentFile(d.recentFiles, edit.dataset);
+}
+void change(Document& d, const RecentFilesEdit& edit) { d.recentFiles = edit.recentFiles; }
+void change(Document& d, const PanelOpenEdit& edit) { d.panelsOpen[edit.title] = edit.open; }
+void change(Document& d, const SessionEdit& edit) {
+  std::string dataset = std::move(d.dataset);
+  std::vector<std::string> recent = std::move(d.recentFiles);
+  d = edit.session;
+  d.dataset = std::move(dataset);
+  d.recentFiles = std::move(recent);
+}
+
+// `brought`: the edit set the hybrid from elsewhere (a session) rather than toggling it.
+void normalise(Document& next, const Document& before, bool brought) {
+  next.view.angleDeg = wrapDegrees(next.view.angleDeg);
+  if (next.cpr.hybrid && (brought || !before.cpr.hybrid)) next.vesselGlyph.enabled = true;
+}
+
+}  // namespace
+
+Workstation::Workstation(Document initial) : document_(std::move(initial)) {
+  normalise(document_, document_, true);
+}
+
+void Workstation::apply(const Edit& edit) {
+  Document next = document_;
+  std::visit([&next](const auto& e) { change(next, e); }, edit);
+  normalise(next, document_, std::holds_alternative<SessionEdit>(edit));
+  if (next == document_) return;
+  document_ = std::move(next);
+  ++version_;
+}
+
+}  // namespace angio

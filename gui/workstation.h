@@ -1,0 +1,97 @@
+#pragma once
+// The workstation model: the document (gui/document.h) and the edits that change it. Panels draw
+// from the document and return edits; App hands them to apply(), the one place the document
+// changes, which keeps its invariants and bumps the version the renderer side compares (as Open
+// VKL's Versioned does) instead of diffing fields by hand.
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "gui/document.h"
+
+namespace angio {
+
+// The View section's settings as edited (the angle is wrapped by apply).
+struct ViewEdit {
+  ViewState view;
+  friend bool operator==(const ViewEdit&, const ViewEdit&) = default;
+};
+// A turn by a drag, an arrow key or the auto-spin, relative to the angle at the time it applies.
+struct RotateEdit {
+  double degrees = 0;
+  friend bool operator==(const RotateEdit&, const RotateEdit&) = default;
+};
+// A TF of the TF editor's targets (main, focus or context) and its preset ("" = edited).
+struct TfChange {
+  TfTarget target = TfTarget::main;
+  TransferFunction tf;
+  std::string preset;
+  friend bool operator==(const TfChange&, const TfChange&) = default;
+};
+// The Rendering section: DVR or MIP, its MIP window (kept in the main TF) and shading.
+struct RenderingEdit {
+  Compositing mode = Compositing::dvr;
+  Shading shading;
+  double mipWindow = 0, mipLevel = 0;
+  friend bool operator==(const RenderingEdit&, const RenderingEdit&) = default;
+};
+struct VesselGlyphEdit {
+  VesselGlyphState vesselGlyph;
+  friend bool operator==(const VesselGlyphEdit&, const VesselGlyphEdit&) = default;
+};
+struct CprEdit {
+  CprState cpr;
+  friend bool operator==(const CprEdit&, const CprEdit&) = default;
+};
+// The centerline file now loaded, as given and absolute ("" and "": none).
+struct CenterlineFileEdit {
+  std::string given, absolute;
+  friend bool operator==(const CenterlineFileEdit&, const CenterlineFileEdit&) = default;
+};
+// A dataset replaced the shown one: it is the document's, zoom and pan start over, it heads the
+// recent files.
+struct DatasetOpened {
+  std::string dataset;
+  friend bool operator==(const DatasetOpened&, const DatasetOpened&) = default;
+};
+struct RecentFilesEdit {
+  std::vector<std::string> recentFiles;
+  friend bool operator==(const RecentFilesEdit&, const RecentFilesEdit&) = default;
+};
+// A side-panel section opened or closed.
+struct PanelOpenEdit {
+  std::string title;
+  bool open = true;
+  friend bool operator==(const PanelOpenEdit&, const PanelOpenEdit&) = default;
+};
+// A session's contents: everything but the dataset (its load replaces it, DatasetOpened) and the
+// recent files (the app's own list).
+struct SessionEdit {
+  Document session;
+  friend bool operator==(const SessionEdit&, const SessionEdit&) = default;
+};
+
+using Edit = std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
+                          CenterlineFileEdit, DatasetOpened, RecentFilesEdit, PanelOpenEdit, SessionEdit>;
+
+class Workstation {
+ public:
+  // `initial` is normalised as a session's contents are.
+  explicit Workstation(Document initial = {});
+
+  const Document& document() const { return document_; }
+  // Bumped by every apply that changed the document.
+  std::uint64_t version() const { return version_; }
+
+  // Invariants, kept here only: the angle is in [0, 360); an edit or a session that turns the
+  // DVR+CPR hybrid on turns VesselGlyph on (its focus is the hybrid's cut). VesselGlyph may be
+  // turned off again while the hybrid is on: the CPR section then says the hybrid waits for it.
+  void apply(const Edit& edit);
+
+ private:
+  Document document_;
+  std::uint64_t version_ = 0;
+};
+
+}  // namespace angio

@@ -1,0 +1,315 @@
+// The side panel's sections as functions: drawn in an ImGui context with no window or renderer
+// behind it, driven by mouse input over a few frames; what they return is checked, and applied.
+#include <gtest/gtest.h>
+
+#include <imgui.h>
+
+#include "gui/panel_cpr.h"
+#include "gui/panel_data.h"
+#include "gui/panel_export.h"
+#include "gui/panel_rendering.h"
+#include "gui/panel_session.h"
+#include "gui/panel_tf.h"
+#include "gui/panel_vessel_glyph.h"
+#include "gui/panel_view.h"
+#include "gui/viewport.h"
+#include "gui/workstation.h"
+
+namespace angio {
+namespace {
+
+// An ImGui context of its own per test: one window filling the display, frames 1/60 s apart.
+class GuiPanels : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    context_ = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(kWidth, kHeight);
+    io.DeltaTime = 1.f / 60;
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+  }
+  void TearDown() override { ImGui::DestroyContext(context_); }
+
+  // One frame with the mouse at `mouse`, the left button as given; returns what `draw` returned.
+  template <class Draw>
+  auto frame(Draw draw, ImVec2 mouse = ImVec2(-1, -1), bool leftDown = false) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = mouse;
+    io.MouseDown[0] = leftDown;
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(io.DisplaySize);
+    ImGui::Begin("panel", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
+    auto result = draw();
+    ImGui::End();
+    ImGui::Render();
+    return result;
+  }
+
+  // A click at `at`: hover, press, release; returns what `draw` returned on the release frame.
+  template <class Draw>
+  auto click(Draw draw, ImVec2 at) {
+    frame(draw, at, false);
+    frame(draw, at, true);
+    return frame(draw, at, false);
+  }
+
+  static ImVec2 centre(const std::pair<ImVec2, ImVec2>& rect) {
+    return ImVec2((rect.first.x + rect.second.x) / 2, (rect.first.y + rect.second.y) / 2);
+  }
+  // The centre of the n-th row of widgets (from 0) of a panel drawn at the window's top.
+  static float rowCentreY(int row) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float height = ImGui::GetIO().Fonts->Fonts[0]->FontSize + 2 * style.FramePadding.y;
+    return style.WindowPadding.y + row * (height + style.ItemSpacing.y) + height / 2;
+  }
+
+  static constexpr float kWidth = 430, kHeight = 800;
+  ImGuiContext* context_ = nullptr;
+};
+
+Centerlines twoPaths() {
+  Centerlines centerlines;
+  for (int p = 0; p < 2; ++p) {
+    CenterlinePath path;
+    path.name = p ? "left" : "right";
+    for (int n = 0; n < 3; ++n) path.points.push_back({glm::dvec3(p * 10.0, n * 5.0, 0.0), 2.0});
+    centerlines.paths.push_back(path);
+  }
+  return centerlines;
+}
+
+TEST_F(GuiPanels, WithoutInputNoPanelReturnsAnEdit) {
+  const Document document;
+  const Centerlines centerlines = twoPaths();
+  WidgetRects rects;
+  VesselGlyphPanelUi ui;
+  VesselGlyphPanelInfo vg;
+  vg.physical = &centerlines;
+  for (int n = 0; n < 3; ++n) {
+    EXPECT_FALSE(frame([&] { return drawViewPanel(document.view); }));
+    EXPECT_FALSE(frame([&] { return drawRenderingPanel(document); }));
+    EXPECT_FALSE(frame([&] { return drawCprPanel(document.cpr, {&centerlines, false, "", ""}, rects); }));
+    const VesselGlyphPanelResult result = frame([&] { return drawVesselGlyphPanel(document.vesselGlyph, ui, vg, rects); });
+    EXPECT_FALSE(result.edit);
+    EXPECT_FALSE(result.loadCenterlines);
+  }
+}
+
+TEST_F(GuiPanels, ClickingTheHybridCheckboxReturnsAnEditThatTurnsVesselGlyphOn) {
+  Workstation workstation;
+  const Centerlines centerlines = twoPaths();
+  WidgetRects rects;
+  const auto draw = [&] {
+    const CprPanelInfo info{&centerlines, workstation.document().vesselGlyph.enabled, "", ""};
+    return drawCprPanel(workstation.document().cpr, info, rects);
+  };
+  frame(draw);
+  ASSERT_TRUE(rects.count("cpr_hybrid"));
+  const std::optional<CprEdit> edit = click(draw, centre(rects["cpr_hybrid"]));
+  ASSERT_TRUE(edit);
+  EXPECT_TRUE(edit->cpr.hybrid);
+  EXPECT_FALSE(edit->cpr.shown);  // only what was clicked
+  ASSERT_FALSE(workstation.document().vesselGlyph.enabled);
+  workstation.apply(*edit);
+  EXPECT_TRUE(workstation.document().cpr.hybrid);
+  EXPECT_TRUE(workstation.document().vesselGlyph.enabled);
+  EXPECT_EQ(workstation.version(), 1u);
+}
+
+TEST_F(GuiPanels, TheAngleSliderAtItsEndGives360WhichApplyWrapsToZero) {
+  Workstation workstation;
+  ViewState turned = workstation.document().view;
+  turned.angleDeg = 90;
+  workstation.apply(ViewEdit{turned});
+  const auto draw = [&] { return drawViewPanel(workstation.document().view); };
+  // Row 1 is the angle slider, ending 80 pixels short of the content's right edge: press just
+  // inside its end.
+  const float sliderEnd = kWidth - ImGui::GetStyle().WindowPadding.x - 80;
+  const ImVec2 end(sliderEnd - 4, rowCentreY(1));
+  frame(draw, end);
+  const std::optional<ViewEdit> edit = frame(draw, end, true);
+  ASSERT_TRUE(edit);
+  EXPECT_DOUBLE_EQ(edit->view.angleDeg, 360);
+  EXPECT_EQ(edit->view.axis, turned.axis);
+  workstation.apply(*edit);
+  EXPECT_DOUBLE_EQ(workstation.document().view.angleDeg, 0);
+}
+
+TEST_F(GuiPanels, TheMipCheckboxSwitchesToMipKeepingTheWindow) {
+  Document document;
+  const auto draw = [&] { return drawRenderingPanel(document); };
+  const ImVec2 checkbox(ImGui::GetStyle().WindowPadding.x + 8, rowCentreY(0));
+  const std::optional<RenderingEdit> edit = click(draw, checkbox);
+  ASSERT_TRUE(edit);
+  EXPECT_EQ(edit->mode, Compositing::mip);
+  EXPECT_DOUBLE_EQ(edit->mipWindow, document.tf.mipWindow);
+  EXPECT_EQ(edit->shading, document.shading);
+}
+
+TEST_F(GuiPanels, TheVesselGlyphPanelAsksForItsFileAndTurnsVesselGlyphOn) {
+  Workstation workstation;
+  const Centerlines centerlines = twoPaths();
+  WidgetRects rects;
+  VesselGlyphPanelUi ui;
+  VesselGlyphPanelInfo info;
+  const auto draw = [&] { return drawVesselGlyphPanel(workstation.document().vesselGlyph, ui, info, rects); };
+  frame(draw);
+  EXPECT_FALSE(rects.count("vg_enable"));  // nothing loaded: only the file field and the button
+  ASSERT_TRUE(rects.count("vg_load"));
+  EXPECT_TRUE(click(draw, centre(rects["vg_load"])).loadCenterlines);
+
+  info.physical = &centerlines;
+  frame(draw);
+  ASSERT_TRUE(rects.count("vg_enable"));
+  const VesselGlyphPanelResult result = click(draw, centre(rects["vg_enable"]));
+  EXPECT_FALSE(result.loadCenterlines);
+  ASSERT_TRUE(result.edit);
+  workstation.apply(*result.edit);
+  EXPECT_TRUE(workstation.document().vesselGlyph.enabled);
+  EXPECT_EQ(workstation.document().vesselGlyph.settings, VesselGlyphSettings{});
+}
+
+TEST_F(GuiPanels, TheViewportZoomsWithTheWheelAndTurnsWithALeftDrag) {
+  const ViewState view;
+  const ViewportOverlay overlay;
+  const ImVec2 middle(kWidth / 2, kHeight / 2);
+  frame([&] { return drawViewport(nullptr, view, overlay); }, middle);
+  ImGui::GetIO().MouseWheel = 1;
+  const ViewportInteraction zoomed = frame([&] { return drawViewport(nullptr, view, overlay); }, middle);
+  ImGui::GetIO().MouseWheel = 0;
+  ASSERT_TRUE(zoomed.zoomedOrPanned);
+  EXPECT_NEAR(zoomed.zoomedOrPanned->zoom, 1.2, 1e-9);
+  EXPECT_EQ(zoomed.rotateDegrees, 0);
+
+  frame([&] { return drawViewport(nullptr, view, overlay); }, middle, true);
+  const ImVec2 right(middle.x + 10, middle.y);
+  const ViewportInteraction turned = frame([&] { return drawViewport(nullptr, view, overlay); }, right, true);
+  EXPECT_DOUBLE_EQ(turned.rotateDegrees, -10 * view.degreesPerPixel);  // grab: the front moves right
+  EXPECT_FALSE(turned.zoomedOrPanned);
+}
+
+TEST_F(GuiPanels, TheTfSectionOffersTheRegionTfsOnlyWhenAskedAndSwitchesOnAClick) {
+  Document document;
+  TfPanelUi ui;
+  TfPanelInfo info;
+  WidgetRects rects;
+  const auto draw = [&] { return drawTfPanel(document, ui, info, rects); };
+  for (int n = 0; n < 3; ++n) {
+    const TfPanelRequests idle = frame(draw);
+    EXPECT_FALSE(idle.switchTo || idle.replace || idle.edit || idle.committedBefore);
+    EXPECT_FALSE(idle.undo || idle.redo || idle.save);
+  }
+  EXPECT_FALSE(rects.count("vg_edit_focus"));
+  info.targetsShown = true;
+  frame(draw);
+  ASSERT_TRUE(rects.count("vg_edit_focus"));
+  const TfPanelRequests clicked = click(draw, centre(rects["vg_edit_focus"]));
+  ASSERT_TRUE(clicked.switchTo);
+  EXPECT_EQ(*clicked.switchTo, TfTarget::focus);
+  EXPECT_FALSE(clicked.edit);
+}
+
+TEST_F(GuiPanels, TheTfSectionLoadsAMissingFileAsAMessageNotAnEdit) {
+  Document document;
+  TfPanelUi ui;
+  ui.path = "/nonexistent/tf.json";
+  TfPanelInfo info;
+  WidgetRects rects;
+  const auto draw = [&] { return drawTfPanel(document, ui, info, rects); };
+  frame(draw);
+  ASSERT_TRUE(rects.count("tf_load"));
+  const TfPanelRequests loaded = click(draw, centre(rects["tf_load"]));
+  EXPECT_FALSE(loaded.replace);
+  EXPECT_NE(loaded.message.find("/nonexistent/tf.json"), std::string::npos) << loaded.message;
+}
+
+TEST_F(GuiPanels, TheSessionSectionAsksToSaveOrLoad) {
+  SessionPanelUi ui;
+  WidgetRects rects;
+  const auto draw = [&] { return drawSessionPanel(ui, rects); };
+  frame(draw);
+  const SessionPanelRequests save = click(draw, centre(rects["session_save"]));
+  EXPECT_TRUE(save.save);
+  EXPECT_FALSE(save.load);
+  const SessionPanelRequests load = click(draw, centre(rects["session_load"]));
+  EXPECT_TRUE(load.load);
+  EXPECT_FALSE(load.save);
+}
+
+TEST_F(GuiPanels, TheDataSectionAsksToBrowseAndToDismissALoadError) {
+  const Document document;
+  DataPanelInfo info;
+  info.name = "phantom 8x8x8";
+  WidgetRects rects;
+  const auto draw = [&] { return drawDataPanel(document, info, rects); };
+  frame(draw);
+  EXPECT_FALSE(rects.count("data_dismiss"));
+  EXPECT_TRUE(click(draw, centre(rects["data_open"])).browse);
+  info.loadError = "broken.mha: not a volume";
+  frame(draw);
+  ASSERT_TRUE(rects.count("data_dismiss"));
+  const DataPanelRequests dismissed = click(draw, centre(rects["data_dismiss"]));
+  EXPECT_TRUE(dismissed.dismissError);
+  EXPECT_FALSE(dismissed.browse || dismissed.cancelLoad || dismissed.open);
+}
+
+TEST_F(GuiPanels, TheExportSectionStartsAJobUnlessOneIsRunning) {
+  ExportPanelUi ui;
+  SeriesPanel series;
+  JobInfo job;
+  WidgetRects rects;
+  const auto draw = [&] {
+    const ExportRequests image = drawImageExport(ui, job, rects);
+    const ExportRequests rotation = drawSeriesExport(series, job, rects);
+    return std::make_pair(image, rotation);
+  };
+  frame(draw);
+  ASSERT_TRUE(rects.count("export_button") && rects.count("series_button"));
+  const auto image = click(draw, centre(rects["export_button"]));
+  EXPECT_TRUE(image.first.start);
+  EXPECT_FALSE(image.second.start);
+  const auto rotation = click(draw, centre(rects["series_button"]));
+  EXPECT_TRUE(rotation.second.start);
+  EXPECT_FALSE(rotation.first.start);
+
+  job.running = true;
+  rects.clear();
+  frame(draw);
+  EXPECT_FALSE(rects.count("export_button"));
+  ASSERT_TRUE(rects.count("series_cancel"));
+  EXPECT_TRUE(click(draw, centre(rects["series_cancel"])).second.cancel);
+}
+
+TEST_F(GuiPanels, ADoubleClickOnTheViewportResetsZoomAndPan) {
+  ViewState view;
+  view.zoom = 4;
+  view.panPx = {30, -12};
+  const ViewportOverlay overlay;
+  const ImVec2 middle(kWidth / 2, kHeight / 2);
+  const auto draw = [&] { return drawViewport(nullptr, view, overlay); };
+  EXPECT_FALSE(click(draw, middle).reset);
+  // The second press, within the double-click time, is the double-click.
+  const ViewportInteraction reset = frame(draw, middle, true);
+  EXPECT_TRUE(reset.reset);
+  ASSERT_TRUE(reset.zoomedOrPanned);
+  EXPECT_DOUBLE_EQ(reset.zoomedOrPanned->zoom, 1);
+  EXPECT_EQ(reset.zoomedOrPanned->panPx, glm::dvec2(0.0));
+}
+
+TEST(GuiOrientation, LpsLettersNameTheDominantAxisAndATieGoesToTheEarlierAxis) {
+  EXPECT_EQ(lpsLetter({1, 0, 0}), 'L');
+  EXPECT_EQ(lpsLetter({-1, 0, 0}), 'R');
+  EXPECT_EQ(lpsLetter({0.1, -0.9, 0.2}), 'A');
+  EXPECT_EQ(lpsLetter({0, 0.3, -0.8}), 'I');
+  EXPECT_EQ(lpsLetter({0.7071, 0.7071, 0}), 'L');
+  EXPECT_EQ(lpsLetter({0, -0.5, 0.5}), 'A');
+  const OrientationLetters front = orientationLetters(Axis::k, 0);
+  EXPECT_EQ(std::string({front.right, front.left, front.top, front.bottom}), "LRSI");
+}
+
+}  // namespace
+}  // namespace angio

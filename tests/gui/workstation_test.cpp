@@ -1,0 +1,172 @@
+// The workstation model: apply() is the one place the document changes; it keeps the angle in
+// [0, 360), turns VesselGlyph on with the hybrid, bumps the version only on a change.
+#include "gui/workstation.h"
+
+#include <gtest/gtest.h>
+
+#include "gui/tf_targets.h"
+
+namespace angio {
+namespace {
+
+TransferFunction twoPointTf(double hu) {
+  TransferFunction tf;
+  tf.name = "test";
+  tf.points = {{hu, {1, 0, 0}, 0.0}, {hu + 100, {1, 1, 1}, 0.5}};
+  return tf;
+}
+
+TEST(GuiWorkstation, EqualDocumentsCompareEqualAndAnyFieldTellsThemApart) {
+  Document a, b;
+  EXPECT_EQ(a, b);
+  b.vesselGlyph.settings.cleft = !a.vesselGlyph.settings.cleft;
+  EXPECT_NE(a, b);
+  b = a;
+  b.panelsOpen["View"] = false;
+  EXPECT_NE(a, b);
+}
+
+TEST(GuiWorkstation, ViewEditsAndTurnsKeepTheAngleInZeroTo360) {
+  Workstation workstation;
+  ViewState view;
+  view.angleDeg = 370;
+  workstation.apply(ViewEdit{view});
+  EXPECT_DOUBLE_EQ(workstation.document().view.angleDeg, 10);
+  workstation.apply(RotateEdit{-20});
+  EXPECT_DOUBLE_EQ(workstation.document().view.angleDeg, 350);
+  workstation.apply(RotateEdit{10});
+  EXPECT_DOUBLE_EQ(workstation.document().view.angleDeg, 0);
+}
+
+TEST(GuiWorkstation, AStartingDocumentIsNormalised) {
+  Document start;
+  start.view.angleDeg = -90;
+  start.cpr.hybrid = true;
+  const Workstation workstation(start);
+  EXPECT_DOUBLE_EQ(workstation.document().view.angleDeg, 270);
+  EXPECT_TRUE(workstation.document().vesselGlyph.enabled);
+  EXPECT_EQ(workstation.version(), 0u);
+}
+
+TEST(GuiWorkstation, TurningTheHybridOnTurnsVesselGlyphOnAndVesselGlyphMayBeTurnedOffAgain) {
+  Workstation workstation;
+  ASSERT_FALSE(workstation.document().vesselGlyph.enabled);
+  CprState cpr = workstation.document().cpr;
+  cpr.hybrid = true;
+  workstation.apply(CprEdit{cpr});
+  EXPECT_TRUE(workstation.document().vesselGlyph.enabled);
+
+  VesselGlyphState off = workstation.document().vesselGlyph;
+  off.enabled = false;
+  workstation.apply(VesselGlyphEdit{off});
+  EXPECT_FALSE(workstation.document().vesselGlyph.enabled);  // the CPR section says the hybrid waits
+  cpr.transitionMm = 2;
+  workstation.apply(CprEdit{cpr});  // the hybrid was on already: not turned on by this edit
+  EXPECT_FALSE(workstation.document().vesselGlyph.enabled);
+}
+
+TEST(GuiWorkstation, ASessionKeepsTheDatasetAndRecentFilesAndItsHybridTurnsVesselGlyphOn) {
+  Document start;
+  start.dataset = "phantom 64x64x64";
+  start.recentFiles = {"/data/a.mha"};
+  start.cpr.hybrid = true;  // already on: the session's hybrid must still bring VesselGlyph
+  Workstation workstation(start);
+  VesselGlyphState off = workstation.document().vesselGlyph;
+  off.enabled = false;
+  workstation.apply(VesselGlyphEdit{off});
+
+  Document session;
+  session.dataset = "/data/b.mha";
+  session.recentFiles = {"/data/c.mha"};
+  session.view.angleDeg = 725;
+  session.cpr.hybrid = true;
+  session.tf = twoPointTf(100);
+  workstation.apply(SessionEdit{session});
+  const Document& document = workstation.document();
+  EXPECT_EQ(document.dataset, "phantom 64x64x64");
+  EXPECT_EQ(document.recentFiles, std::vector<std::string>{"/data/a.mha"});
+  EXPECT_DOUBLE_EQ(document.view.angleDeg, 5);
+  EXPECT_TRUE(document.vesselGlyph.enabled);
+  EXPECT_EQ(document.tf, session.tf);
+}
+
+TEST(GuiWorkstation, TheVersionGoesUpWithEveryChangeAndOnlyThen) {
+  Workstation workstation;
+  EXPECT_EQ(workstation.version(), 0u);
+  workstation.apply(PanelOpenEdit{"View", true});
+  EXPECT_EQ(workstation.version(), 1u);
+  workstation.apply(PanelOpenEdit{"View", true});  // as it is: no change
+  EXPECT_EQ(workstation.version(), 1u);
+  workstation.apply(RotateEdit{360});  // wraps back to where it was
+  EXPECT_EQ(workstation.version(), 1u);
+  workstation.apply(RotateEdit{1});
+  EXPECT_EQ(workstation.version(), 2u);
+}
+
+TEST(GuiWorkstation, AnOpenedDatasetStartsZoomAndPanOverAndHeadsTheRecentFiles) {
+  Document start;
+  start.view.zoom = 3;
+  start.view.panPx = {10, -4};
+  start.recentFiles = {"/data/a.mha", "/data/b.mha"};
+  Workstation workstation(start);
+  workstation.apply(DatasetOpened{"/data/b.mha"});
+  const Document& document = workstation.document();
+  EXPECT_EQ(document.dataset, "/data/b.mha");
+  EXPECT_DOUBLE_EQ(document.view.zoom, 1);
+  EXPECT_EQ(document.view.panPx, glm::dvec2(0.0));
+  EXPECT_EQ(document.recentFiles, (std::vector<std::string>{"/data/b.mha", "/data/a.mha"}));
+}
+
+TEST(GuiWorkstation, ATfChangeGoesToItsTargetWithItsPreset) {
+  Workstation workstation;
+  workstation.apply(TfChange{TfTarget::focus, twoPointTf(200), ""});
+  workstation.apply(TfChange{TfTarget::main, twoPointTf(-100), "cta"});
+  const Document& document = workstation.document();
+  EXPECT_EQ(document.vesselGlyph.focusTf, twoPointTf(200));
+  EXPECT_EQ(document.vesselGlyph.focusPreset, "");
+  EXPECT_TRUE(document.vesselGlyph.contextTf.points.empty());
+  EXPECT_EQ(document.tf, twoPointTf(-100));
+  EXPECT_EQ(document.tfPreset, "cta");
+  EXPECT_EQ(tfOf(document, TfTarget::focus), twoPointTf(200));
+  EXPECT_EQ(presetOf(document, TfTarget::context), "soft-tissue-context");
+}
+
+TEST(GuiWorkstation, RenderingEditsKeepTheMipWindowInTheMainTf) {
+  Workstation workstation;
+  RenderingEdit edit{Compositing::mip, {}, 1500, 500};
+  workstation.apply(edit);
+  EXPECT_EQ(workstation.document().mode, Compositing::mip);
+  EXPECT_DOUBLE_EQ(workstation.document().tf.mipWindow, 1500);
+  EXPECT_DOUBLE_EQ(workstation.document().tf.mipLevel, 500);
+}
+
+TEST(GuiWorkstation, ALoadedCenterlineFileIsRecordedAndNothingElseChanges) {
+  Document start;
+  start.vesselGlyph.enabled = true;
+  start.vesselGlyph.settings.cleft = true;
+  Workstation workstation(start);
+  workstation.apply(CenterlineFileEdit{"c.csv", "/data/c.csv"});
+  Document expected = start;
+  expected.vesselGlyph.centerlines = "c.csv";
+  expected.vesselGlyph.centerlinesAbsolute = "/data/c.csv";
+  EXPECT_EQ(workstation.document(), expected);
+  workstation.apply(CenterlineFileEdit{});  // `gui --centerlines`: the session's file is not the one shown
+  EXPECT_EQ(workstation.document(), start);
+}
+
+TEST(GuiWorkstation, EachTfTargetKeepsItsOwnUndoStack) {
+  TfTargets targets;
+  EXPECT_EQ(targets.editing(), TfTarget::main);
+  targets.history().push(twoPointTf(0));
+  targets.edit(TfTarget::focus);
+  EXPECT_FALSE(targets.history().canUndo());
+  targets.history().push(twoPointTf(300));
+  targets.edit(TfTarget::main);
+  ASSERT_TRUE(targets.history().canUndo());
+  EXPECT_EQ(targets.history().undo(twoPointTf(50)), twoPointTf(0));
+  targets.edit(TfTarget::focus);
+  EXPECT_EQ(targets.history().undo(twoPointTf(50)), twoPointTf(300));
+}
+
+}  // namespace
+}  // namespace angio
