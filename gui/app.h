@@ -171,6 +171,7 @@ class App {
   void drawCprSection();
   void drawCprView();
   void updateCpr();
+  void takeComputedCpr();
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
   // The state report's parts (gui/app_report.cpp).

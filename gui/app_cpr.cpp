@@ -84,8 +84,11 @@ void App::drawCprSection() {
 
 // Recomputes the CPR when its inputs changed (not while a slider or a spin changes them every
 // frame, once one is shown), and uploads it as the view's texture.
+// The CPR of the document's path, view and coloring, computed off the UI thread; while a drag or
+// a spin goes on the shown CPR stays (it follows when the view rests).
 void App::updateCpr() {
   CprViewPanel& panel = cprView_;
+  takeComputedCpr();
   const Centerlines* centerlines = nullptr;
   try {
     centerlines = framedCenterlines();
@@ -95,29 +98,51 @@ void App::updateCpr() {
   if (!centerlines) return;
   loadMissingRegionTfs();
   const Document& state = doc();
-  char view[96];
-  std::snprintf(view, sizeof view, "%s %.17g %d %d %d", toString(state.view.axis), state.view.angleDeg,
-                int(state.cpr.mode), state.cpr.path, int(state.cpr.colouring));
-  const std::string key = vessel_.framedFor + " " + vessel_.file + " " + view +
-                          (state.cpr.colouring == CprColouring::focusTf ? toJson(state.vesselGlyph.focusTf) : "");
-  if (key == panel.madeFor) return;
+  CprInputs inputs{vessel_.framedFor, vessel_.file, state.view.axis, state.view.angleDeg,
+                   // The high level's pixel size, so a projected CPR registers with the DVR image.
+                   std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm),
+                   state.cpr.mode, state.cpr.path, state.cpr.colouring, std::nullopt};
+  if (state.cpr.colouring == CprColouring::focusTf) inputs.focusTf = state.vesselGlyph.focusTf;
+  if (inputs == panel.madeFor || panel.job.running()) return;  // one at a time: the next one after it
   if (panel.cpr && (ImGui::IsAnyItemActive() || state.view.autoSpin)) return;
-  panel.madeFor = key;
-  panel.hovered.reset();
+  panel.computing = inputs;
+  std::vector<CenterlinePath> paths;
   try {
-    const auto paths = selectPaths(*centerlines, state.cpr.path < 0 ? "all" : std::to_string(state.cpr.path));
-    // The high level's pixel size, so a projected CPR registers with the DVR image.
-    const double pixelMm = std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm);
-    const ViewGeometry geometry = cprView(data_.volume, state.view.axis, state.view.angleDeg, pixelMm);
-    Cpr cpr = computeCpr(data_.volume, paths, geometry, CprSettings{state.cpr.mode, {}});
+    paths = selectPaths(*centerlines, state.cpr.path < 0 ? "all" : std::to_string(state.cpr.path));
+  } catch (const std::exception& error) {
+    panel.job.stop();
+    panel.computing.reset();
+    panel.madeFor = inputs;
+    panel.error = error.what();
+    panel.cpr.reset();
+    panel.frame.reset();
+    return;
+  }
+  panel.job.start([&volume = data_.volume, inputs, paths = std::move(paths)](JobControl&) {
+    const ViewGeometry geometry = cprView(volume, inputs.axis, inputs.angleDeg, inputs.pixelMm);
+    Cpr cpr = computeCpr(volume, paths, geometry, CprSettings{inputs.mode, {}});
     CprDisplay display;
-    if (state.cpr.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
-    if (state.cpr.colouring == CprColouring::focusTf) display.tf = state.vesselGlyph.focusTf;
-    panel.frame = makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
+    if (inputs.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
+    if (inputs.focusTf) display.tf = *inputs.focusTf;
+    std::shared_ptr<const DisplayImage> image = makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
+    return ComputedCpr{inputs, std::move(cpr), std::move(image)};
+  });
+}
+
+// A finished CPR replaces the shown one (uploaded at once: a CPR image is small).
+void App::takeComputedCpr() {
+  CprViewPanel& panel = cprView_;
+  if (!panel.job.ready()) return;
+  panel.hovered.reset();
+  panel.madeFor = panel.computing;
+  panel.computing.reset();
+  try {
+    ComputedCpr computed = panel.job.take();
+    panel.frame = std::move(computed.image);
     panel.texture.begin(panel.frame);
     while (!panel.texture.step(std::size_t(64) << 20)) {
     }
-    panel.cpr = std::move(cpr);
+    panel.cpr = std::move(computed.cpr);
     panel.error.clear();
   } catch (const std::exception& error) {
     panel.error = error.what();

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "gui/app_gl.h"
+#include "gui/background_job.h"
 #include "gui/document.h"
 #include "vessel/cpr.h"
 
@@ -22,6 +23,27 @@ struct CenterlinePlace {
   glm::dvec3 pointMm{0.0};  // volume frame
 };
 
+// What a CPR image is computed from: a change computes it again (off the UI thread).
+struct CprInputs {
+  std::string dataset;      // the dataset the centerlines were mapped for
+  std::string centerlines;  // their file
+  Axis axis = Axis::k;
+  double angleDeg = 0;
+  double pixelMm = 1;
+  CprMode mode = CprMode::straightened;
+  int path = -1;
+  CprColouring colouring = CprColouring::ctaLumen;
+  std::optional<TransferFunction> focusTf;  // with the focus TF's colours only
+
+  friend bool operator==(const CprInputs&, const CprInputs&) = default;
+};
+
+struct ComputedCpr {
+  CprInputs inputs;
+  Cpr cpr;
+  std::shared_ptr<const DisplayImage> image;
+};
+
 struct CprViewPanel {
   explicit CprViewPanel(const GlApi& gl) : texture(gl) {}
 
@@ -31,7 +53,9 @@ struct CprViewPanel {
   StreamedTexture texture;
   std::shared_ptr<const DisplayImage> frame;  // the CPR image as the texture uploads it
   std::optional<Cpr> cpr;
-  std::string madeFor;  // the inputs `cpr` was computed for (recomputed when they change)
+  std::optional<CprInputs> madeFor;  // what `cpr` (or the last error) was computed from
+  BackgroundJob<ComputedCpr> job;    // the next CPR being computed
+  std::optional<CprInputs> computing;  // ... from these inputs
   std::string error;
   std::optional<CprPick> hovered;  // the CPR pixel under the mouse
   std::optional<ImVec2> markedOnDvr;  // where it was marked on the DVR image (screen)

@@ -43,7 +43,9 @@ void App::openDataset(const std::string& path) {
   message_ = "loading " + loadPath_;
 }
 
-bool App::backgroundBusy() const { return load_.running() || seriesJob_.running() || vessel_.load.running(); }
+bool App::backgroundBusy() const {
+  return load_.running() || seriesJob_.running() || vessel_.load.running() || cprView_.job.running();
+}
 
 void App::pollBackgroundJobs() {
   if (load_.ready()) {
@@ -75,6 +77,8 @@ void App::pollBackgroundJobs() {
 // The renderer, the histogram job and the exports read the volume: all stop before it goes.
 void App::replaceDataset(LoadedDataset dataset) {
   seriesJob_.stop();
+  cprView_.job.stop();  // it reads the old volume
+  cprView_.computing.reset();
   if (export_.cancel) export_.cancel->store(true);
   if (export_.job.valid()) export_.job.wait();
   export_.job = {};
