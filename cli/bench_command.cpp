@@ -45,7 +45,7 @@ void writeText(const std::string& text, const std::filesystem::path& path) {
   });
 }
 
-// --glyph-intervals: the issue-5 target case, 20 paths of 1000 points (a vessel tree in vmtk's
+// --glyph-intervals: the interval benchmark case, 20 paths of 1000 points (a vessel tree in vmtk's
 // layout, then 20 independent tortuous paths as a stress case), or the --centerlines given.
 int runGlyphIntervalBench(const BenchOptionsCli& options, const Volume& volume) {
   GlyphBenchSettings settings;

@@ -35,7 +35,7 @@ struct RenderOptions {
   VesselGlyphCliOptions vesselGlyph;  // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
   std::string params;  // a render sidecar to reproduce (then only --out may be given)
 };
-// Writes the image and its sidecar (io/render_sidecar.h), or re-renders a sidecar's image.
+// Writes the image and its sidecar (render/recipe_json.h), or re-renders a sidecar's image.
 int runRender(const RenderOptions& options);
 
 // `angioray cpr`: curved planar reformation of centerline paths (vessel/cpr.h).
@@ -108,7 +108,7 @@ struct GuiOptions {
   std::string stateOut;    // the app's state and runtime numbers as JSON, at the end
   double timeoutSeconds = 300;   // headless: for each wait for a quality level
   double quitAfterSeconds = 0;   // window: close by itself after this long (smoke tests)
-  std::string session;           // a saved session (io/session_file.h): its dataset, view, TF, panels
+  std::string session;           // a saved session (gui/session_file.h): its dataset, view, TF, panels
   std::string centerlines;       // loaded into the VesselGlyph panel at start (errors shown there)
 };
 int runGui(const GuiOptions& options);

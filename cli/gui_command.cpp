@@ -103,6 +103,7 @@ int runGui(const GuiOptions& options) {
   const GuiOptions effective = session ? withSessionDataset(options, *session) : options;
   LoadedDataset dataset = loadDataset(effective);
   AppStart start = initialState(effective, dataset, session);
+  RenderThreads threads;  // the renderer's arenas and priorities, once for the program
   if (options.headless) {
     HeadlessOptions headless;
     headless.width = size.x;
@@ -111,7 +112,7 @@ int runGui(const GuiOptions& options) {
     headless.screenshot = options.screenshot;
     headless.stateOut = options.stateOut;
     headless.timeoutSeconds = options.timeoutSeconds;
-    return runHeadless(std::move(dataset), std::move(start), headless);
+    return runHeadless(std::move(dataset), std::move(start), headless, threads);
   }
   WindowOptions window;
   window.width = size.x;
@@ -119,7 +120,7 @@ int runGui(const GuiOptions& options) {
   window.quitAfterSeconds = options.quitAfterSeconds;
   window.stateOut = options.stateOut;
   window.screenshot = options.screenshot;
-  return runWindow(std::move(dataset), std::move(start), window);
+  return runWindow(std::move(dataset), std::move(start), window, threads);
 }
 
 }  // namespace angio

@@ -1,5 +1,5 @@
 #pragma once
-// The VesselGlyph (issue 5 item 7) and DVR+CPR hybrid (issue 6 item 5) options of `angioray
+// The VesselGlyph (thesis ch. 5) and DVR+CPR hybrid (thesis fig. 5.4) options of `angioray
 // render`, and their translation into the render's recipe (io/render_sidecar.h).
 #include <optional>
 #include <string>

@@ -1,6 +1,13 @@
 #include "core/render_params.h"
 
+#include <cmath>
+
 namespace angio {
+
+double wrapDegrees(double degrees) {
+  const double wrapped = std::fmod(degrees, 360.0);
+  return wrapped < 0 ? wrapped + 360.0 : wrapped;
+}
 
 Sampling qualitySampling(Quality quality) {
   switch (quality) {

@@ -45,6 +45,9 @@ struct RenderParams {
   friend bool operator==(const RenderParams&, const RenderParams&) = default;
 };
 
+// An angle in degrees wrapped into [0, 360) (theta of the rendering model).
+double wrapDegrees(double degrees);
+
 // The quality levels' default sampling (rendering model table).
 Sampling qualitySampling(Quality quality);
 

@@ -16,11 +16,13 @@ void FrameTimes::Stats::add(double ms) {
   maxMs = std::max(maxMs, ms);
 }
 
-App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, std::function<void()> wakeUi)
+App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& threads,
+         std::function<void()> wakeUi)
     : data_(std::move(dataset)),
       workstation_(std::move(start.document)),
       texture_(gl),
       wakeUi_(std::move(wakeUi)),
+      threads_(threads),
       renderer_(makeRenderer()),
       presets_(listPresets()),
       cprView_(gl) {

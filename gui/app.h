@@ -75,7 +75,9 @@ class App {
  public:
   // `wakeUi` (optional, any thread) makes the platform's event wait return: called when the
   // renderer publishes a frame or goes idle.
-  App(LoadedDataset dataset, AppStart start, const GlApi& gl, std::function<void()> wakeUi = {});
+  // `threads` (the renderer's arenas and priorities, made once by the program) must outlive it.
+  App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& threads,
+      std::function<void()> wakeUi = {});
   ~App();
   App(const App&) = delete;
   App& operator=(const App&) = delete;
@@ -184,7 +186,7 @@ class App {
   Workstation workstation_;
   StreamedTexture texture_;
   std::function<void()> wakeUi_;
-  RenderThreads threads_;  // before renderer_, which renders in its arenas
+  RenderThreads& threads_;  // the program's: the renderer renders in its arenas
   std::unique_ptr<ProgressiveRenderer> renderer_;  // replaced with the dataset
 
   // Rendering hand-off.

@@ -2,8 +2,8 @@
 
 namespace angio {
 
-RenderSidecar exportSidecar(const Document& state, const std::string& dataset, double isd) {
-  RenderSidecar sidecar;
+RenderRecipe exportSidecar(const Document& state, const std::string& dataset, double isd) {
+  RenderRecipe sidecar;
   sidecar.dataset = absoluteDataset(dataset);
   sidecar.quality = Quality::high;
   sidecar.params = renderParamsOf(state);

@@ -11,6 +11,6 @@ namespace angio {
 // What an export of the current view renders: the state's view and TF at the high level's
 // sampling with image sampling distance `isd`; plain DVR/MIP (the app adds its VesselGlyph and
 // hybrid recipes when it shows them).
-RenderSidecar exportSidecar(const Document& state, const std::string& dataset, double isd);
+RenderRecipe exportSidecar(const Document& state, const std::string& dataset, double isd);
 
 }  // namespace angio

@@ -116,11 +116,11 @@ bool windowSystemAvailable() {
   return true;
 }
 
-int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options) {
+int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options, RenderThreads& threads) {
   Window window(options);
   std::signal(SIGINT, requestClose);
   std::signal(SIGTERM, requestClose);
-  App app(std::move(dataset), std::move(start), window.gl(), [] { glfwPostEmptyEvent(); });
+  App app(std::move(dataset), std::move(start), window.gl(), threads, [] { glfwPostEmptyEvent(); });
   glfwSetWindowUserPointer(window.handle(), &app);
   glfwSetDropCallback(window.handle(), openDropped);
   const auto opened = Clock::now();

@@ -19,6 +19,6 @@ bool windowSystemAvailable();
 
 // Runs until the window is closed, SIGINT/SIGTERM arrive (both close it cleanly, writing the
 // state and screenshot) or quitAfterSeconds pass.
-int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options);
+int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options, RenderThreads& threads);
 
 }  // namespace angio

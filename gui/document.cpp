@@ -34,11 +34,6 @@ const std::string& presetOf(const Document& document, TfTarget target) {
   return document.tfPreset;
 }
 
-double wrapDegrees(double degrees) {
-  const double wrapped = std::fmod(degrees, 360.0);
-  return wrapped < 0 ? wrapped + 360.0 : wrapped;
-}
-
 RenderParams renderParamsOf(const Document& document) {
   RenderParams params;
   params.axis = document.view.axis;

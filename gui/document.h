@@ -92,8 +92,6 @@ const char* tfTargetName(TfTarget target);  // "main", "focus", "context"
 const TransferFunction& tfOf(const Document& document, TfTarget target);
 const std::string& presetOf(const Document& document, TfTarget target);
 
-// theta wrapped into [0, 360).
-double wrapDegrees(double degrees);
 
 // The render parameters the document asks for (sampling left at its default: each level sets it).
 RenderParams renderParamsOf(const Document& document);

@@ -64,7 +64,7 @@ void writeJson(const std::filesystem::path& path, const nlohmann::json& json) {
 
 class HeadlessSession {
  public:
-  HeadlessSession(LoadedDataset dataset, AppStart start, const HeadlessOptions& options)
+  HeadlessSession(LoadedDataset dataset, AppStart start, const HeadlessOptions& options, RenderThreads& threads)
       : options_(options), pixels_(std::size_t(options.width) * options.height * 4) {
     context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!context_) throw std::runtime_error("OSMesa: cannot create an OpenGL context");
@@ -78,7 +78,7 @@ class HeadlessSession {
     io.DisplaySize = ImVec2(float(options.width), float(options.height));
     for (int key = 0; key < ImGuiKey_COUNT; ++key) io.KeyMap[key] = key;
     ImGui_ImplOpenGL2_Init();
-    app_ = std::make_unique<App>(std::move(dataset), std::move(start), gl_, [this] { wake(); });
+    app_ = std::make_unique<App>(std::move(dataset), std::move(start), gl_, threads, [this] { wake(); });
   }
 
   ~HeadlessSession() {
@@ -272,8 +272,8 @@ class HeadlessSession {
 
 }  // namespace
 
-int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options) {
-  HeadlessSession session(std::move(dataset), std::move(start), options);
+int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options, RenderThreads& threads) {
+  HeadlessSession session(std::move(dataset), std::move(start), options, threads);
   session.run();
   return 0;
 }

@@ -19,6 +19,6 @@ struct HeadlessOptions {
   double timeoutSeconds = 300;       // for each wait_level (and the no-script wait)
 };
 
-int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options);
+int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options, RenderThreads& threads);
 
 }  // namespace angio

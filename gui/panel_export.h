@@ -9,6 +9,13 @@
 
 namespace angio {
 
+// The export section's rotation-series settings.
+struct SeriesPanel {
+  std::string folder = "angioray-series";
+  SeriesSpec spec;
+  std::string movieNote;  // of the last series
+};
+
 struct ExportPanelUi {
   std::string path = "angioray-export.png";
   double isd = 0.5;  // voxel units

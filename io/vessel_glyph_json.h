@@ -1,6 +1,6 @@
 #pragma once
 // The VesselGlyph region settings as JSON: the one form render sidecars (io/render_sidecar.h,
-// "vessel_glyph") and session files (io/session_file.h, "vessel_glyph") share, sizes in mm:
+// "vessel_glyph") and session files (gui/session_file.h, "vessel_glyph") share, sizes in mm:
 //   {"focus": {"radius_mode": "factor" | "mm", "radius", "margin_mm"},
 //    "context": {"shape": "none" | "slab" | "tube", "front_mm", "back_mm",
 //                "half_width_mm" (number or "inf"), "tube": {focus-like}},

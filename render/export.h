@@ -1,6 +1,6 @@
 #pragma once
 // Exports of rendered views: the image (PNG/TIFF/EXR with the recipe in its metadata) and its JSON
-// sidecar (render/render_sidecar.h) beside it, each written atomically, so that
+// sidecar (render/recipe_json.h) beside it, each written atomically, so that
 // `angioray render --params` of the sidecar gives the image again. The window's "Export image",
 // rotation series and `angioray render` all write through here.
 #include <atomic>

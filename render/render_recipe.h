@@ -54,7 +54,4 @@ struct RenderRecipe {
   friend bool operator==(const RenderRecipe&, const RenderRecipe&) = default;
 };
 
-// Until every caller says RenderRecipe.
-using RenderSidecar = RenderRecipe;
-
 }  // namespace angio

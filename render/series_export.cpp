@@ -21,11 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double wrapped(double degrees) {
-  const double w = std::fmod(degrees, 360.0);
-  return w < 0 ? w + 360.0 : w;
-}
-
 // The movie: MP4 with the 'mp4v' codec if this OpenCV build can write it, else MJPG in an AVI.
 // Frames of another size than the first are placed top-left on black (rotations about one axis
 // keep the size; this only guards the writer).
@@ -98,7 +93,7 @@ std::vector<double> seriesAngles(double startDeg, double arcDeg, int count) {
   const bool fullTurn = std::abs(std::abs(arcDeg) - 360) < 1e-9;
   const double step = count <= 1 ? 0 : fullTurn ? arcDeg / count : arcDeg / (count - 1);
   std::vector<double> angles;
-  for (int n = 0; n < count; ++n) angles.push_back(wrapped(startDeg + n * step));
+  for (int n = 0; n < count; ++n) angles.push_back(wrapDegrees(startDeg + n * step));
   return angles;
 }
 

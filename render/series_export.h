@@ -25,13 +25,6 @@ struct SeriesSpec {
   double movieFps = 12;
 };
 
-// The export panel's series settings.
-struct SeriesPanel {
-  std::string folder = "angioray-series";
-  SeriesSpec spec;
-  std::string movieNote;  // of the last series
-};
-
 // The views' angles in degrees, wrapped into [0, 360): start + n * step, step = arc / count for a
 // full turn (|arc| = 360), else arc / (count - 1) so that both ends are included.
 std::vector<double> seriesAngles(double startDeg, double arcDeg, int count);
@@ -50,7 +43,7 @@ struct SeriesResult {
 };
 
 // Writes into `folder` (created if missing). `base` gives everything but the angle (its sampling
-// is the one rendered): plain DVR/MIP, VesselGlyph or the DVR+CPR hybrid (io/render_sidecar.h),
+// is the one rendered): plain DVR/MIP, VesselGlyph or the DVR+CPR hybrid (render/render_recipe.h),
 // each view rendered as `angioray render --params` of its sidecar renders it; `centerlines`
 // (volume frame) are used iff base.vesselGlyph is set. Throws InputError/runtime_error (one
 // line) on bad input or write errors.

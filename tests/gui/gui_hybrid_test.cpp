@@ -93,7 +93,7 @@ struct Cut {
 };
 
 Cut cutOf(const fs::path& sidecarFile) {
-  const angio::RenderSidecar sidecar = angio::loadRenderSidecar(sidecarFile);
+  const angio::RenderRecipe sidecar = angio::loadRenderSidecar(sidecarFile);
   const angio::Volume volume = angio::readVolume(sidecar.dataset).volume;
   angio::Centerlines centerlines =
       angio::toVolumeFrame(angio::loadCenterlines(sidecar.vesselGlyph->centerlines), volume);
