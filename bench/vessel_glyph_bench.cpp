@@ -170,7 +170,7 @@ Centerlines syntheticVesselTree(const Volume& volume, int leaves, int pointsPerP
   }
   Centerlines centerlines;
   centerlines.source = "synthetic tree";
-  centerlines.frame = CenterlineFrame::kVolume;
+  centerlines.frame = CenterlineFrame::volume;
   for (int tip : tips) {
     std::vector<int> chain;
     for (int b = tip; b >= 0; b = branches[std::size_t(b)].parent) chain.insert(chain.begin(), b);
@@ -190,7 +190,7 @@ Centerlines syntheticCenterlines(const Volume& volume, int paths, int pointsPerP
   std::mt19937_64 random(seed);
   Centerlines centerlines;
   centerlines.source = "synthetic";
-  centerlines.frame = CenterlineFrame::kVolume;
+  centerlines.frame = CenterlineFrame::volume;
   for (int p = 0; p < paths; ++p) {
     CenterlinePath& path = centerlines.paths.emplace_back();
     path.name = "synthetic-" + std::to_string(p);

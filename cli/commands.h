@@ -51,7 +51,7 @@ struct CprOptions {
   std::optional<double> pixelMm;  // default: the voxel unit (isd 1)
   std::optional<double> window, level;
   std::string windowPreset;  // "cta-lumen" | "calcium"
-  std::string tf;            // colour through this TF instead of grey
+  std::string tf;            // color through this TF instead of grey
   bool overlay = true;       // centerline marker and arc-length ruler
   std::string resampler = "trilinear";
   int benchRuns = 0;              // > 0: also time the CPR this many times

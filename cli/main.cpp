@@ -72,7 +72,7 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
   level->needs(window);
   auto* preset = cmd->add_option("--window-preset", o.windowPreset, "Grey window preset")
                      ->check(CLI::IsMember({"cta-lumen", "calcium"}));
-  auto* tf = cmd->add_option("--tf", o.tf, "Colour through this TF preset or file instead of grey");
+  auto* tf = cmd->add_option("--tf", o.tf, "Color through this TF preset or file instead of grey");
   tf->excludes(window)->excludes(level)->excludes(preset);
   cmd->add_flag("!--no-overlay", o.overlay, "Leave out the centerline marker and the ruler");
   cmd->add_option("--resampler", o.resampler, "trilinear (exact) or opencv-remap (comparison)")

@@ -35,7 +35,7 @@ void addVesselGlyphOptions(CLI::App& cmd, VesselGlyphCliOptions& o) {
   cmd.add_option("--transition", o.transitionMm, "Hybrid: smooth transition band in mm [0]")
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--cpr-window", o.cprWindow, "Hybrid: grey CPR window width (HU) instead of the "
-                                              "focus TF's colours")->check(CLI::PositiveNumber);
+                                              "focus TF's colors")->check(CLI::PositiveNumber);
   cmd.add_option("--cpr-level", o.cprLevel, "Hybrid: grey CPR window centre (HU)");
 }
 

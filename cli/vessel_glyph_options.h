@@ -25,7 +25,7 @@ struct VesselGlyphCliOptions {
   bool hybrid = false;
   std::optional<std::string> hybridPath;  // "all" (default) or an index
   std::optional<double> transitionMm;
-  std::optional<double> cprWindow, cprLevel;  // grey CPR instead of the focus TF's colours
+  std::optional<double> cprWindow, cprLevel;  // grey CPR instead of the focus TF's colors
 };
 
 // Adds --centerlines, --vg-focus, --vg-context, --focus-tf, --context-tf, --vg-outside, --cleft,

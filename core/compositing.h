@@ -103,16 +103,16 @@ inline float shadingFactor(const Shading& shading, glm::vec3 gradient, glm::vec3
 
 // Front-to-back accumulation state of one ray.
 struct RayAccumulator {
-  glm::vec3 colour{0.f};
+  glm::vec3 color{0.f};
   float opacity = 0.f;
 
   // C += (1 - A) alpha s rgb, A += (1 - A) alpha.
   void add(const glm::vec4& rgba, float shade) {
     const float weight = (1.f - opacity) * rgba.a;
-    colour += weight * shade * glm::vec3(rgba);
+    color += weight * shade * glm::vec3(rgba);
     opacity += weight;
   }
-  glm::vec4 pixel() const { return glm::vec4(colour, opacity); }
+  glm::vec4 pixel() const { return glm::vec4(color, opacity); }
 };
 
 // MIP: the maximum density through the window as grey (rendering model).

@@ -1,5 +1,5 @@
 #pragma once
-// A rendered image: linear RGBA floats (accumulated colour C and opacity A of the rendering model),
+// A rendered image: linear RGBA floats (accumulated color C and opacity A of the rendering model),
 // row 0 at the top.
 #include <cstdint>
 #include <vector>

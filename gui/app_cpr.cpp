@@ -101,8 +101,8 @@ void App::updateCpr() {
   CprInputs inputs{vessel_.framedFor, vessel_.file, state.view.axis, state.view.angleDeg,
                    // The high level's pixel size, so a projected CPR registers with the DVR image.
                    std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm),
-                   state.cpr.mode, state.cpr.path, state.cpr.colouring, std::nullopt};
-  if (state.cpr.colouring == CprColouring::focusTf) inputs.focusTf = state.vesselGlyph.focusTf;
+                   state.cpr.mode, state.cpr.path, state.cpr.coloring, std::nullopt};
+  if (state.cpr.coloring == CprColoring::focusTf) inputs.focusTf = state.vesselGlyph.focusTf;
   if (inputs == panel.madeFor || panel.job.running()) return;  // one at a time: the next one after it
   if (panel.cpr && (ImGui::IsAnyItemActive() || state.view.autoSpin)) return;
   panel.computing = inputs;
@@ -122,7 +122,7 @@ void App::updateCpr() {
     const ViewGeometry geometry = cprView(volume, inputs.axis, inputs.angleDeg, inputs.pixelMm);
     Cpr cpr = computeCpr(volume, paths, geometry, CprSettings{inputs.mode, {}});
     CprDisplay display;
-    if (inputs.colouring == CprColouring::calcium) display.windowLevel = kCalciumWindow;
+    if (inputs.coloring == CprColoring::calcium) display.windowLevel = kCalciumWindow;
     if (inputs.focusTf) display.tf = *inputs.focusTf;
     std::shared_ptr<const DisplayImage> image = makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
     return ComputedCpr{inputs, std::move(cpr), std::move(image)};

@@ -32,8 +32,8 @@ struct CprInputs {
   double pixelMm = 1;
   CprMode mode = CprMode::straightened;
   int path = -1;
-  CprColouring colouring = CprColouring::ctaLumen;
-  std::optional<TransferFunction> focusTf;  // with the focus TF's colours only
+  CprColoring coloring = CprColoring::ctaLumen;
+  std::optional<TransferFunction> focusTf;  // with the focus TF's colors only
 
   friend bool operator==(const CprInputs&, const CprInputs&) = default;
 };
@@ -47,7 +47,7 @@ struct ComputedCpr {
 struct CprViewPanel {
   explicit CprViewPanel(const GlApi& gl) : texture(gl) {}
 
-  // What the user set is the document's CprState (shown, mode, path, colouring, hybrid).
+  // What the user set is the document's CprState (shown, mode, path, coloring, hybrid).
 
   // What is shown.
   StreamedTexture texture;

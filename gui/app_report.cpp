@@ -147,7 +147,7 @@ nlohmann::json App::hybridReport() const {
           {"rendering", scene_ && scene_->recipe().hybrid.has_value()},
           {"path", cpr.path},
           {"transition_mm", cpr.transitionMm},
-          {"colouring", cprColouringName(cpr.colouring)},
+          {"colouring", cprColoringName(cpr.coloring)},
           {"problem", vessel_.hybridProblem}};
 }
 

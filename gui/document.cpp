@@ -6,9 +6,9 @@
 
 namespace angio {
 
-const char* cprColouringName(CprColouring colouring) {
+const char* cprColoringName(CprColoring coloring) {
   constexpr const char* kNames[] = {"cta-lumen", "calcium", "focus-tf"};
-  return kNames[int(colouring)];
+  return kNames[int(coloring)];
 }
 
 const char* tfTargetName(TfTarget target) {

@@ -35,20 +35,20 @@ struct ViewState {
   friend bool operator==(const ViewState&, const ViewState&) = default;
 };
 
-// How the CPR section colours a CPR: grey through the CTA-lumen or calcium window
+// How the CPR section colors a CPR: grey through the CTA-lumen or calcium window
 // (vessel/cpr_display.h), or through the VesselGlyph focus TF.
-enum class CprColouring { ctaLumen = 0, calcium = 1, focusTf = 2 };
+enum class CprColoring { ctaLumen = 0, calcium = 1, focusTf = 2 };
 
 // "cta-lumen", "calcium", "focus-tf" (session files and the state report).
-const char* cprColouringName(CprColouring colouring);
+const char* cprColoringName(CprColoring coloring);
 
 // The CPR section: the view beside the image and the DVR+CPR hybrid in the image share the path
-// and the colouring. (The VesselGlyph settings the hybrid builds on are VesselGlyphState's.)
+// and the coloring. (The VesselGlyph settings the hybrid builds on are VesselGlyphState's.)
 struct CprState {
   bool shown = false;  // the CPR view beside the image
   CprMode mode = CprMode::straightened;
   int path = -1;       // centerline path index, -1 = all paths
-  CprColouring colouring = CprColouring::ctaLumen;
+  CprColoring coloring = CprColoring::ctaLumen;
   bool hybrid = false;       // the DVR+CPR hybrid (needs VesselGlyph on)
   double transitionMm = 0;   // the hybrid's transition band, 0 = hard edge
 

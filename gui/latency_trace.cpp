@@ -95,7 +95,7 @@ void LatencyTrace::restart() {
 
 nlohmann::json LatencyTrace::report() const {
   nlohmann::json stages = nlohmann::json::array();
-  for (int s = 0; s < kStages; ++s) {
+  for (int s = 0; s < stageCount; ++s) {
     nlohmann::json row = stages_[s].json();
     row["stage"] = kStageNames[s];
     stages.push_back(row);

@@ -87,8 +87,8 @@ class LatencyTrace {
   std::array<int, kQualityLevels> firstLevels_{};  // level of each traced request's first frame
 
   enum Stage { inputToRequest, requestToPickup, workerBusy, wake, pickupToRender, render, publish,
-               publishToUi, upload, present, total, cancel, inputToScreen, kStages };
-  std::array<LatencySamples, kStages> stages_;
+               publishToUi, upload, present, total, cancel, inputToScreen, stageCount };
+  std::array<LatencySamples, stageCount> stages_;
 };
 
 }  // namespace angio

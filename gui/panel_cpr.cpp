@@ -10,9 +10,9 @@ namespace {
 
 constexpr double kMaxTransitionMm = 10;
 constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
-constexpr const char* kColourings[] = {"CTA lumen", "calcium", "focus TF"};
-constexpr const char* kColouringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
-const ImVec4 kErrorColour(1, 0.45f, 0.35f, 1), kWarningColour(1, 0.8f, 0.4f, 1);
+constexpr const char* kColorings[] = {"CTA lumen", "calcium", "focus TF"};
+constexpr const char* kColoringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
+const ImVec4 kErrorColor(1, 0.45f, 0.35f, 1), kWarningColor(1, 0.8f, 0.4f, 1);
 
 void drawCprView(CprState& cpr, const Centerlines& centerlines, WidgetRects& rects) {
   ImGui::Checkbox("CPR view beside the image", &cpr.shown);
@@ -29,11 +29,11 @@ void drawCprView(CprState& cpr, const Centerlines& centerlines, WidgetRects& rec
     ImGui::EndCombo();
   }
   noteRect(rects, "cpr_path");
-  ImGui::TextUnformatted("colour");
+  ImGui::TextUnformatted("color");
   for (int n = 0; n < 3; ++n) {
     ImGui::SameLine();
-    if (ImGui::RadioButton(kColourings[n], int(cpr.colouring) == n)) cpr.colouring = CprColouring(n);
-    noteRect(rects, std::string("cpr_colour_") + kColouringKeys[n]);
+    if (ImGui::RadioButton(kColorings[n], int(cpr.coloring) == n)) cpr.coloring = CprColoring(n);
+    noteRect(rects, std::string("cpr_colour_") + kColoringKeys[n]);
   }
 }
 
@@ -44,7 +44,7 @@ void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, Widg
   const bool vesselGlyphOn = info.vesselGlyphEnabled || (cpr.hybrid && !hybridBefore);
   noteRect(rects, "cpr_hybrid");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("The projected CPR of the path above, coloured as above, in the VesselGlyph "
+    ImGui::SetTooltip("The projected CPR of the path above, colored as above, in the VesselGlyph "
                       "focus's footprint of the image (thesis fig. 5.4)");
   if (!cpr.hybrid) return;
   ImGui::SameLine();
@@ -53,8 +53,8 @@ void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, Widg
   ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm");
   noteRect(rects, "cpr_transition");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Width of the band over which the CPR fades into the DVR (0: hard edge)");
-  if (!vesselGlyphOn) ImGui::TextColored(kWarningColour, "the hybrid needs VesselGlyph on (its focus is the cut)");
-  if (!info.hybridProblem.empty()) ImGui::TextColored(kErrorColour, "%s", info.hybridProblem.c_str());
+  if (!vesselGlyphOn) ImGui::TextColored(kWarningColor, "the hybrid needs VesselGlyph on (its focus is the cut)");
+  if (!info.hybridProblem.empty()) ImGui::TextColored(kErrorColor, "%s", info.hybridProblem.c_str());
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ std::optional<CprEdit> drawCprPanel(const CprState& cpr, const CprPanelInfo& inf
   if (!info.physical) return std::nullopt;
   CprState edited = cpr;
   drawCprView(edited, *info.physical, rects);
-  if (!info.error.empty()) ImGui::TextColored(kErrorColour, "%s", info.error.c_str());
+  if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
   drawHybrid(edited, cpr.hybrid, info, rects);
   if (edited == cpr) return std::nullopt;
   return CprEdit{edited};

@@ -1,7 +1,7 @@
 #pragma once
 // The CPR section (thesis sec. 5.2.2): the CPR view beside the image, its mode, path and
-// colouring, and the DVR+CPR hybrid in the image (thesis fig. 5.4) with its transition band. The
-// hybrid shares the view's path and colouring.
+// coloring, and the DVR+CPR hybrid in the image (thesis fig. 5.4) with its transition band. The
+// hybrid shares the view's path and coloring.
 #include <optional>
 #include <string>
 

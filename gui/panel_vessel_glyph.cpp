@@ -11,7 +11,7 @@ namespace angio {
 namespace {
 
 constexpr const char* kContextNames[] = {"none", "slab", "tube"};
-const ImVec4 kErrorColour(1, 0.45f, 0.35f, 1), kWarningColour(1, 0.8f, 0.4f, 1);
+const ImVec4 kErrorColor(1, 0.45f, 0.35f, 1), kWarningColor(1, 0.8f, 0.4f, 1);
 
 // A slider for a double; true when it changed.
 bool sliderMm(const char* label, double& value, double lo, double hi, const char* format = "%.1f mm") {
@@ -48,24 +48,24 @@ bool drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info, Widge
   ImGui::EndDisabled();
   noteRect(rects, "vg_load");
   if (info.loading) ImGui::TextDisabled("loading %s ...", info.loadingFile.c_str());
-  if (!info.error.empty()) ImGui::TextColored(kErrorColour, "%s", info.error.c_str());
+  if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
   if (info.physical)
     ImGui::TextDisabled("%zu paths, %zu points: %s", info.physical->paths.size(), centerlinePointCount(*info.physical),
                         info.file.c_str());
-  if (!info.warnings.empty()) ImGui::TextColored(kWarningColour, "%s", info.warnings.c_str());
+  if (!info.warnings.empty()) ImGui::TextColored(kWarningColor, "%s", info.warnings.c_str());
   return load;
 }
 
 void drawFocus(TubeRadius& focus, WidgetRects& rects) {
   ImGui::TextUnformatted("focus radius");
   ImGui::SameLine();
-  if (ImGui::RadioButton("x vessel radius", focus.mode == RadiusMode::kVesselFactor))
-    focus = {RadiusMode::kVesselFactor, 2.0, 0.0};
+  if (ImGui::RadioButton("x vessel radius", focus.mode == RadiusMode::vesselFactor))
+    focus = {RadiusMode::vesselFactor, 2.0, 0.0};
   noteRect(rects, "vg_focus_factor");
   ImGui::SameLine();
-  if (ImGui::RadioButton("mm##focus", focus.mode == RadiusMode::kConstant)) focus = {RadiusMode::kConstant, 5.0, 0.0};
+  if (ImGui::RadioButton("mm##focus", focus.mode == RadiusMode::constant)) focus = {RadiusMode::constant, 5.0, 0.0};
   noteRect(rects, "vg_focus_mm");
-  if (focus.mode == RadiusMode::kVesselFactor) {
+  if (focus.mode == RadiusMode::vesselFactor) {
     ImGui::SetNextItemWidth(180);
     const double lo = 0.5, hi = 6;
     ImGui::SliderScalar("x radius##focus", ImGuiDataType_Double, &focus.value, &lo, &hi, "%.2fx");
@@ -84,12 +84,12 @@ void drawContext(VesselGlyphSettings& s, WidgetRects& rects) {
     if (ImGui::RadioButton(label, int(s.context) == n)) s.context = ContextShape(n);
     noteRect(rects, std::string("vg_context_") + kContextNames[n]);
   }
-  if (s.context == ContextShape::kSlab) {
+  if (s.context == ContextShape::slab) {
     sliderMm("in front (d1)", s.slab.frontMm, 0, 200);
     sliderMm("behind (d2)", s.slab.backMm, 0, 200);
     sliderMm("half width", s.slab.halfWidthMm, 5, 300);
-  } else if (s.context == ContextShape::kTube) {
-    s.contextTube.mode = RadiusMode::kConstant;
+  } else if (s.context == ContextShape::tube) {
+    s.contextTube.mode = RadiusMode::constant;
     sliderMm("radius##context", s.contextTube.value, 1, 150);
   }
 }
@@ -128,7 +128,7 @@ VesselGlyphPanelResult drawVesselGlyphPanel(const VesselGlyphState& state, Vesse
   ImGui::SameLine();
   ImGui::Checkbox("centerline overlay", &set.overlay);
   noteRect(rects, "vg_overlay");
-  if (!info.problem.empty()) ImGui::TextColored(kErrorColour, "%s", info.problem.c_str());
+  if (!info.problem.empty()) ImGui::TextColored(kErrorColor, "%s", info.problem.c_str());
   drawFocus(set.settings.focus, rects);
   drawContext(set.settings, rects);
   drawOutsideAndCuts(set, rects);

@@ -28,7 +28,7 @@ constexpr double kMaxTransitionMm = 100;
 
 Json cprJson(const CprState& cpr) {
   return {{"shown", cpr.shown}, {"mode", toString(cpr.mode)}, {"path", cpr.path},
-          {"colouring", cprColouringName(cpr.colouring)}, {"hybrid", cpr.hybrid},
+          {"colouring", cprColoringName(cpr.coloring)}, {"hybrid", cpr.hybrid},
           {"transition_mm", cpr.transitionMm}};
 }
 
@@ -196,12 +196,12 @@ struct SessionReader {
     if (c.contains("path") && !c["path"].is_number_integer()) fail("cpr path is not a path index or -1 (all)");
     cpr.path = int(number(c, "path", -1, 1e6, cpr.path));
     if (c.contains("colouring")) {
-      const std::string colouring = text(c, "colouring");
-      const CprColouring all[] = {CprColouring::ctaLumen, CprColouring::calcium, CprColouring::focusTf};
+      const std::string coloring = text(c, "colouring");
+      const CprColoring all[] = {CprColoring::ctaLumen, CprColoring::calcium, CprColoring::focusTf};
       const auto known = std::find_if(std::begin(all), std::end(all),
-                                      [&](CprColouring c) { return colouring == cprColouringName(c); });
+                                      [&](CprColoring c) { return coloring == cprColoringName(c); });
       if (known == std::end(all)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
-      cpr.colouring = *known;
+      cpr.coloring = *known;
     }
     cpr.hybrid = flag(c, "hybrid", cpr.hybrid);
     cpr.transitionMm = number(c, "transition_mm", 0, kMaxTransitionMm, cpr.transitionMm);

@@ -11,7 +11,7 @@ namespace angio {
 namespace {
 
 constexpr double kMinHu = -1024, kMaxHu = 3071;
-constexpr float kPlotHeight = 170, kColourBarHeight = 14, kTickHeight = 16;
+constexpr float kPlotHeight = 170, kColorBarHeight = 14, kTickHeight = 16;
 constexpr float kPickRadius = 7;
 
 struct PlotFrame {
@@ -26,7 +26,7 @@ struct PlotFrame {
   double opacityOfY(float y) const { return std::clamp(double(max.y - y) / height(), 0.0, 1.0); }
 };
 
-ImU32 colourOf(const glm::vec3& rgb, float alpha = 1.f) {
+ImU32 colorOf(const glm::vec3& rgb, float alpha = 1.f) {
   return ImGui::ColorConvertFloat4ToU32(ImVec4(rgb.r, rgb.g, rgb.b, alpha));
 }
 
@@ -37,7 +37,7 @@ TransferFunction withoutModulators(const TransferFunction& tf) {
 }
 
 // Where the points are drawn: their HU moved by the shift, so they sit over the histogram's
-// densities they colour; opacity unscaled (the scaled curve is drawn faintly).
+// densities they color; opacity unscaled (the scaled curve is drawn faintly).
 ImVec2 pointPosition(const PlotFrame& plot, const TransferFunction& tf, const ControlPoint& point) {
   return ImVec2(plot.xOfHu(point.hu + tf.modulators.huShift), plot.yOfOpacity(point.opacity));
 }
@@ -93,17 +93,17 @@ void drawCurves(ImDrawList* draw, const PlotFrame& plot, const TransferFunction&
   }
   for (int n = 0; n < int(tf.points.size()); ++n) {
     const ImVec2 p = pointPosition(plot, tf, tf.points[n]);
-    draw->AddCircleFilled(p, 5, colourOf(tf.points[n].color));
+    draw->AddCircleFilled(p, 5, colorOf(tf.points[n].color));
     draw->AddCircle(p, 5.5f, n == selected ? IM_COL32(255, 220, 0, 255) : IM_COL32(255, 255, 255, 200),
                     0, n == selected ? 2.f : 1.f);
   }
 }
 
-void drawColourBar(ImDrawList* draw, const PlotFrame& plot, const TransferFunction& tf, float top) {
+void drawColorBar(ImDrawList* draw, const PlotFrame& plot, const TransferFunction& tf, float top) {
   for (int column = 0; column < int(plot.width()); ++column) {
     const float x = plot.min.x + column;
     const glm::vec4 rgba = evaluate(tf, plot.huOfX(x + 0.5f));
-    draw->AddRectFilled(ImVec2(x, top), ImVec2(x + 1, top + kColourBarHeight), colourOf(glm::vec3(rgba)));
+    draw->AddRectFilled(ImVec2(x, top), ImVec2(x + 1, top + kColorBarHeight), colorOf(glm::vec3(rgba)));
   }
 }
 
@@ -176,7 +176,7 @@ void drawSelectedPointFields(TransferFunction& tf, TfEditorView& view, bool& cha
   ControlPoint& point = tf.points[view.selected];
   ImGui::PushID(view.selected);
   float rgb[3] = {point.color.r, point.color.g, point.color.b};
-  if (ImGui::ColorEdit3("colour", rgb, ImGuiColorEditFlags_Float)) {
+  if (ImGui::ColorEdit3("color", rgb, ImGuiColorEditFlags_Float)) {
     point.color = glm::clamp(glm::vec3(rgb[0], rgb[1], rgb[2]), 0.f, 1.f);
     changed = true;
   }
@@ -242,15 +242,15 @@ TfEdit drawTfEditor(const TransferFunction& input, const std::vector<float>& his
   interactWithPlot(plot, tf, view, changed);
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->PushClipRect(plot.min, ImVec2(plot.max.x, plot.max.y + kColourBarHeight + kTickHeight + 4), true);
+  draw->PushClipRect(plot.min, ImVec2(plot.max.x, plot.max.y + kColorBarHeight + kTickHeight + 4), true);
   draw->AddRectFilled(plot.min, plot.max, IM_COL32(25, 25, 30, 255));
   drawHistogram(draw, plot, histogram);
   drawCurves(draw, plot, tf, view.selected);
   draw->AddRect(plot.min, plot.max, IM_COL32(120, 120, 120, 255));
-  drawColourBar(draw, plot, tf, plot.max.y + 2);
-  drawTicks(draw, plot, plot.max.y + kColourBarHeight + 2);
+  drawColorBar(draw, plot, tf, plot.max.y + 2);
+  drawTicks(draw, plot, plot.max.y + kColorBarHeight + 2);
   draw->PopClipRect();
-  ImGui::Dummy(ImVec2(width, kColourBarHeight + kTickHeight + 4));
+  ImGui::Dummy(ImVec2(width, kColorBarHeight + kTickHeight + 4));
   if (histogram.empty()) ImGui::TextDisabled("histogram: counting...");
 
   drawSelectedPointFields(tf, view, changed);

@@ -2,8 +2,8 @@
 // The transfer-function editor (immediate mode): drawn every frame from a TransferFunction value,
 // returns the edited value; the app decides what an edit triggers (a progressive render, an undo
 // step; while a gesture is held ImGui reports an active item and the app renders fast only). Plot: the volume's density histogram (log counts) behind the opacity curve, control points
-// coloured by their colour; drag a point to move it (HU and opacity), double-click to add one,
-// right-click to delete one, wheel to zoom the HU range. Below: the colour bar, HU ticks, the
+// colored by their color; drag a point to move it (HU and opacity), double-click to add one,
+// right-click to delete one, wheel to zoom the HU range. Below: the color bar, HU ticks, the
 // selected point's fields, and the thesis's safe manipulators (opacity modulator, HU shift).
 #include <optional>
 #include <vector>
@@ -19,7 +19,7 @@ struct TfEditorView {
   double huMin = -1024, huMax = 3071;  // the visible HU range
   int selected = -1;                   // index of the selected point
   int dragging = -1;                   // index of the point being dragged
-  // The TF before the edit gesture in progress (a drag, a slider held, a colour being picked).
+  // The TF before the edit gesture in progress (a drag, a slider held, a color being picked).
   std::optional<TransferFunction> gestureBefore;
   ImVec2 plotMin, plotMax;             // where the plot was drawn last frame (screen)
 };

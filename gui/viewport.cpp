@@ -12,9 +12,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinZoom = 0.1, kMaxZoom = 64;
 constexpr float kFitMargin = 0.95f;  // leave room for the letters at zoom 1
 
-void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 colour, const char* text) {
+void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 color, const char* text) {
   draw->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
-  draw->AddText(at, colour, text);
+  draw->AddText(at, color, text);
 }
 
 // Zoom by the wheel about the cursor: the image point under the cursor stays under it.
@@ -34,7 +34,7 @@ void drawOrientation(ImDrawList* draw, const ViewState& view, ImVec2 imageMin, I
   const ImVec2 visibleMax(std::min(imageMax.x, max.x), std::min(imageMax.y, max.y));
   if (visibleMin.x >= visibleMax.x || visibleMin.y >= visibleMax.y) return;
   const ImVec2 mid((visibleMin.x + visibleMax.x) / 2, (visibleMin.y + visibleMax.y) / 2);
-  const ImU32 colour = IM_COL32(255, 230, 90, 255);
+  const ImU32 color = IM_COL32(255, 230, 90, 255);
   const float margin = 6, captionRow = ImGui::GetTextLineHeight() + 8;  // below the captions
   const auto place = [&](char letter, ImVec2 anchor, ImVec2 offset) {
     const char text[2] = {letter, 0};
@@ -42,7 +42,7 @@ void drawOrientation(ImDrawList* draw, const ViewState& view, ImVec2 imageMin, I
     const ImVec2 at(anchor.x + offset.x * size.x, anchor.y + offset.y * size.y);
     const ImVec2 inside(std::clamp(at.x, min.x + margin, std::max(min.x + margin, max.x - size.x - margin)),
                         std::clamp(at.y, min.y + captionRow, std::max(min.y + captionRow, max.y - size.y - margin)));
-    textWithShadow(draw, inside, colour, text);
+    textWithShadow(draw, inside, color, text);
   };
   place(letters.right, ImVec2(visibleMax.x + 4, mid.y), ImVec2(0, -0.5f));
   place(letters.left, ImVec2(visibleMin.x - 4, mid.y), ImVec2(-1, -0.5f));
@@ -54,15 +54,15 @@ void drawScaleBar(ImDrawList* draw, double pixelsPerMm, ImVec2 min, ImVec2 max) 
   const double mm = scaleBarMm(pixelsPerMm, 120);
   const float length = float(mm * pixelsPerMm);
   const ImVec2 start(min.x + 16, max.y - 18);
-  const ImU32 colour = IM_COL32(240, 240, 240, 255);
+  const ImU32 color = IM_COL32(240, 240, 240, 255);
   draw->AddRectFilled(ImVec2(start.x - 1, start.y - 5), ImVec2(start.x + length + 1, start.y + 2),
                       IM_COL32(0, 0, 0, 140));
-  draw->AddLine(start, ImVec2(start.x + length, start.y), colour, 2);
-  draw->AddLine(ImVec2(start.x, start.y - 4), ImVec2(start.x, start.y), colour, 2);
-  draw->AddLine(ImVec2(start.x + length, start.y - 4), ImVec2(start.x + length, start.y), colour, 2);
+  draw->AddLine(start, ImVec2(start.x + length, start.y), color, 2);
+  draw->AddLine(ImVec2(start.x, start.y - 4), ImVec2(start.x, start.y), color, 2);
+  draw->AddLine(ImVec2(start.x + length, start.y - 4), ImVec2(start.x + length, start.y), color, 2);
   char label[32];
   std::snprintf(label, sizeof label, mm >= 1 ? "%.0f mm" : "%.2g mm", mm);
-  textWithShadow(draw, ImVec2(start.x, start.y - 20), colour, label);
+  textWithShadow(draw, ImVec2(start.x, start.y - 20), color, label);
 }
 
 }  // namespace

@@ -93,7 +93,7 @@ void checkHeader(std::string_view header, const fs::path& source, int line) {
 }  // namespace
 
 void writeCenterlinesCsv(const Centerlines& centerlines, const fs::path& file) {
-  if (centerlines.frame != CenterlineFrame::kPhysical) {
+  if (centerlines.frame != CenterlineFrame::physical) {
     throw std::logic_error("centerline CSV holds physical coordinates, not volume-frame ones");
   }
   writeAtomically(file, [&](const fs::path& temp) {

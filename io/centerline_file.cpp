@@ -24,7 +24,7 @@ void warnEach(const Centerlines& centerlines, const std::vector<CenterlineIssue>
               const CenterlineLoadOptions& options) {
   if (!options.warn) return;
   for (const CenterlineIssue& issue : issues) {
-    if (issue.severity == IssueSeverity::kWarning) options.warn(describe(centerlines, issue));
+    if (issue.severity == IssueSeverity::warning) options.warn(describe(centerlines, issue));
   }
 }
 
@@ -42,7 +42,7 @@ void checkLoadedCenterlines(const Centerlines& centerlines, const fs::path& file
                             const CenterlineLoadOptions& options) {
   const std::vector<CenterlineIssue> issues = validateCenterlines(centerlines);
   for (const CenterlineIssue& issue : issues) {
-    if (issue.severity == IssueSeverity::kError) throw InputError(file, issue.problem);
+    if (issue.severity == IssueSeverity::error) throw InputError(file, issue.problem);
   }
   warnEach(centerlines, issues, options);
 }

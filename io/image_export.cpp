@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-enum class ExportFormat { Png8, Tiff16, ExrFloat };
+enum class ExportFormat { png8, tiff16, exrFloat };
 
 // What goes to OpenImageIO: channel count, pixel type and the interleaved pixel bytes.
 struct EncodedPixels {
@@ -32,9 +32,9 @@ struct EncodedPixels {
 
 ExportFormat formatOf(const fs::path& path) {
   const std::string extension = lowercase(path.extension().string());
-  if (extension == ".png") return ExportFormat::Png8;
-  if (extension == ".tif" || extension == ".tiff") return ExportFormat::Tiff16;
-  if (extension == ".exr") return ExportFormat::ExrFloat;
+  if (extension == ".png") return ExportFormat::png8;
+  if (extension == ".tif" || extension == ".tiff") return ExportFormat::tiff16;
+  if (extension == ".exr") return ExportFormat::exrFloat;
   throw InputError(path, "unknown image format \"" + path.extension().string() +
                              "\" (use .png, .tif, .tiff or .exr)");
 }
@@ -58,11 +58,11 @@ std::vector<std::uint16_t> toRgb16(const Image& image) {
 
 EncodedPixels encode(const Image& image, ExportFormat format) {
   switch (format) {
-    case ExportFormat::Png8:
+    case ExportFormat::png8:
       return {3, OIIO::TypeDesc::UINT8, toRgb8(image)};
-    case ExportFormat::Tiff16:
+    case ExportFormat::tiff16:
       return {3, OIIO::TypeDesc::UINT16, asBytes(toRgb16(image))};
-    case ExportFormat::ExrFloat:
+    case ExportFormat::exrFloat:
       break;
   }
   // Linear C and A as rendered (C is already premultiplied by A, as EXR expects).

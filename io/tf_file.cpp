@@ -122,7 +122,7 @@ Json parseJsonText(const std::string& text, const fs::path& source) {
 
 // --- Saving ---------------------------------------------------------------------------------
 
-// Colours are floats: written with the shortest decimal that reads back as the same float
+// Colors are floats: written with the shortest decimal that reads back as the same float
 // (0.6f as 0.6, not 0.6000000238418579), so files stay readable and round trips stay exact.
 double shortestDecimal(float value) {
   char buffer[32];

@@ -14,27 +14,27 @@ Json radiusJson(const TubeRadius& radius) {
 
 }  // namespace
 
-const char* radiusModeName(RadiusMode mode) { return mode == RadiusMode::kVesselFactor ? "factor" : "mm"; }
+const char* radiusModeName(RadiusMode mode) { return mode == RadiusMode::vesselFactor ? "factor" : "mm"; }
 
 std::optional<RadiusMode> parseRadiusMode(const std::string& name) {
-  if (name == "factor") return RadiusMode::kVesselFactor;
-  if (name == "mm") return RadiusMode::kConstant;
+  if (name == "factor") return RadiusMode::vesselFactor;
+  if (name == "mm") return RadiusMode::constant;
   return std::nullopt;
 }
 
 const char* contextShapeName(ContextShape shape) {
   switch (shape) {
-    case ContextShape::kNone: return "none";
-    case ContextShape::kTube: return "tube";
-    case ContextShape::kSlab: break;
+    case ContextShape::none: return "none";
+    case ContextShape::tube: return "tube";
+    case ContextShape::slab: break;
   }
   return "slab";
 }
 
 std::optional<ContextShape> parseContextShape(const std::string& name) {
-  if (name == "none") return ContextShape::kNone;
-  if (name == "slab") return ContextShape::kSlab;
-  if (name == "tube") return ContextShape::kTube;
+  if (name == "none") return ContextShape::none;
+  if (name == "slab") return ContextShape::slab;
+  if (name == "tube") return ContextShape::tube;
   return std::nullopt;
 }
 

@@ -21,26 +21,26 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 
 std::optional<VolumeFormat> volumeFormatOf(const std::filesystem::path& path) {
   const std::string name = lowercase(path.filename().string());
-  if (endsWith(name, ".mha") || endsWith(name, ".mhd")) return VolumeFormat::MetaImage;
-  if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) return VolumeFormat::Nrrd;
-  if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) return VolumeFormat::Nifti;
+  if (endsWith(name, ".mha") || endsWith(name, ".mhd")) return VolumeFormat::metaImage;
+  if (endsWith(name, ".nrrd") || endsWith(name, ".nhdr")) return VolumeFormat::nrrd;
+  if (endsWith(name, ".nii") || endsWith(name, ".nii.gz")) return VolumeFormat::nifti;
   return std::nullopt;
 }
 
 const char* formatName(VolumeFormat format) {
   switch (format) {
-    case VolumeFormat::MetaImage: return "MetaImage";
-    case VolumeFormat::Nrrd: return "NRRD";
-    case VolumeFormat::Nifti: return "NIfTI";
+    case VolumeFormat::metaImage: return "MetaImage";
+    case VolumeFormat::nrrd: return "NRRD";
+    case VolumeFormat::nifti: return "NIfTI";
   }
   return "?";
 }
 
 itk::ImageIOBase::Pointer makeImageIO(VolumeFormat format) {
   switch (format) {
-    case VolumeFormat::MetaImage: return itk::MetaImageIO::New().GetPointer();
-    case VolumeFormat::Nrrd: return itk::NrrdImageIO::New().GetPointer();
-    case VolumeFormat::Nifti: return itk::NiftiImageIO::New().GetPointer();
+    case VolumeFormat::metaImage: return itk::MetaImageIO::New().GetPointer();
+    case VolumeFormat::nrrd: return itk::NrrdImageIO::New().GetPointer();
+    case VolumeFormat::nifti: return itk::NiftiImageIO::New().GetPointer();
   }
   return nullptr;
 }

@@ -10,7 +10,7 @@
 
 namespace angio {
 
-enum class VolumeFormat { MetaImage, Nrrd, Nifti };
+enum class VolumeFormat { metaImage, nrrd, nifti };
 
 // By case-insensitive extension: .mha .mhd | .nrrd .nhdr | .nii .nii.gz. Empty if none of these.
 std::optional<VolumeFormat> volumeFormatOf(const std::filesystem::path& path);

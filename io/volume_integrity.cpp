@@ -166,8 +166,8 @@ void requireCompleteNifti(const std::filesystem::path& file) {
 
 void requireCompleteData(const std::filesystem::path& file, VolumeFormat format,
                          std::uint64_t voxelBytes) {
-  if (format == VolumeFormat::MetaImage) requireCompleteMetaImage(file, voxelBytes);
-  if (format == VolumeFormat::Nifti) requireCompleteNifti(file);
+  if (format == VolumeFormat::metaImage) requireCompleteMetaImage(file, voxelBytes);
+  if (format == VolumeFormat::nifti) requireCompleteNifti(file);
 }
 
 }  // namespace angio

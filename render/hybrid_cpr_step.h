@@ -20,7 +20,7 @@
 
 namespace angio {
 
-// Grey through the recipe's window, else the focus TF's colours; no marker line, no ruler.
+// Grey through the recipe's window, else the focus TF's colors; no marker line, no ruler.
 CprDisplay hybridCprDisplay(const VesselGlyphRecipe& vesselGlyph, const HybridCprRecipe& hybrid);
 
 class HybridCprStep {

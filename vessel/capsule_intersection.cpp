@@ -130,8 +130,8 @@ DepthRayRoundCone::Row DepthRayRoundCone::row(double v) const {
     const double half = std::sqrt(chordSquared);
     row.parts[row.partCount++] = {part, h - half, h + half};
   };
-  addBall(Part::kBall0, row.ball0, cone_.centre0.x);
-  addBall(Part::kBall1, row.ball1, cone_.centre1.x);
+  addBall(Part::ball0, row.ball0, cone_.centre0.x);
+  addBall(Part::ball1, row.ball1, cone_.centre1.x);
   if (!frustum_.present) return row;
   // w = (h - c0.h, v - c0.v, -c0.t) at h = c0.h.
   const glm::dvec3& axis = frustum_.axis;
@@ -160,7 +160,7 @@ DepthRayRoundCone::Row DepthRayRoundCone::row(double v) const {
   const auto hExtent = [&](double z, double sign) {
     return cone_.centre0.x + z * axis.x + sign * (k0 - z * tan) * sideways;
   };
-  row.parts[row.partCount++] = {Part::kFrustum, std::min(hExtent(zLo, -1), hExtent(zHi, -1)) - kSlack,
+  row.parts[row.partCount++] = {Part::frustum, std::min(hExtent(zLo, -1), hExtent(zHi, -1)) - kSlack,
                                 std::max(hExtent(zLo, 1), hExtent(zHi, 1)) + kSlack};
   return row;
 }
@@ -248,9 +248,9 @@ void DepthRayRoundCone::addFrustumSpansOpeningUp(const Row& row, double h0, doub
 void DepthRayRoundCone::addPartSpans(const Row& row, const RowPart& part, double h0, double dh,
                                      int count, DepthSpan* out) const {
   switch (part.part) {
-    case Part::kBall0:
-    case Part::kBall1: {
-      const bool first = part.part == Part::kBall0;
+    case Part::ball0:
+    case Part::ball1: {
+      const bool first = part.part == Part::ball0;
       const glm::dvec3& centre = first ? cone_.centre0 : cone_.centre1;
       const double chordSquared = first ? row.ball0 : row.ball1;
       for (int n = 0; n < count; ++n) {
@@ -259,7 +259,7 @@ void DepthRayRoundCone::addPartSpans(const Row& row, const RowPart& part, double
       }
       return;
     }
-    case Part::kFrustum:
+    case Part::frustum:
       if (quadA_ > 1e-6) {
         addFrustumSpansOpeningUp(row, h0, dh, count, out);
       } else {

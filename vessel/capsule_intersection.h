@@ -68,9 +68,9 @@ class DepthRayRoundCone {
  public:
   DepthRayRoundCone(const RoundCone& cone, bool withEndBall);
 
-  enum class Part { kBall0, kBall1, kFrustum };
+  enum class Part { ball0, ball1, frustum };
   struct RowPart {
-    Part part = Part::kBall0;
+    Part part = Part::ball0;
     double hLo = 0, hHi = 0;  // the columns it can cover
   };
   // What depends on the row's v alone.

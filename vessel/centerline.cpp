@@ -21,7 +21,7 @@ bool isFinite(glm::dvec3 v) {
 
 // Continuous voxel index of a point given in `frame`.
 glm::dvec3 voxelIndexOf(const Volume& volume, CenterlineFrame frame, glm::dvec3 positionMm) {
-  return frame == CenterlineFrame::kPhysical ? physicalToIndex(volume, positionMm)
+  return frame == CenterlineFrame::physical ? physicalToIndex(volume, positionMm)
                                              : positionMm / volume.spacing;
 }
 
@@ -46,10 +46,10 @@ CenterlinePoint pointAtArcLength(const CenterlinePath& path, const std::vector<d
 
 void checkPath(const CenterlinePath& path, std::vector<CenterlineIssue>& issues) {
   const auto error = [&](const std::string& problem) {
-    issues.push_back({IssueSeverity::kError, quoted(path) + ": " + problem});
+    issues.push_back({IssueSeverity::error, quoted(path) + ": " + problem});
   };
   const auto warning = [&](const std::string& problem) {
-    issues.push_back({IssueSeverity::kWarning, quoted(path) + ": " + problem});
+    issues.push_back({IssueSeverity::warning, quoted(path) + ": " + problem});
   };
   if (path.points.empty()) return error("has no points");
   std::size_t zeroRadii = 0;
@@ -79,11 +79,11 @@ glm::ivec3 nearestVoxelToPoint(const Volume& volume, glm::dvec3 physicalMm) {
 }
 
 Centerlines toVolumeFrame(const Centerlines& centerlines, const Volume& volume) {
-  if (centerlines.frame != CenterlineFrame::kPhysical) {
+  if (centerlines.frame != CenterlineFrame::physical) {
     throw std::logic_error("centerlines of " + centerlines.source + " are already in the volume frame");
   }
   Centerlines mapped = centerlines;
-  mapped.frame = CenterlineFrame::kVolume;
+  mapped.frame = CenterlineFrame::volume;
   for (CenterlinePath& path : mapped.paths) {
     for (CenterlinePoint& point : path.points) {
       point.positionMm = volumeFrameMm(volume, point.positionMm);
@@ -169,7 +169,7 @@ std::size_t sharedPrefixLength(const CenterlinePath& a, const CenterlinePath& b,
 std::vector<CenterlineIssue> validateCenterlines(const Centerlines& centerlines) {
   std::vector<CenterlineIssue> issues;
   if (centerlines.paths.empty()) {
-    issues.push_back({IssueSeverity::kError, "contains no centerline paths"});
+    issues.push_back({IssueSeverity::error, "contains no centerline paths"});
   }
   for (const CenterlinePath& path : centerlines.paths) checkPath(path, issues);
   return issues;
@@ -184,7 +184,7 @@ std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines,
       outside += !insideVolume(volume, voxelIndexOf(volume, centerlines.frame, point.positionMm));
     }
     if (outside == 0) continue;
-    issues.push_back({IssueSeverity::kWarning,
+    issues.push_back({IssueSeverity::warning,
                       quoted(path) + ": " + std::to_string(outside) + " of " +
                           countOf(path.points.size(), "point lies", "points lie") +
                           " outside the volume"});
@@ -194,7 +194,7 @@ std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines,
 
 bool hasError(const std::vector<CenterlineIssue>& issues) {
   return std::any_of(issues.begin(), issues.end(), [](const CenterlineIssue& issue) {
-    return issue.severity == IssueSeverity::kError;
+    return issue.severity == IssueSeverity::error;
   });
 }
 

@@ -34,11 +34,11 @@ struct CenterlinePath {
   friend bool operator==(const CenterlinePath&, const CenterlinePath&) = default;
 };
 
-enum class CenterlineFrame { kPhysical, kVolume };
+enum class CenterlineFrame { physical, volume };
 
 struct Centerlines {
   std::string source;  // the file (or "phantom"), for messages
-  CenterlineFrame frame = CenterlineFrame::kPhysical;
+  CenterlineFrame frame = CenterlineFrame::physical;
   std::vector<CenterlinePath> paths;
 
   friend bool operator==(const Centerlines&, const Centerlines&) = default;
@@ -86,10 +86,10 @@ std::size_t sharedPrefixLength(const CenterlinePath& a, const CenterlinePath& b,
 
 // --- Validation ---------------------------------------------------------------------------------
 
-enum class IssueSeverity { kWarning, kError };
+enum class IssueSeverity { warning, error };
 
 struct CenterlineIssue {
-  IssueSeverity severity = IssueSeverity::kError;
+  IssueSeverity severity = IssueSeverity::error;
   std::string problem;  // one line naming the path, e.g. "path 'left iliac': 2 points have radius 0"
 };
 

@@ -14,7 +14,7 @@ namespace {
 
 static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "Image pixels must be packed RGBA floats");
 
-const glm::vec4 kMarkerColour{1.0f, 0.85f, 0.1f, 1.0f};
+const glm::vec4 kMarkerColor{1.0f, 0.85f, 0.1f, 1.0f};
 constexpr float kMarkerOpacity = 0.7f;  // the lumen stays visible under the marker
 
 // The image's pixels as an OpenCV canvas (no copy), for lines and text.
@@ -29,7 +29,7 @@ void fillPixels(Image& image, const std::vector<float>& hu, const CprDisplay& di
       display.tf ? std::optional<TfTable>(buildTable(*display.tf)) : std::nullopt;
   for (std::size_t n = 0; n < hu.size(); ++n) {
     if (std::isnan(hu[n])) continue;  // stays transparent black
-    image.pixels[n] = cprColour(hu[n], display, table ? &*table : nullptr);
+    image.pixels[n] = cprColor(hu[n], display, table ? &*table : nullptr);
   }
 }
 
@@ -53,7 +53,7 @@ void drawMarker(Image& image, const std::vector<CprCurve>& curves) {
     }
   }
   for (std::size_t n = 0; n < marked.size(); ++n) {
-    if (marked[n]) image.pixels[n] = glm::mix(image.pixels[n], kMarkerColour, kMarkerOpacity);
+    if (marked[n]) image.pixels[n] = glm::mix(image.pixels[n], kMarkerColor, kMarkerOpacity);
   }
 }
 
@@ -80,13 +80,13 @@ void drawRuler(Image& image, const std::vector<CprCurve>& curves, double stepMm)
       const double half = major ? 6 : 3;
       const glm::dvec2 a = p - half * across, b = p + half * across;
       cv::line(canvas, cv::Point(int(std::lround(a.x)), int(std::lround(a.y))),
-               cv::Point(int(std::lround(b.x)), int(std::lround(b.y))), scalarOf(kMarkerColour), 1,
+               cv::Point(int(std::lround(b.x)), int(std::lround(b.y))), scalarOf(kMarkerColor), 1,
                cv::LINE_8);
       if (!major) continue;
       const glm::dvec2 label = p + (half + 3) * (across.x >= 0 ? across : -across);
       cv::putText(canvas, std::to_string(long(std::lround(s))),
                   cv::Point(int(std::lround(label.x)), int(std::lround(label.y + 4))),
-                  cv::FONT_HERSHEY_PLAIN, 0.8, scalarOf(kMarkerColour), 1, cv::LINE_8);
+                  cv::FONT_HERSHEY_PLAIN, 0.8, scalarOf(kMarkerColor), 1, cv::LINE_8);
     }
   }
 }
@@ -104,7 +104,7 @@ float windowGrey(float hu, WindowLevel windowLevel) {
   return float(std::clamp((hu - low) / windowLevel.window, 0.0, 1.0));
 }
 
-glm::vec4 cprColour(float hu, const CprDisplay& display, const TfTable* table) {
+glm::vec4 cprColor(float hu, const CprDisplay& display, const TfTable* table) {
   if (table) return glm::vec4(glm::vec3(table->rgba[densityOfHu(hu)]), 1.0f);
   const float g = windowGrey(hu, display.windowLevel);
   return {g, g, g, 1.0f};

@@ -1,5 +1,5 @@
 #pragma once
-// Showing a CPR: grey through a window/level, or coloured through a transfer
+// Showing a CPR: grey through a window/level, or colored through a transfer
 // function so it harmonises with the DVR (thesis sec. 5.2.2), with the centerline marked and an
 // arc-length ruler. Pixels the CPR does not sample are transparent black (A = 0), sampled ones
 // opaque, so a projected CPR can be laid over the DVR image it registers with.
@@ -29,7 +29,7 @@ std::optional<WindowLevel> windowPreset(const std::string& name);  // "cta-lumen
 
 struct CprDisplay {
   WindowLevel windowLevel = kCtaLumenWindow;
-  std::optional<TransferFunction> tf;  // if set: TF colour (rgb at the pixel's HU) instead of grey
+  std::optional<TransferFunction> tf;  // if set: TF color (rgb at the pixel's HU) instead of grey
   bool centerlineMarker = true;
   bool ruler = true;
   double rulerStepMm = 10;  // a tick every step, a label every 5 steps
@@ -38,9 +38,9 @@ struct CprDisplay {
 // Grey value of a HU under a window/level: clamp((HU - (level - window / 2)) / window, 0, 1).
 float windowGrey(float hu, WindowLevel windowLevel);
 
-// The colour of a sampled pixel of `hu`: through `table` (= buildTable(*display.tf), when the
+// The color of a sampled pixel of `hu`: through `table` (= buildTable(*display.tf), when the
 // display has a TF), else grey through the window; opaque.
-glm::vec4 cprColour(float hu, const CprDisplay& display, const TfTable* table);
+glm::vec4 cprColor(float hu, const CprDisplay& display, const TfTable* table);
 
 // hu: row-major layout.width x layout.height, NaN = not sampled (resampleCpr's output).
 Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const CprDisplay& display);

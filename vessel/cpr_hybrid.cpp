@@ -46,7 +46,7 @@ void checkSizes(const Image& dvr, int cprWidth, int cprHeight,
     throw std::invalid_argument("hybrid: the transition must be >= 0 mm and the pixel size > 0");
 }
 
-// The CPR colour over the DVR colour with the CPR's weight in (0, 1].
+// The CPR color over the DVR color with the CPR's weight in (0, 1].
 glm::vec4 blend(glm::vec4 dvr, glm::vec4 cpr, float weight) {
   return weight >= 1.f ? cpr : (1.f - weight) * dvr + weight * cpr;
 }
@@ -101,7 +101,7 @@ void compositeCprInPlace(Image& dvr, const Volume& volume, const CprLayout& layo
                           const float hu = trilinearHu(volume, span.pointMm(x));
                           if (std::isnan(hu)) continue;  // displayCpr leaves it transparent
                           glm::vec4& pixel = dvr.pixels[row + x];
-                          pixel = blend(pixel, cprColour(hu, display, table ? &*table : nullptr), weight);
+                          pixel = blend(pixel, cprColor(hu, display, table ? &*table : nullptr), weight);
                         }
                       }
                     });

@@ -28,7 +28,7 @@ struct HybridCompositing {
   double pixelMm = 1;       // D, the images' pixel size (mm)
 };
 
-// dvr: the VesselGlyph DVR (its cut pixels are replaced); cpr: the projected CPR shown as colour (displayCpr: A = 0
+// dvr: the VesselGlyph DVR (its cut pixels are replaced); cpr: the projected CPR shown as color (displayCpr: A = 0
 // where not sampled, else 1), same size; footprint as focusFootprint. Throws std::invalid_argument
 // on mismatched sizes or a negative transition.
 Image compositeHybrid(const Image& dvr, const Image& cpr, const std::vector<std::uint8_t>& footprint,
@@ -37,7 +37,7 @@ Image compositeHybrid(const Image& dvr, const Image& cpr, const std::vector<std:
 // The same hybrid in place, for a projected CPR `layout` (laid out in the DVR's view): equal to
 // compositeHybrid(dvr, displayCpr(layout, resampleCpr(volume, layout), display), footprint,
 // settings) with the display's marker and ruler off, but only the pixels the CPR shows in are
-// resampled and coloured, so its cost follows the footprint, not the whole image. Throws as
+// resampled and colored, so its cost follows the footprint, not the whole image. Throws as
 // compositeHybrid.
 void compositeCprInPlace(Image& dvr, const Volume& volume, const CprLayout& layout,
                          const std::vector<std::uint8_t>& footprint, const CprDisplay& display,

@@ -52,7 +52,7 @@ GlyphTubes::Vertex tubeVertex(const CenterlinePoint& point, const VesselGlyphSet
   GlyphTubes::Vertex vertex;
   vertex.positionMm = point.positionMm;
   vertex.focusRadiusMm = settings.focus.at(vesselRadius);
-  if (settings.context == ContextShape::kTube) {
+  if (settings.context == ContextShape::tube) {
     vertex.contextRadiusMm = settings.contextTube.at(vesselRadius);
   }
   return vertex;
@@ -185,7 +185,7 @@ Tube makeTube(glm::dvec3 a, glm::dvec3 b, double radius0, double radius1, bool w
 std::vector<ViewSegment> viewSegments(const ViewGeometry& view, const GlyphTubes& tubes,
                                       const VesselGlyphSettings& settings) {
   std::vector<ViewSegment> segments;
-  const bool withTube = settings.context == ContextShape::kTube;
+  const bool withTube = settings.context == ContextShape::tube;
   for (std::size_t c = 0; c < tubes.chains.size(); ++c) {
     const auto& chain = tubes.chains[c];
     // A chain of one point is a ball: a segment of zero length.
@@ -235,7 +235,7 @@ std::pair<double, double> verticalReach(const ViewSegment& segment,
     lo = std::min(lo, segment.contextTube->vLo);
     hi = std::max(hi, segment.contextTube->vHi);
   }
-  if (settings.context == ContextShape::kSlab) {
+  if (settings.context == ContextShape::slab) {
     lo = std::min({lo, segment.a.y - pixelMm / 2, segment.b.y - pixelMm / 2});
     hi = std::max({hi, segment.a.y + pixelMm / 2, segment.b.y + pixelMm / 2});
   }
@@ -566,7 +566,7 @@ void RowBuilder::build(int y, const std::vector<ViewSegment>& segments,
     }
     addTube(segment, segment.focus, v, focusChain_, settings_->halfVessel);
     if (segment.contextTube) addTube(segment, *segment.contextTube, v, contextChain_, false);
-    if (settings_->context == ContextShape::kSlab) addSlab(segment, v);
+    if (settings_->context == ContextShape::slab) addSlab(segment, v);
   }
   focusChain_.flush(columns_);
   contextChain_.flush(columns_);
@@ -768,7 +768,7 @@ bool finiteAndNonNegative(double value) { return std::isfinite(value) && value >
 }  // namespace
 
 double TubeRadius::at(double vesselRadiusMm) const {
-  const double base = mode == RadiusMode::kConstant ? value : value * vesselRadiusMm;
+  const double base = mode == RadiusMode::constant ? value : value * vesselRadiusMm;
   return std::max(0.0, base + marginMm);
 }
 
@@ -797,7 +797,7 @@ std::optional<std::string> settingsProblem(const VesselGlyphSettings& settings) 
 }
 
 GlyphTubes prepareGlyphTubes(const Centerlines& inVolumeFrame, const VesselGlyphSettings& settings) {
-  if (inVolumeFrame.frame != CenterlineFrame::kVolume) {
+  if (inVolumeFrame.frame != CenterlineFrame::volume) {
     throw std::logic_error("VesselGlyph regions need centerlines in the volume frame");
   }
   if (const auto problem = settingsProblem(settings)) throw std::invalid_argument(*problem);

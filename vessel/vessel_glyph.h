@@ -57,11 +57,11 @@
 
 namespace angio {
 
-enum class RadiusMode { kConstant, kVesselFactor };
+enum class RadiusMode { constant, vesselFactor };
 
 struct TubeRadius {
-  RadiusMode mode = RadiusMode::kVesselFactor;
-  double value = 1.0;     // mm (kConstant) or factor of the vessel radius (kVesselFactor)
+  RadiusMode mode = RadiusMode::vesselFactor;
+  double value = 1.0;     // mm (constant) or factor of the vessel radius (vesselFactor)
   double marginMm = 0.0;  // added in either mode
 
   // The tube radius at a centerline point of the given lumen radius (mm).
@@ -78,16 +78,16 @@ struct SlabContext {
   friend bool operator==(const SlabContext&, const SlabContext&) = default;
 };
 
-enum class ContextShape { kNone, kSlab, kTube };
+enum class ContextShape { none, slab, tube };
 
 struct VesselGlyphSettings {
-  TubeRadius focus{RadiusMode::kVesselFactor, 2.0, 0.0};
-  ContextShape context = ContextShape::kSlab;
+  TubeRadius focus{RadiusMode::vesselFactor, 2.0, 0.0};
+  ContextShape context = ContextShape::slab;
   SlabContext slab;
-  TubeRadius contextTube{RadiusMode::kConstant, 20.0, 0.0};
+  TubeRadius contextTube{RadiusMode::constant, 20.0, 0.0};
   bool cleft = false;
   bool halfVessel = false;
-  // Lumen radius assumed where the centerline has none (0 = unknown), for kVesselFactor tubes.
+  // Lumen radius assumed where the centerline has none (0 = unknown), for vesselFactor tubes.
   double unknownVesselRadiusMm = 2.0;
   // Path simplification before the per-view work (see above); 0 keeps every point.
   double simplifyToleranceMm = 0.05;
@@ -107,7 +107,7 @@ struct GlyphTubes {
   struct Vertex {
     glm::dvec3 positionMm{0.0};  // volume frame
     double focusRadiusMm = 0;
-    double contextRadiusMm = 0;  // the context tube's radius (kTube only)
+    double contextRadiusMm = 0;  // the context tube's radius (tube only)
   };
   std::vector<std::vector<Vertex>> chains;  // each a polyline of >= 1 vertex
   std::size_t sourcePoints = 0;             // points in the centerlines given

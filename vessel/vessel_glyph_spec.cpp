@@ -83,7 +83,7 @@ TubeRadius parseRadius(const std::string& option, const std::string& spec, const
                        const char* form) {
   TubeRadius radius;
   const bool factor = !text.empty() && text.back() == 'x';
-  radius.mode = factor ? RadiusMode::kVesselFactor : RadiusMode::kConstant;
+  radius.mode = factor ? RadiusMode::vesselFactor : RadiusMode::constant;
   radius.value = parseMm(option, spec, "radius", factor ? text.substr(0, text.size() - 1) : text,
                          false, form);
   if (radius.value <= 0) fail(option, spec, "radius must be > 0", form);
@@ -91,7 +91,7 @@ TubeRadius parseRadius(const std::string& option, const std::string& spec, const
 }
 
 std::string radiusText(const TubeRadius& radius) {
-  return numberText(radius.value) + (radius.mode == RadiusMode::kVesselFactor ? "x" : "mm");
+  return numberText(radius.value) + (radius.mode == RadiusMode::vesselFactor ? "x" : "mm");
 }
 
 }  // namespace
@@ -109,7 +109,7 @@ void parseContextSpec(const std::string& spec, VesselGlyphSettings& settings) {
   const SpecParts parts = splitSpec(option, spec, kContextForm);
   if (parts.shape == "none") {
     requireKeys(option, spec, parts, {}, {}, kContextForm);
-    settings.context = ContextShape::kNone;
+    settings.context = ContextShape::none;
   } else if (parts.shape == "slab") {
     requireKeys(option, spec, parts, {"front", "back"}, {"width"}, kContextForm);
     SlabContext slab;
@@ -117,11 +117,11 @@ void parseContextSpec(const std::string& spec, VesselGlyphSettings& settings) {
     slab.backMm = parseMm(option, spec, "back", parts.values.at("back"), false, kContextForm);
     if (parts.values.count("width"))
       slab.halfWidthMm = parseMm(option, spec, "width", parts.values.at("width"), true, kContextForm);
-    settings.context = ContextShape::kSlab;
+    settings.context = ContextShape::slab;
     settings.slab = slab;
   } else if (parts.shape == "tube") {
     requireKeys(option, spec, parts, {"radius"}, {}, kContextForm);
-    settings.context = ContextShape::kTube;
+    settings.context = ContextShape::tube;
     settings.contextTube = parseRadius(option, spec, parts.values.at("radius"), kContextForm);
   } else {
     fail(option, spec, "unknown shape '" + parts.shape + "'", kContextForm);
@@ -132,9 +132,9 @@ std::string focusSpecText(const TubeRadius& focus) { return "circle:radius=" + r
 
 std::string contextSpecText(const VesselGlyphSettings& settings) {
   switch (settings.context) {
-    case ContextShape::kNone: return "none";
-    case ContextShape::kTube: return "tube:radius=" + radiusText(settings.contextTube);
-    case ContextShape::kSlab: break;
+    case ContextShape::none: return "none";
+    case ContextShape::tube: return "tube:radius=" + radiusText(settings.contextTube);
+    case ContextShape::slab: break;
   }
   const SlabContext& slab = settings.slab;
   return "slab:front=" + numberText(slab.frontMm) + ",back=" + numberText(slab.backMm) +

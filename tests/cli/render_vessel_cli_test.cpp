@@ -28,7 +28,7 @@ struct Rgb8 {
   int width = 0, height = 0;
   std::vector<unsigned char> bytes;  // RGB
   const unsigned char* at(int x, int y) const { return &bytes[3 * (std::size_t(y) * width + x)]; }
-  bool coloured(int x, int y) const { return at(x, y)[0] || at(x, y)[1] || at(x, y)[2]; }
+  bool colored(int x, int y) const { return at(x, y)[0] || at(x, y)[1] || at(x, y)[2]; }
   bool same(const Rgb8& other, int x, int y) const { return std::equal(at(x, y), at(x, y) + 3, other.at(x, y)); }
 };
 
@@ -139,11 +139,11 @@ TEST_F(RenderVesselCli, OpaqueFocusStaysWithinItsRadiusOfTheProjectedCenterline)
   // The focus is the union of round cones between consecutive centerline points (radius 2x the
   // lumen's); seen from any direction it lies within the larger end radius of the projected segment.
   // Consecutive CSV rows of two different paths (a jump of more than 4 px) are no segment.
-  int coloured = 0, tooFar = 0;
+  int colored = 0, tooFar = 0;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
-      if (!image.coloured(x, y)) continue;
-      ++coloured;
+      if (!image.colored(x, y)) continue;
+      ++colored;
       bool near = false;
       for (std::size_t n = 0; n + 1 < points.size() && !near; ++n) {
         const double radiusPx = 2.0 * std::max(points[n].radiusMm, points[n + 1].radiusMm) / view.pixelMm;
@@ -154,15 +154,15 @@ TEST_F(RenderVesselCli, OpaqueFocusStaysWithinItsRadiusOfTheProjectedCenterline)
       tooFar += !near;
     }
   }
-  EXPECT_GT(coloured, 500);
-  EXPECT_EQ(tooFar, 0) << "of " << coloured << " coloured pixels";
+  EXPECT_GT(colored, 500);
+  EXPECT_EQ(tooFar, 0) << "of " << colored << " colored pixels";
 
   // And the vessel itself is there: the pixel under every centerline point inside the volume.
   int inside = 0, missing = 0;
   for (const ProjectedPoint& p : points) {
     if (!p.inside) continue;
     ++inside;
-    missing += !image.coloured(int(std::lround(p.x)), int(std::lround(p.y)));
+    missing += !image.colored(int(std::lround(p.x)), int(std::lround(p.y)));
   }
   EXPECT_GT(inside, 200);
   EXPECT_EQ(missing, 0) << "of " << inside;

@@ -14,12 +14,12 @@ namespace {
 
 constexpr double kSlabHu = 300;
 
-// A TF that is transparent below `threshold` HU and a constant colour/opacity from there on.
+// A TF that is transparent below `threshold` HU and a constant color/opacity from there on.
 TransferFunction stepTf(double opacity, double threshold = 100) {
-  const glm::vec3 colour(1.f, 0.5f, 0.25f);
+  const glm::vec3 color(1.f, 0.5f, 0.25f);
   TransferFunction tf;
-  tf.points = {{-1024, colour, 0}, {threshold - 1, colour, 0}, {threshold, colour, opacity},
-               {3071, colour, opacity}};
+  tf.points = {{-1024, color, 0}, {threshold - 1, color, 0}, {threshold, color, opacity},
+               {3071, color, opacity}};
   return tf;
 }
 
@@ -79,7 +79,7 @@ TEST(ReferenceRaycaster, GradientAcrossTheViewGivesAmbientOnly) {
   const glm::vec4 plain = centrePixel(renderReference(volume, table, plainParams(1.0, 1.0, Filter::nearest)));
   const glm::vec4 dim = centrePixel(renderReference(volume, table, shaded));
   EXPECT_NEAR(dim.r, 0.3 * plain.r, 1e-5);
-  EXPECT_NEAR(dim.a, plain.a, 1e-6);  // shading changes colour, never opacity
+  EXPECT_NEAR(dim.a, plain.a, 1e-6);  // shading changes color, never opacity
 }
 
 TEST(ReferenceRaycaster, HeadlightOnFacingSurfaceIsFullyLit) {

@@ -12,9 +12,9 @@
 namespace angio {
 namespace {
 
-TfTable constantTable(double opacity, glm::vec3 colour) {
+TfTable constantTable(double opacity, glm::vec3 color) {
   TransferFunction tf;
-  tf.points = {{-1024, colour, 0}, {-901, colour, 0}, {-900, colour, opacity}, {3071, colour, opacity}};
+  tf.points = {{-1024, color, 0}, {-901, color, 0}, {-900, color, opacity}, {3071, color, opacity}};
   return buildTable(tf);
 }
 

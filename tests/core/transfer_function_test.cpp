@@ -196,7 +196,7 @@ TEST(TfModulators, OpacityScaleScalesAndClamps) {
   EXPECT_FLOAT_EQ(evaluate(tf, 50).a, 0.4f);
   EXPECT_FLOAT_EQ(evaluate(tf, 300).a, 1.0f);                 // 1.6 clamped
   EXPECT_FLOAT_EQ(evaluate(tf, 200).a, 1.0f);                 // 1.2 clamped
-  EXPECT_EQ(evaluate(tf, 200).r, evaluate(rampTf(), 200).r);  // colour untouched
+  EXPECT_EQ(evaluate(tf, 200).r, evaluate(rampTf(), 200).r);  // color untouched
   tf.modulators.opacityScale = 0.0;
   EXPECT_FALSE(buildTable(tf).anyVisible(0, kDensityLevels - 1));
 }

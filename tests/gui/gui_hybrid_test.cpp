@@ -2,7 +2,7 @@
 // the shown VesselGlyph image into the hybrid, which differs from the VesselGlyph image inside the
 // focus footprint and equals it outside the footprint and its transition band; an export writes the
 // shown image with a sidecar from which `angioray render --params` (another process, reading the
-// files) renders the same pixels; a session carries the hybrid's settings (path, band, colouring)
+// files) renders the same pixels; a session carries the hybrid's settings (path, band, coloring)
 // in and out.
 #include <cmath>
 #include <cstdint>
@@ -205,7 +205,7 @@ TEST_F(GuiHybrid, CheckboxShowsTheCprInTheFootprintAndTheExportIsWhatRenderParam
   EXPECT_EQ(c.changedOutside, 0);
 }
 
-TEST_F(GuiHybrid, SessionCarriesPathBandAndColouringInAndOut) {
+TEST_F(GuiHybrid, SessionCarriesPathBandAndColoringInAndOut) {
   // A session the app saved itself, with the hybrid's settings edited in.
   const Json start = startLayout();
   const auto save = runScript(R"([)" + saveSessionSteps(start, "base.json") + "]");

@@ -58,7 +58,7 @@ class GuiVessel : public angio::test_support::PhantomFolderTest {
 
 };
 
-bool isOverlayColour(const float* rgb) { return rgb[0] < 0.45f && rgb[1] > 0.7f && rgb[2] > 0.8f; }
+bool isOverlayColor(const float* rgb) { return rgb[0] < 0.45f && rgb[1] > 0.7f && rgb[2] > 0.8f; }
 
 TEST_F(GuiVessel, EnablingVesselGlyphRerendersWithRegionsAndTheOverlayLiesOnTheVessels) {
   const std::string centerlines = " --centerlines " + file("phantom.csv");
@@ -91,22 +91,22 @@ TEST_F(GuiVessel, EnablingVesselGlyphRerendersWithRegionsAndTheOverlayLiesOnTheV
   OIIO::ImageBuf withOverlay(file("plain-overlay.png")), without(file("plain.png"));
   ASSERT_TRUE(withOverlay.read() && without.read());
   const Box viewport(plain["runtime"]["layout"]["viewport"]);
-  long overlayPixels = 0, onImage = 0, overlayColouredWithout = 0;
+  long overlayPixels = 0, onImage = 0, overlayColoredWithout = 0;
   for (int y = int(viewport.y0) + 30; y < int(viewport.y1) - 40; ++y) {  // captions, scale bar apart
     for (int x = int(viewport.x0); x < int(viewport.x1); ++x) {
       float a[3], b[3];
       withOverlay.getpixel(x, y, a, 3);
       without.getpixel(x, y, b, 3);
-      if (isOverlayColour(b)) ++overlayColouredWithout;
-      if (!isOverlayColour(a)) continue;
+      if (isOverlayColor(b)) ++overlayColoredWithout;
+      if (!isOverlayColor(a)) continue;
       ++overlayPixels;
       if (b[0] + b[1] + b[2] > 0.1f) ++onImage;
     }
   }
-  std::printf("overlay pixels %ld, on the rendered image %ld, overlay-coloured without it %ld\n",
-              overlayPixels, onImage, overlayColouredWithout);
+  std::printf("overlay pixels %ld, on the rendered image %ld, overlay-colored without it %ld\n",
+              overlayPixels, onImage, overlayColoredWithout);
   EXPECT_GT(overlayPixels, 500);
-  EXPECT_LT(overlayColouredWithout, overlayPixels / 20);
+  EXPECT_LT(overlayColoredWithout, overlayPixels / 20);
   EXPECT_GT(onImage, overlayPixels * 95 / 100);
 }
 
@@ -193,7 +193,7 @@ TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCpr
     for (int x = markX - 2; x <= markX + 2; ++x) {
       float rgb[3];
       shot.getpixel(x, y, rgb, 3);
-      onOverlay = onOverlay || isOverlayColour(rgb);
+      onOverlay = onOverlay || isOverlayColor(rgb);
     }
   EXPECT_TRUE(onOverlay) << "mark at " << markX << ", " << markY;
 

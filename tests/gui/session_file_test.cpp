@@ -62,7 +62,7 @@ Document unusualSession() {
   s.shading = {false, 0.45, 0.55};
   s.levels[0] = {2.0, 1.5, Filter::nearest, 0.9};
   s.levels[2] = {0.25, 0.125, Filter::mean, 1.0};
-  s.cpr = {true, CprMode::projected, 1, CprColouring::focusTf, true, 3.5};
+  s.cpr = {true, CprMode::projected, 1, CprColoring::focusTf, true, 3.5};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
   VesselGlyphState& vg = s.vesselGlyph;
@@ -70,10 +70,10 @@ Document unusualSession() {
   vg.centerlinesAbsolute = "/data/cta/cl/aorta.vtp";
   vg.enabled = true;
   vg.overlay = false;
-  vg.settings.focus = {RadiusMode::kConstant, 3.25, 0.5};
-  vg.settings.context = ContextShape::kTube;
+  vg.settings.focus = {RadiusMode::constant, 3.25, 0.5};
+  vg.settings.context = ContextShape::tube;
   vg.settings.slab = {12.5, 7.75, 33};
-  vg.settings.contextTube = {RadiusMode::kVesselFactor, 4.5, 1.25};
+  vg.settings.contextTube = {RadiusMode::vesselFactor, 4.5, 1.25};
   vg.settings.cleft = true;
   vg.settings.halfVessel = true;
   vg.settings.unknownVesselRadiusMm = 1.5;
@@ -146,7 +146,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_TRUE(loaded.cpr.shown);
   EXPECT_EQ(loaded.cpr.mode, CprMode::projected);
   EXPECT_EQ(loaded.cpr.path, 1);
-  EXPECT_EQ(loaded.cpr.colouring, CprColouring::focusTf);
+  EXPECT_EQ(loaded.cpr.coloring, CprColoring::focusTf);
   EXPECT_TRUE(loaded.cpr.hybrid);
   EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
@@ -157,7 +157,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_TRUE(vg.enabled);
   EXPECT_FALSE(vg.overlay);
   expectSameRadius(vg.settings.focus, want.settings.focus, "focus");
-  EXPECT_EQ(vg.settings.context, ContextShape::kTube);
+  EXPECT_EQ(vg.settings.context, ContextShape::tube);
   EXPECT_DOUBLE_EQ(vg.settings.slab.frontMm, 12.5);
   EXPECT_DOUBLE_EQ(vg.settings.slab.backMm, 7.75);
   EXPECT_DOUBLE_EQ(vg.settings.slab.halfWidthMm, 33);
@@ -187,7 +187,7 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
   EXPECT_EQ(loaded.cpr.path, -1);
   EXPECT_TRUE(loaded.vesselGlyph.centerlines.empty());
   EXPECT_FALSE(loaded.vesselGlyph.enabled);
-  EXPECT_EQ(loaded.vesselGlyph.settings.context, ContextShape::kSlab);
+  EXPECT_EQ(loaded.vesselGlyph.settings.context, ContextShape::slab);
   EXPECT_TRUE(loaded.vesselGlyph.focusTf.points.empty());  // the preset's, loaded by the app
   EXPECT_EQ(loaded.vesselGlyph.focusPreset, defaults.vesselGlyph.focusPreset);
 }

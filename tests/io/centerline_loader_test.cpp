@@ -254,7 +254,7 @@ TEST_P(VtpEncodings, LoadEveryPathPointAndRadius) {
   std::vector<std::string> warnings;
   const Centerlines loaded = loadWarned(file, warnings);
   EXPECT_EQ(loaded.source, file.string());
-  EXPECT_EQ(loaded.frame, CenterlineFrame::kPhysical);
+  EXPECT_EQ(loaded.frame, CenterlineFrame::physical);
   // Float32 points keep ~7 digits: ~1e-5 mm at 150 mm.
   expectMatches(loaded, data, GetParam().pointType == "Float32" ? 5e-5 : 1e-12);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
@@ -547,7 +547,7 @@ TEST_F(CenterlineCsv, WrittenCentrelinesReadBackToMicrometres) {
 
 TEST_F(CenterlineCsv, VolumeFrameCentrelinesAreNotWritten) {
   Centerlines framed;
-  framed.frame = CenterlineFrame::kVolume;
+  framed.frame = CenterlineFrame::volume;
   framed.paths = {{"a", {{{0, 0, 0}, 1}}}};
   EXPECT_THROW(writeCenterlinesCsv(framed, dir_ / "framed.csv"), std::logic_error);
 }

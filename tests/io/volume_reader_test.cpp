@@ -275,7 +275,7 @@ TEST_F(VolumeReaderTest, AortaLoadsReorientedWithValuesAsStored) {
 
   // Compare with the file read directly: new (i, j, k) = stored (156 - i, 392 - j, k).
   auto reader = itk::ImageFileReader<itk::Image<float, 3>>::New();
-  reader->SetImageIO(makeImageIO(VolumeFormat::MetaImage));
+  reader->SetImageIO(makeImageIO(VolumeFormat::metaImage));
   reader->SetFileName(file.string());
   reader->Update();
   const float* stored = reader->GetOutput()->GetBufferPointer();
@@ -581,9 +581,9 @@ TEST_F(VolumeReaderTest, TwoDimensionalFourDimensionalAndRgbImagesAreErrors) {
   expectInputError(series, "is 4-D");
 
   using Rgb = itk::RGBPixel<unsigned char>;
-  const fs::path colour = dir_ / "colour.mha";
-  writeImage(makeImage<Rgb>({4, 4, 4}, [](auto) { return Rgb(); }).GetPointer(), colour);
-  expectInputError(colour, "need a 3-D scalar volume");
+  const fs::path color = dir_ / "color.mha";
+  writeImage(makeImage<Rgb>({4, 4, 4}, [](auto) { return Rgb(); }).GetPointer(), color);
+  expectInputError(color, "need a 3-D scalar volume");
 }
 
 // A MetaImage header with the given fields and 16 bytes of int16 data (`extra` header lines

@@ -55,7 +55,7 @@ TEST_F(VolumeWriterTest, StoresInt16HounsfieldUnits) {
   const Volume original = testVolume();
   const fs::path file = dir_ / "hu.nrrd";
   writeVolume(original, file);
-  auto io = makeImageIO(VolumeFormat::Nrrd);
+  auto io = makeImageIO(VolumeFormat::nrrd);
   io->SetFileName(file.string());
   io->ReadImageInformation();
   ASSERT_EQ(io->GetComponentType(), itk::IOComponentEnum::SHORT);

@@ -45,10 +45,10 @@ RenderRecipe everything() {
   s.tf = tf("plain", 0);
   VesselGlyphRecipe vg;
   vg.centerlines = "/data/aorta-centerlines.vtp";
-  vg.settings.focus = {RadiusMode::kConstant, 3.3, 0.25};
-  vg.settings.context = ContextShape::kTube;
+  vg.settings.focus = {RadiusMode::constant, 3.3, 0.25};
+  vg.settings.context = ContextShape::tube;
   vg.settings.slab = {1.5, 2.5, std::numeric_limits<double>::infinity()};
-  vg.settings.contextTube = {RadiusMode::kVesselFactor, 4.5, 0.5};
+  vg.settings.contextTube = {RadiusMode::vesselFactor, 4.5, 0.5};
   vg.settings.cleft = true;
   vg.settings.halfVessel = true;
   vg.settings.unknownVesselRadiusMm = 2.75;

@@ -93,7 +93,7 @@ TEST(CenterlineFrames, ToVolumeFrameMovesPointsKeepsRadiiAndLengths) {
   const Centerlines physical = withPaths({helix(24)});
   for (const Volume& volume : {flippedVolume(), obliqueVolume()}) {
     const Centerlines mapped = toVolumeFrame(physical, volume);
-    EXPECT_EQ(mapped.frame, CenterlineFrame::kVolume);
+    EXPECT_EQ(mapped.frame, CenterlineFrame::volume);
     ASSERT_EQ(mapped.paths.size(), 1u);
     ASSERT_EQ(mapped.paths[0].points.size(), physical.paths[0].points.size());
     for (std::size_t n = 0; n < mapped.paths[0].points.size(); ++n) {
@@ -215,11 +215,11 @@ TEST(CenterlineValidation, ErrorsNameThePath) {
     const Centerlines centerlines = withPaths({helix(12), c.path});
     const std::vector<CenterlineIssue> issues = validateCenterlines(centerlines);
     EXPECT_TRUE(hasError(issues)) << c.expected;
-    EXPECT_EQ(problems(issues, IssueSeverity::kError), std::vector<std::string>{c.expected});
+    EXPECT_EQ(problems(issues, IssueSeverity::error), std::vector<std::string>{c.expected});
     EXPECT_EQ(describe(centerlines, issues.front()), "test.vtp: " + c.expected);
   }
   const std::vector<CenterlineIssue> none = validateCenterlines(withPaths({}));
-  EXPECT_EQ(problems(none, IssueSeverity::kError),
+  EXPECT_EQ(problems(none, IssueSeverity::error),
             std::vector<std::string>{"contains no centerline paths"});
 }
 
@@ -228,7 +228,7 @@ TEST(CenterlineValidation, SinglePointsAndZeroRadiiAreWarningsAndKept) {
       withPaths({{"dot", {{{0, 0, 0}, 2}}}, {"thin", {{{0, 0, 0}, 0}, {{0, 0, 1}, 0}, {{0, 0, 2}, 1}}}});
   const std::vector<CenterlineIssue> issues = validateCenterlines(centerlines);
   EXPECT_FALSE(hasError(issues));
-  EXPECT_EQ(problems(issues, IssueSeverity::kWarning),
+  EXPECT_EQ(problems(issues, IssueSeverity::warning),
             (std::vector<std::string>{"path 'dot': has a single point",
                                       "path 'thin': 2 of 3 points have radius 0 (unknown)"}));
 }
@@ -246,11 +246,11 @@ TEST(CenterlineValidation, PointsOutsideTheVolumeAreCountedPerPath) {
                    {indexToPhysical(volume, {5, 5, 9.4}), 1}};
   const Centerlines physical = withPaths({inside, partly});
   const std::vector<std::string> expected = {"path 'partly': 2 of 4 points lie outside the volume"};
-  EXPECT_EQ(problems(checkInsideVolume(physical, volume), IssueSeverity::kWarning), expected);
+  EXPECT_EQ(problems(checkInsideVolume(physical, volume), IssueSeverity::warning), expected);
   EXPECT_FALSE(hasError(checkInsideVolume(physical, volume)));
   // The same answer from the volume frame.
   EXPECT_EQ(problems(checkInsideVolume(toVolumeFrame(physical, volume), volume),
-                     IssueSeverity::kWarning),
+                     IssueSeverity::warning),
             expected);
 }
 

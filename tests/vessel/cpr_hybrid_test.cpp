@@ -13,9 +13,9 @@
 namespace angio {
 namespace {
 
-Image filled(int width, int height, glm::vec4 colour) {
+Image filled(int width, int height, glm::vec4 color) {
   Image image = makeImage(width, height);
-  for (auto& pixel : image.pixels) pixel = colour;
+  for (auto& pixel : image.pixels) pixel = color;
   return image;
 }
 
@@ -105,15 +105,15 @@ TEST(CprHybrid, InPlaceCompositingEqualsTheFullImagePipeline) {
   const CenterlinePath path{"oblique", {{{3, 4, 2}, 1}, {{12, 10, 9}, 1}, {{20, 15, 20}, 1}}};
   TransferFunction tf;
   tf.points = {{-500, {0, 0, 1}, 0}, {500, {1, 0.5f, 0}, 1}};
-  CprDisplay grey, coloured;
-  coloured.tf = tf;
+  CprDisplay grey, colored;
+  colored.tf = tf;
   for (const double angle : {0.0, 35.0, 130.0}) {
     const ViewGeometry view = cprView(volume, Axis::k, angle, 0.7);
     const CprLayout layout = layoutCpr({path}, view, {CprMode::projected});
     const std::vector<float> hu = resampleCpr(volume, layout);
     const std::vector<std::uint8_t> footprint = bandFootprint(view.width, view.height);
     const Image dvr = filled(view.width, view.height, {0.1f, 0.2f, 0.3f, 0.6f});
-    for (const CprDisplay& base : {grey, coloured}) {
+    for (const CprDisplay& base : {grey, colored}) {
       CprDisplay display = base;
       display.centerlineMarker = display.ruler = false;
       for (const double transitionMm : {0.0, 2.0}) {

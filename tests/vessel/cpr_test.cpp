@@ -657,7 +657,7 @@ TEST(CprPick, PixelsGiveTheirPointHuAndArcLength) {
 
 // --- Display and metadata -----------------------------------------------------------------------
 
-TEST(CprDisplay, WindowLevelGreyTransparentGapsAndTfColour) {
+TEST(CprDisplay, WindowLevelGreyTransparentGapsAndTfColor) {
   EXPECT_FLOAT_EQ(windowGrey(250, {800, 250}), 0.5f);
   EXPECT_FLOAT_EQ(windowGrey(-150, {800, 250}), 0.0f);
   EXPECT_FLOAT_EQ(windowGrey(450, {800, 250}), 0.75f);
@@ -689,9 +689,9 @@ TEST(CprDisplay, WindowLevelGreyTransparentGapsAndTfColour) {
   TransferFunction tf;
   tf.points = {{-1024, {0, 0, 1}, 0}, {1000, {1, 0, 0}, 1}};
   plain.tf = tf;
-  const Image coloured = displayCpr(cpr.layout, cpr.hu, plain);
+  const Image colored = displayCpr(cpr.layout, cpr.hu, plain);
   const int centre = cpr.layout.width / 2;
-  const glm::vec4 lumen = coloured.at(centre, 50);
+  const glm::vec4 lumen = colored.at(centre, 50);
   const glm::vec3 expected(buildTable(tf).rgba[densityOfHu(cpr.huAt(centre, 50))]);
   EXPECT_EQ(glm::vec3(lumen), expected);
   EXPECT_EQ(lumen.a, 1.f);

@@ -12,11 +12,11 @@ namespace {
 
 TEST(VesselGlyphSpec, FocusRadiusIsAFactorOrMillimetres) {
   const TubeRadius factor = parseFocusSpec("circle:radius=2.5x");
-  EXPECT_EQ(factor.mode, RadiusMode::kVesselFactor);
+  EXPECT_EQ(factor.mode, RadiusMode::vesselFactor);
   EXPECT_EQ(factor.value, 2.5);
   for (const std::string spec : {"circle:radius=3", "circle:radius=3mm"}) {
     const TubeRadius constant = parseFocusSpec(spec);
-    EXPECT_EQ(constant.mode, RadiusMode::kConstant) << spec;
+    EXPECT_EQ(constant.mode, RadiusMode::constant) << spec;
     EXPECT_EQ(constant.value, 3.0) << spec;
   }
 }
@@ -24,7 +24,7 @@ TEST(VesselGlyphSpec, FocusRadiusIsAFactorOrMillimetres) {
 TEST(VesselGlyphSpec, ContextShapes) {
   VesselGlyphSettings settings;
   parseContextSpec("slab:front=12,back=34.5", settings);
-  EXPECT_EQ(settings.context, ContextShape::kSlab);
+  EXPECT_EQ(settings.context, ContextShape::slab);
   EXPECT_EQ(settings.slab.frontMm, 12);
   EXPECT_EQ(settings.slab.backMm, 34.5);
   EXPECT_EQ(settings.slab.halfWidthMm, SlabContext{}.halfWidthMm);
@@ -32,11 +32,11 @@ TEST(VesselGlyphSpec, ContextShapes) {
   EXPECT_EQ(settings.slab.frontMm, 0);
   EXPECT_TRUE(std::isinf(settings.slab.halfWidthMm));
   parseContextSpec("tube:radius=4x", settings);
-  EXPECT_EQ(settings.context, ContextShape::kTube);
-  EXPECT_EQ(settings.contextTube.mode, RadiusMode::kVesselFactor);
+  EXPECT_EQ(settings.context, ContextShape::tube);
+  EXPECT_EQ(settings.contextTube.mode, RadiusMode::vesselFactor);
   EXPECT_EQ(settings.contextTube.value, 4);
   parseContextSpec("none", settings);
-  EXPECT_EQ(settings.context, ContextShape::kNone);
+  EXPECT_EQ(settings.context, ContextShape::none);
 }
 
 TEST(VesselGlyphSpec, BadSpecsGiveOneLineNamingTheOption) {

@@ -64,7 +64,7 @@ CenterlinePath tortuousPath() {
 Centerlines inVolumeFrame(std::vector<CenterlinePath> paths) {
   Centerlines centerlines;
   centerlines.source = "test";
-  centerlines.frame = CenterlineFrame::kVolume;
+  centerlines.frame = CenterlineFrame::volume;
   centerlines.paths = std::move(paths);
   return centerlines;
 }
@@ -72,8 +72,8 @@ Centerlines inVolumeFrame(std::vector<CenterlinePath> paths) {
 // Focus = the vessel radius exactly, no context, no simplification: the tube of the centerlines.
 VesselGlyphSettings exactFocusOnly() {
   VesselGlyphSettings settings;
-  settings.focus = {RadiusMode::kVesselFactor, 1.0, 0.0};
-  settings.context = ContextShape::kNone;
+  settings.focus = {RadiusMode::vesselFactor, 1.0, 0.0};
+  settings.context = ContextShape::none;
   settings.simplifyToleranceMm = 0;
   return settings;
 }
@@ -261,7 +261,7 @@ void expectMatchesBruteForce(const std::vector<CenterlinePath>& paths, double an
   const RayRegions regions = buildRayRegions(volume, view, inVolumeFrame(paths), settings);
   expectWellFormed(regions, view);
   const BruteForceTube tube(paths);
-  const bool slab = settings.context == ContextShape::kSlab;
+  const bool slab = settings.context == ContextShape::slab;
   const std::vector<glm::dvec3> dense = slab ? densePointsInView(paths, view) : std::vector<glm::dvec3>{};
   const double far = outerSlackMm + kTolerance;
   int focusChecked = 0, contextChecked = 0, outsideChecked = 0;
@@ -390,7 +390,7 @@ TEST(VesselGlyph, OverlappingTubesOfSeveralPathsAreMerged) {
 
 TEST(VesselGlyph, SlabContextFollowsTheCenterlineDepthWithinItsBounds) {
   VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::kSlab;
+  settings.context = ContextShape::slab;
   settings.slab = {6.0, 9.0, 12.0};
   // Slanted in depth at angle 0 (y changes with z), and a tortuous one.
   const std::vector<CenterlinePath> slanted{
@@ -409,7 +409,7 @@ TEST(VesselGlyph, SlabContextFollowsTheCenterlineDepthWithinItsBounds) {
 
 TEST(VesselGlyph, SlabIsBoundedSideways) {
   VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::kSlab;
+  settings.context = ContextShape::slab;
   settings.slab = {5.0, 5.0, 8.0};
   const Volume volume = testVolume();
   const ViewGeometry view = viewAt(volume, 0);  // h = x - 31.5, t = y - 31.5
@@ -438,8 +438,8 @@ TEST(VesselGlyph, SlabIsBoundedSideways) {
 
 TEST(VesselGlyph, ContextTubeSurroundsTheFocus) {
   VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::kTube;
-  settings.contextTube = {RadiusMode::kConstant, 9.0, 0.0};
+  settings.context = ContextShape::tube;
+  settings.contextTube = {RadiusMode::constant, 9.0, 0.0};
   const Volume volume = testVolume();
   const ViewGeometry view = viewAt(volume, 0);
   const Centerlines centerlines = inVolumeFrame({straightPath("axial", {31.5, 25, 5}, {31.5, 25, 73}, 30, 2.0)});
@@ -461,7 +461,7 @@ TEST(VesselGlyph, ContextTubeSurroundsTheFocus) {
 
 TEST(VesselGlyph, CleftRemovesTheContextInFrontOfTheFocusInsideItsFootprint) {
   VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::kSlab;
+  settings.context = ContextShape::slab;
   settings.slab = {20.0, 20.0, 30.0};
   const Volume volume = testVolume();
   const Centerlines centerlines = inVolumeFrame(
@@ -559,7 +559,7 @@ TEST(VesselGlyph, SharedTrunkIsCountedOnce) {
     right.points.push_back({{32 + n, 30, 40 - n}, 3.0});
   }
   VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::kSlab;
+  settings.context = ContextShape::slab;
   const GlyphTubes tubes = prepareGlyphTubes(inVolumeFrame({left, right}), settings);
   ASSERT_EQ(tubes.chains.size(), 2u);
   EXPECT_EQ(tubes.chains[0].size(), left.points.size());
@@ -626,13 +626,13 @@ TEST(VesselGlyph, FocusRadiusModesAndUnknownRadius) {
   CenterlinePath path = straightPath("p", {10, 10, 10}, {20, 10, 10}, 3, 2.0);
   path.points[1].radiusMm = 0;  // unknown
   VesselGlyphSettings settings = exactFocusOnly();
-  settings.focus = {RadiusMode::kVesselFactor, 1.5, 0.5};
+  settings.focus = {RadiusMode::vesselFactor, 1.5, 0.5};
   settings.unknownVesselRadiusMm = 4.0;
   const GlyphTubes factor = prepareGlyphTubes(inVolumeFrame({path}), settings);
   ASSERT_EQ(factor.chains.at(0).size(), 3u);
   EXPECT_DOUBLE_EQ(factor.chains[0][0].focusRadiusMm, 3.5);
   EXPECT_DOUBLE_EQ(factor.chains[0][1].focusRadiusMm, 6.5);
-  settings.focus = {RadiusMode::kConstant, 2.5, 0.0};
+  settings.focus = {RadiusMode::constant, 2.5, 0.0};
   EXPECT_DOUBLE_EQ(prepareGlyphTubes(inVolumeFrame({path}), settings).chains[0][1].focusRadiusMm, 2.5);
 }
 
@@ -650,7 +650,7 @@ TEST(VesselGlyph, RejectsBadSettingsAndFrames) {
   settings = {};
   EXPECT_FALSE(settingsProblem(settings).has_value());
   Centerlines physical = centerlines;
-  physical.frame = CenterlineFrame::kPhysical;
+  physical.frame = CenterlineFrame::physical;
   EXPECT_THROW(buildRayRegions(volume, view, physical, settings), std::logic_error);
   const Volume other = makeVolume({32, 32, 32}, {1.0, 1.0, 1.0});
   EXPECT_THROW(buildRayRegions(other, view, centerlines, settings), std::invalid_argument);
@@ -668,7 +668,7 @@ TEST(VesselGlyph, NonFinitePointsSplitThePathInsteadOfFailing) {
 
 TEST(VesselGlyph, SameOutputWhateverTheThreadCount) {
   VesselGlyphSettings settings;
-  settings.context = ContextShape::kSlab;
+  settings.context = ContextShape::slab;
   settings.cleft = true;
   const Volume volume = testVolume();
   const Centerlines centerlines = inVolumeFrame(
@@ -696,7 +696,7 @@ TEST(VesselGlyph, SameOutputWhateverTheThreadCount) {
 
 TEST(VesselGlyph, BuilderReusingItsMemoryGivesTheSameRegions) {
   VesselGlyphSettings settings;
-  settings.context = ContextShape::kSlab;
+  settings.context = ContextShape::slab;
   const Volume volume = testVolume();
   const Centerlines centerlines = inVolumeFrame(
       {tortuousPath(), straightPath("a", {10, 20, 10}, {50, 40, 70}, 300, 5.0)});
