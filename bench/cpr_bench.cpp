@@ -67,9 +67,8 @@ std::string formatCprBench(const CprBenchReport& r) {
   std::snprintf(line, sizeof line,
                 "%s CPR of '%s' (%.1f mm), %d x %d pixels, %s, %d threads, %d runs: "
                 "median %.2f ms (min %.2f, max %.2f; layout %.2f)\n",
-                r.mode.c_str(), r.path.c_str(), r.pathLengthMm, r.width, r.height,
-                r.resampler.c_str(), r.threads, r.runs, r.medianMs, r.minMs, r.maxMs,
-                r.medianLayoutMs);
+                r.mode.c_str(), r.path.c_str(), r.pathLengthMm, r.width, r.height, r.resampler.c_str(),
+                r.threads, r.runs, r.medianMs, r.minMs, r.maxMs, r.medianLayoutMs);
   return line;
 }
 

@@ -54,8 +54,14 @@ FrameTimingRow timeFrames(const std::string& level, const std::string& variant, 
     ms.push_back(msSince(start));
     cpuMs.push_back(processCpuMs() - cpuStart);
   }
-  return {level, variant, median(ms), *std::min_element(ms.begin(), ms.end()),
-          *std::max_element(ms.begin(), ms.end()), median(cpuMs), median(samples), angles};
+  return {level,
+          variant,
+          median(ms),
+          *std::min_element(ms.begin(), ms.end()),
+          *std::max_element(ms.begin(), ms.end()),
+          median(cpuMs),
+          median(samples),
+          angles};
 }
 
 // The techniques the bench switches off one at a time (contribution) or on alone (potential).
@@ -111,7 +117,8 @@ RenderRecipe vesselGlyphRecipe(const TransferFunction& tf, bool hybrid) {
 
 // One frame of `scene` (recycling the previous frame's memory, as the progressive renderer
 // does); returns the samples evaluated.
-FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedScene> scene, Image& previous) {
+FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedScene> scene,
+                          Image& previous) {
   return [&frames, scene = std::move(scene), &previous](const RenderParams& p) {
     FastRenderStats stats;
     previous = frames.render(scene, p, {.recycle = &previous}, &stats);
@@ -123,8 +130,9 @@ FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedS
 // at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> the render
 // returned. Frames recycle memory, as in the GUI after its first high-quality frame (the very
 // first one spends uninterruptible time in page faults for its image).
-std::vector<double> interruptLatencies(FrameRenderer& frames, const std::shared_ptr<const PreparedScene>& scene,
-                                       Axis axis, int count) {
+std::vector<double> interruptLatencies(FrameRenderer& frames,
+                                       const std::shared_ptr<const PreparedScene>& scene, Axis axis,
+                                       int count) {
   std::vector<double> latencies;
   RenderParams warmUp;
   warmUp.axis = axis;
@@ -150,9 +158,11 @@ std::vector<double> interruptLatencies(FrameRenderer& frames, const std::shared_
 
 }  // namespace
 
-BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, const BenchSettings& settings) {
+BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
+                          const BenchSettings& settings) {
   std::optional<tbb::global_control> limit;
-  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+  if (settings.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
   BenchReport report;
   report.transferFunction = tf.name;
   report.dims = volume.dims;
@@ -198,7 +208,8 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
     RenderParams p;
     p.axis = settings.axis;
     p.sampling = level.sampling;
-    report.rows.push_back(timeFrames(level.name, "all", settings.angles, p, sceneFrames(frames, scene, previous)));
+    report.rows.push_back(
+        timeFrames(level.name, "all", settings.angles, p, sceneFrames(frames, scene, previous)));
     std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
     if (settings.withContributions) {
       // Thesis fig. 4.9 ff.: "contribution" = everything but one technique, at every level;
@@ -206,7 +217,8 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
       // takes seconds).
       const int few = std::min(std::max(settings.angles / 6, 6), settings.angles);
       // The reference for these rows: everything on, over the same (fewer) angles.
-      report.rows.push_back(timeVariant(level.name, "all, " + std::to_string(few) + " angles", few, p, {}));
+      report.rows.push_back(
+          timeVariant(level.name, "all, " + std::to_string(few) + " angles", few, p, {}));
       for (const Technique& t : techniques())
         report.rows.push_back(timeVariant(level.name, "no " + t.name, few, p, allBut(t)));
       if (level.name == "fast") {
@@ -217,21 +229,24 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, cons
     }
     if (settings.vesselTree) {
       for (const bool hybrid : {false, true}) {
-        const auto glyph = PreparedScene::prepare(volume, *settings.vesselTree, vesselGlyphRecipe(tf, hybrid));
+        const auto glyph =
+            PreparedScene::prepare(volume, *settings.vesselTree, vesselGlyphRecipe(tf, hybrid));
         const char* variant = hybrid ? "hybrid cpr" : "vessel glyph";
-        report.rows.push_back(timeFrames(level.name, variant, settings.angles, p, sceneFrames(frames, glyph, previous)));
-        std::fprintf(stderr, "bench: %s %s %.1f ms\n", level.name.c_str(), variant, report.rows.back().medianMs);
+        report.rows.push_back(
+            timeFrames(level.name, variant, settings.angles, p, sceneFrames(frames, glyph, previous)));
+        std::fprintf(stderr, "bench: %s %s %.1f ms\n", level.name.c_str(), variant,
+                     report.rows.back().medianMs);
       }
     }
     if (settings.withReference) {
       RenderRecipe reference = recipe;
       reference.raycaster = Raycaster::reference;
       const auto referenceScene = PreparedScene::prepare(volume, {}, reference);
-      report.rows.push_back(timeFrames(level.name, "reference", settings.angles, p,
-                                       [&](const RenderParams& rp) {
-                                         frames.render(referenceScene, rp);
-                                         return 0.0;
-                                       }));
+      report.rows.push_back(
+          timeFrames(level.name, "reference", settings.angles, p, [&](const RenderParams& rp) {
+            frames.render(referenceScene, rp);
+            return 0.0;
+          }));
     }
   }
   return report;
@@ -248,12 +263,15 @@ std::string formatTable(const BenchReport& r) {
                 r.preprocessMs, r.classifyMs, r.accelerationMiB);
   out << line;
   const BlockingReport& b = r.blocking;
-  std::snprintf(line, sizeof line,
-                "blocked volume (32^3 + overlap): %.0f ms, %.1f MiB = %.2fx raw, %d of %d blocks share the "
-                "dummy, %d visible, block classification %.3f ms\n",
-                b.buildMs, b.memoryMiB, b.memoryRatio, b.backgroundBlocks, b.blocks, b.visibleBlocks, b.classifyMs);
+  std::snprintf(
+      line, sizeof line,
+      "blocked volume (32^3 + overlap): %.0f ms, %.1f MiB = %.2fx raw, %d of %d blocks share the "
+      "dummy, %d visible, block classification %.3f ms\n",
+      b.buildMs, b.memoryMiB, b.memoryRatio, b.backgroundBlocks, b.blocks, b.visibleBlocks,
+      b.classifyMs);
   out << line;
-  std::snprintf(line, sizeof line, "interrupting a high-quality frame: median %.2f ms, max %.2f ms (%d frames)\n",
+  std::snprintf(line, sizeof line,
+                "interrupting a high-quality frame: median %.2f ms, max %.2f ms (%d frames)\n",
                 r.interruptMedianMs, r.interruptMaxMs, r.interrupts);
   out << line;
   std::snprintf(line, sizeof line, "%-17s %-24s %10s %10s %10s %10s %14s %7s\n", "level", "variant",
@@ -271,8 +289,12 @@ std::string formatTable(const BenchReport& r) {
 std::string toJson(const BenchReport& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const FrameTimingRow& t : r.rows)
-    rows.push_back({{"level", t.level}, {"variant", t.variant}, {"median_ms", t.medianMs},
-                    {"min_ms", t.minMs}, {"max_ms", t.maxMs}, {"median_cpu_ms", t.medianCpuMs},
+    rows.push_back({{"level", t.level},
+                    {"variant", t.variant},
+                    {"median_ms", t.medianMs},
+                    {"min_ms", t.minMs},
+                    {"max_ms", t.maxMs},
+                    {"median_cpu_ms", t.medianCpuMs},
                     {"median_samples", t.medianSamples},
                     {"frames", t.frames}});
   nlohmann::json j{{"dataset", r.dataset},
@@ -282,13 +304,14 @@ std::string toJson(const BenchReport& r) {
                    {"acceleration_mib", r.accelerationMiB},
                    {"preprocess_ms", r.preprocessMs},
                    {"classify_ms", r.classifyMs},
-                   {"blocked_volume", {{"build_ms", r.blocking.buildMs},
-                                       {"mib", r.blocking.memoryMiB},
-                                       {"ratio_to_raw", r.blocking.memoryRatio},
-                                       {"blocks", r.blocking.blocks},
-                                       {"dummy_blocks", r.blocking.backgroundBlocks},
-                                       {"visible_blocks", r.blocking.visibleBlocks},
-                                       {"classify_ms", r.blocking.classifyMs}}},
+                   {"blocked_volume",
+                    {{"build_ms", r.blocking.buildMs},
+                     {"mib", r.blocking.memoryMiB},
+                     {"ratio_to_raw", r.blocking.memoryRatio},
+                     {"blocks", r.blocking.blocks},
+                     {"dummy_blocks", r.blocking.backgroundBlocks},
+                     {"visible_blocks", r.blocking.visibleBlocks},
+                     {"classify_ms", r.blocking.classifyMs}}},
                    {"interrupt_median_ms", r.interruptMedianMs},
                    {"interrupt_max_ms", r.interruptMaxMs},
                    {"threads", r.threads},

@@ -19,7 +19,7 @@ struct BenchSettings {
   Axis axis = Axis::k;
   bool withReference = false;  // also time the reference raycaster (slow)
   bool withContributions = true;
-  int threads = 0;             // 0 = all cores
+  int threads = 0;                  // 0 = all cores
   std::vector<std::string> levels;  // names of the levels to time; empty = all
   // With centerlines (volume frame): also a "vessel glyph" row per level (thesis ch. 5): focus =
   // the TF within 2x the vessel radius, context = the TF at 30 % opacity in a slab 20 mm in front
@@ -30,8 +30,8 @@ struct BenchSettings {
 };
 
 struct FrameTimingRow {
-  std::string level;        // "fast", "medium", "high", "medium-trilinear"
-  std::string variant;      // "all", "reference", "no empty-space skipping", ...
+  std::string level;    // "fast", "medium", "high", "medium-trilinear"
+  std::string variant;  // "all", "reference", "no empty-space skipping", ...
   double medianMs = 0, minMs = 0, maxMs = 0;
   double medianCpuMs = 0;    // CPU time of all threads per frame
   double medianSamples = 0;  // density reconstructions per frame
@@ -43,10 +43,10 @@ struct BenchReport {
   std::string transferFunction;
   glm::ivec3 dims{0};
   double volumeMiB = 0;
-  double accelerationMiB = 0;     // slice tiles + classification
-  double preprocessMs = 0;        // building the slice tiles for the axis
-  double classifyMs = 0;          // classifying them for the TF
-  BlockingReport blocking;        // the blocked volume (built and classified, not rendered from)
+  double accelerationMiB = 0;  // slice tiles + classification
+  double preprocessMs = 0;     // building the slice tiles for the axis
+  double classifyMs = 0;       // classifying them for the TF
+  BlockingReport blocking;     // the blocked volume (built and classified, not rendered from)
   // A high-quality frame cancelled at a random moment: cancel flag set -> renderFast returned.
   double interruptMedianMs = 0, interruptMaxMs = 0;
   int interrupts = 0;
@@ -54,7 +54,8 @@ struct BenchReport {
   std::vector<FrameTimingRow> rows;
 };
 
-BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf, const BenchSettings& settings);
+BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
+                          const BenchSettings& settings);
 
 std::string formatTable(const BenchReport& report);
 std::string toJson(const BenchReport& report);

@@ -49,7 +49,8 @@ GlyphBenchResult runVesselGlyphBench(const Volume& volume, const Centerlines& in
                                      const VesselGlyphSettings& glyph,
                                      const GlyphBenchSettings& settings) {
   std::optional<tbb::global_control> limit;
-  if (settings.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+  if (settings.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
   GlyphBenchResult result;
   result.threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   result.checksum = 0xcbf29ce484222325ull;
@@ -178,7 +179,8 @@ Centerlines syntheticVesselTree(const Volume& volume, int leaves, int pointsPerP
     path.name = "leaf-" + std::to_string(tip);
     for (int b : chain) {
       const auto& points = branches[std::size_t(b)].points;
-      path.points.insert(path.points.end(), points.begin() + (path.points.empty() ? 0 : 1), points.end());
+      path.points.insert(path.points.end(), points.begin() + (path.points.empty() ? 0 : 1),
+                         points.end());
     }
   }
   return centerlines;
@@ -208,10 +210,10 @@ Centerlines syntheticCenterlines(const Volume& volume, int paths, int pointsPerP
     const int count = std::max(2, pointsPerPath);
     for (int n = 0; n < count; ++n) {
       const double s = double(n) / (count - 1);
-      const glm::dvec2 lateral = glm::mix(from, to, s) +
-                                 glm::dvec2(wiggle(0, s) + wiggle(1, s), wiggle(2, s) + wiggle(3, s));
-      const glm::dvec3 position(std::clamp(lateral.x, 0.0, extent.x), std::clamp(lateral.y, 0.0, extent.y),
-                                (0.98 - 0.96 * s) * extent.z);
+      const glm::dvec2 lateral =
+          glm::mix(from, to, s) + glm::dvec2(wiggle(0, s) + wiggle(1, s), wiggle(2, s) + wiggle(3, s));
+      const glm::dvec3 position(std::clamp(lateral.x, 0.0, extent.x),
+                                std::clamp(lateral.y, 0.0, extent.y), (0.98 - 0.96 * s) * extent.z);
       path.points.push_back({position, 10.0 - 8.0 * s});
     }
   }
@@ -223,14 +225,13 @@ std::string formatGlyphBench(const GlyphBenchResult& result) {
   out.setf(std::ios::fixed);
   out.precision(2);
   out << "VesselGlyph intervals, image " << result.width << " x " << result.height << ", "
-      << result.views << " views: median " << result.medianMs << " ms (min " << result.minMs
-      << ", max " << result.maxMs << "); per view with prepared tubes and reused output "
-      << result.perViewMedianMs << " ms (min " << result.perViewMinMs << ", max "
-      << result.perViewMaxMs << "; CPU " << result.perViewMedianCpuMs << " ms on "
-      << result.threads << " threads); view-independent part " << result.prepareMs << " ms; "
-      << result.sourcePoints << " centerline points -> " << result.tubeVertices
-      << " tube vertices; " << std::size_t(result.medianIntervals) << " intervals, "
-      << 100 * result.coveredPixels << "% of pixels covered; checksum " << std::hex
+      << result.views << " views: median " << result.medianMs << " ms (min " << result.minMs << ", max "
+      << result.maxMs << "); per view with prepared tubes and reused output " << result.perViewMedianMs
+      << " ms (min " << result.perViewMinMs << ", max " << result.perViewMaxMs << "; CPU "
+      << result.perViewMedianCpuMs << " ms on " << result.threads << " threads); view-independent part "
+      << result.prepareMs << " ms; " << result.sourcePoints << " centerline points -> "
+      << result.tubeVertices << " tube vertices; " << std::size_t(result.medianIntervals)
+      << " intervals, " << 100 * result.coveredPixels << "% of pixels covered; checksum " << std::hex
       << result.checksum << std::dec << "\n";
   return out.str();
 }

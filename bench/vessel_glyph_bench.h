@@ -20,17 +20,17 @@ struct GlyphBenchSettings {
 };
 
 struct GlyphBenchResult {
-  int width = 0, height = 0;       // the image
-  std::size_t sourcePoints = 0;    // centerline points given
-  std::size_t tubeVertices = 0;    // after de-duplicating trunks and simplifying
+  int width = 0, height = 0;     // the image
+  std::size_t sourcePoints = 0;  // centerline points given
+  std::size_t tubeVertices = 0;  // after de-duplicating trunks and simplifying
   // buildRayRegions(volume, view, centerlines, settings) per view: both parts, a new RayRegions.
   double medianMs = 0, minMs = 0, maxMs = 0;
   // RayRegionBuilder::build into a RayRegions reused from view to view (what a renderer does).
   double perViewMedianMs = 0, perViewMinMs = 0, perViewMaxMs = 0;
-  double perViewMedianCpuMs = 0;   // ... its CPU time, all threads (robust on a busy machine)
-  double prepareMs = 0;            // the view-independent part alone (median)
-  double medianIntervals = 0;      // intervals per view
-  double coveredPixels = 0;        // fraction of pixels with at least one interval (median)
+  double perViewMedianCpuMs = 0;  // ... its CPU time, all threads (robust on a busy machine)
+  double prepareMs = 0;           // the view-independent part alone (median)
+  double medianIntervals = 0;     // intervals per view
+  double coveredPixels = 0;       // fraction of pixels with at least one interval (median)
   // FNV-1a of every view's rayBegin and intervals: equal before and after a speed-up = same output.
   std::uint64_t checksum = 0;
   int threads = 0;

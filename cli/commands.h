@@ -31,9 +31,9 @@ struct RenderOptions {
   std::optional<std::string> shading;  // "on" | "off"
   bool mip = false;
   std::optional<double> window, level;
-  bool reference = false;  // the plain reference raycaster instead of the fast one
+  bool reference = false;             // the plain reference raycaster instead of the fast one
   VesselGlyphCliOptions vesselGlyph;  // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
-  std::string params;  // a render sidecar to reproduce (then only --out may be given)
+  std::string params;                 // a render sidecar to reproduce (then only --out may be given)
 };
 // Writes the image and its sidecar (render/recipe_json.h), or re-renders a sidecar's image.
 int runRender(const RenderOptions& options);
@@ -54,8 +54,8 @@ struct CprOptions {
   std::string tf;            // color through this TF instead of grey
   bool overlay = true;       // centerline marker and arc-length ruler
   std::string resampler = "trilinear";
-  int benchRuns = 0;              // > 0: also time the CPR this many times
-  double benchLengthMm = 400;     // ... of each path cut to this length
+  int benchRuns = 0;           // > 0: also time the CPR this many times
+  double benchLengthMm = 400;  // ... of each path cut to this length
 };
 int runCpr(const CprOptions& options);
 
@@ -78,9 +78,10 @@ struct BenchOptionsCli {
   bool reference = false;
   bool contributions = true;
   std::vector<std::string> levels;  // empty = all
-  std::string centerlines;  // adds VesselGlyph rows (the phantom's own when no VOLUME)
+  std::string centerlines;          // adds VesselGlyph rows (the phantom's own when no VOLUME)
   std::string json;
-  bool glyphIntervals = false;  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
+  bool glyphIntervals =
+      false;  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
 };
 int runBench(const BenchOptionsCli& options);
 
@@ -103,13 +104,13 @@ struct GuiOptions {
   bool mip = false;
   std::string size = "1280x800";  // window pixels
   bool headless = false;
-  std::string script;      // headless: JSON list of input steps (gui/app_script.h)
-  std::string screenshot;  // written at the end (window: when it closes)
-  std::string stateOut;    // the app's state and runtime numbers as JSON, at the end
-  double timeoutSeconds = 300;   // headless: for each wait for a quality level
-  double quitAfterSeconds = 0;   // window: close by itself after this long (smoke tests)
-  std::string session;           // a saved session (gui/session_file.h): its dataset, view, TF, panels
-  std::string centerlines;       // loaded into the VesselGlyph panel at start (errors shown there)
+  std::string script;           // headless: JSON list of input steps (gui/app_script.h)
+  std::string screenshot;       // written at the end (window: when it closes)
+  std::string stateOut;         // the app's state and runtime numbers as JSON, at the end
+  double timeoutSeconds = 300;  // headless: for each wait for a quality level
+  double quitAfterSeconds = 0;  // window: close by itself after this long (smoke tests)
+  std::string session;          // a saved session (gui/session_file.h): its dataset, view, TF, panels
+  std::string centerlines;      // loaded into the VesselGlyph panel at start (errors shown there)
 };
 int runGui(const GuiOptions& options);
 // A display is there and GLFW can open windows on it.

@@ -40,8 +40,8 @@ CprDisplay displayFrom(const CprOptions& o, std::string& description) {
     display.windowLevel = *preset;
   }
   if (o.window) display.windowLevel = {*o.window, *o.level};
-  description = "window " + number(display.windowLevel.window) + " level " +
-                number(display.windowLevel.level);
+  description =
+      "window " + number(display.windowLevel.window) + " level " + number(display.windowLevel.level);
   return display;
 }
 
@@ -55,8 +55,8 @@ auto aboutCenterlines(const std::string& file, Work&& work) {
   }
 }
 
-void runBenchmark(const Volume& volume, const std::vector<CenterlinePath>& paths,
-                  const CprOptions& o, double pixelMm) {
+void runBenchmark(const Volume& volume, const std::vector<CenterlinePath>& paths, const CprOptions& o,
+                  double pixelMm) {
   CprBenchSettings settings;
   settings.runs = o.benchRuns;
   settings.mode = *parseCprMode(o.mode);
@@ -84,8 +84,7 @@ int runCpr(const CprOptions& o) {
   const Volume& volume = loaded.volume;
   CenterlineLoadOptions loadOptions;
   loadOptions.warn = printWarning;
-  const Centerlines centerlines =
-      toVolumeFrame(loadCenterlines(o.centerlines, loadOptions), volume);
+  const Centerlines centerlines = toVolumeFrame(loadCenterlines(o.centerlines, loadOptions), volume);
   const std::vector<CenterlinePath> paths =
       aboutCenterlines(o.centerlines, [&] { return selectPaths(centerlines, o.path); });
 
@@ -97,12 +96,11 @@ int runCpr(const CprOptions& o) {
   settings.widthMm = o.widthMm;
   const CprResampler resampler = *parseCprResampler(o.resampler);
   const auto start = std::chrono::steady_clock::now();
-  const Cpr cpr = aboutCenterlines(
-      o.centerlines, [&] { return computeCpr(volume, paths, view, settings, resampler); });
+  const Cpr cpr = aboutCenterlines(o.centerlines,
+                                   [&] { return computeCpr(volume, paths, view, settings, resampler); });
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  for (const std::string& warning : cpr.layout.warnings)
-    printWarning(o.centerlines + ": " + warning);
+  for (const std::string& warning : cpr.layout.warnings) printWarning(o.centerlines + ": " + warning);
 
   CprDescription description;
   description.dataset = o.volume;

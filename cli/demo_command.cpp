@@ -31,7 +31,8 @@ int runDemo(const DemoOptions& options) {
     recipe.quality = quality;
     recipe.params.angleDeg = 20;  // a slight oblique view shows depth better than AP
     recipe.params.sampling = qualitySampling(quality);
-    const auto out = std::filesystem::path(options.outDir) / ("phantom-" + std::string(toString(quality)) + ".png");
+    const auto out =
+        std::filesystem::path(options.outDir) / ("phantom-" + std::string(toString(quality)) + ".png");
     exportImage(renderRecipe(phantom.volume, {}, recipe), out, renderSidecarMetadata(recipe));
     std::printf("wrote %s\n", out.string().c_str());
   }

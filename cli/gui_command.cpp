@@ -23,8 +23,8 @@ namespace {
 glm::ivec2 parseWindowSize(const std::string& text) {
   int width = 0, height = 0;
   char rest = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 320 ||
-      height < 240 || width > 8192 || height > 8192)
+  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &rest) != 2 || width < 320 || height < 240 ||
+      width > 8192 || height > 8192)
     throw std::runtime_error("window size '" + text + "' is not WxH with 320x240 .. 8192x8192 pixels");
   return {width, height};
 }
@@ -53,7 +53,8 @@ LoadedDataset loadDataset(const GuiOptions& options) {
 
 // The command line's document, with a session's contents (but its dataset and recent files) over
 // it; the app's Workstation wraps the angle.
-AppStart initialState(const GuiOptions& options, const LoadedDataset& dataset, const std::optional<Document>& session) {
+AppStart initialState(const GuiOptions& options, const LoadedDataset& dataset,
+                      const std::optional<Document>& session) {
   AppStart start;
   Document& document = start.document;
   document.dataset = dataset.name;
@@ -96,8 +97,9 @@ int runGui(const GuiOptions& options) {
   std::optional<std::vector<ScriptStep>> script;
   if (!options.script.empty()) script = loadScript(options.script);
   if (!options.headless && !windowSystemAvailable())
-    throw std::runtime_error("no display to open a window on (DISPLAY/WAYLAND_DISPLAY unset or "
-                             "unusable); use --headless");
+    throw std::runtime_error(
+        "no display to open a window on (DISPLAY/WAYLAND_DISPLAY unset or "
+        "unusable); use --headless");
   std::optional<Document> session;
   if (!options.session.empty()) session = loadSession(options.session);
   const GuiOptions effective = session ? withSessionDataset(options, *session) : options;

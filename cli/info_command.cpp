@@ -28,7 +28,8 @@ double fractionInHuRange(const DensityHistogram& counts, std::uint64_t total, in
   return 100.0 * double(inside) / double(total);
 }
 
-void printVisibleFraction(const DensityHistogram& counts, std::uint64_t total, const std::string& tfName) {
+void printVisibleFraction(const DensityHistogram& counts, std::uint64_t total,
+                          const std::string& tfName) {
   const TransferFunction tf = loadPresetOrFile(tfName);
   const TfTable table = buildTable(tf);
   std::uint64_t visible = 0;
@@ -41,14 +42,16 @@ void printHistogramSummary(const Volume& volume, const std::string& tfName) {
   const DensityHistogram counts = densityHistogram(volume);
   const std::uint64_t total = volume.voxelCount();
   const DensityRange range = densityRange(volume);
-  std::printf("HU range:    %.0f .. %.0f\n", huOfDensity(range.minDensity), huOfDensity(range.maxDensity));
+  std::printf("HU range:    %.0f .. %.0f\n", huOfDensity(range.minDensity),
+              huOfDensity(range.maxDensity));
   std::printf("percentiles: 1%% %.0f, 50%% %.0f, 99%% %.0f, 99.9%% %.0f HU\n",
               percentileHu(counts, total, 0.01), percentileHu(counts, total, 0.5),
               percentileHu(counts, total, 0.99), percentileHu(counts, total, 0.999));
-  std::printf("classes:     air < -900: %.1f%%, fat/soft -200..150: %.1f%%, "
-              "contrast 150..600: %.2f%%, calcium/bone > 700: %.2f%%\n",
-              fractionInHuRange(counts, total, -1024, -901), fractionInHuRange(counts, total, -200, 150),
-              fractionInHuRange(counts, total, 151, 600), fractionInHuRange(counts, total, 701, 3071));
+  std::printf(
+      "classes:     air < -900: %.1f%%, fat/soft -200..150: %.1f%%, "
+      "contrast 150..600: %.2f%%, calcium/bone > 700: %.2f%%\n",
+      fractionInHuRange(counts, total, -1024, -901), fractionInHuRange(counts, total, -200, 150),
+      fractionInHuRange(counts, total, 151, 600), fractionInHuRange(counts, total, 701, 3071));
   if (!tfName.empty()) printVisibleFraction(counts, total, tfName);
 }
 

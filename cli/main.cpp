@@ -18,30 +18,36 @@ void addInfo(CLI::App& app, angio::InfoOptions& o) {
 void addRender(CLI::App& app, angio::RenderOptions& o) {
   auto* cmd = app.add_subcommand("render", "Render a volume to an image file (.png, .tif, .exr)");
   cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder (required without --params)");
-  auto* out = cmd->add_option("--out,-o", o.out, "Output image (.png 8-bit, .tif 16-bit, .exr float); "
-                                                 "a JSON sidecar goes beside it (OUT.json)");
+  auto* out = cmd->add_option("--out,-o", o.out,
+                              "Output image (.png 8-bit, .tif 16-bit, .exr float); "
+                              "a JSON sidecar goes beside it (OUT.json)");
   cmd->add_option("--labels", o.labels, "Label volume on the same grid");
   cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
-  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+  cmd->add_option("--axis", o.axis, "Rotation axis")
+      ->check(CLI::IsMember({"i", "j", "k"}))
       ->capture_default_str();
   cmd->add_option("--angle", o.angleDeg, "Rotation angle in degrees")->capture_default_str();
   cmd->add_option("--quality", o.quality, "Quality level (sampling defaults)")
-      ->check(CLI::IsMember({"fast", "medium", "high"}))->capture_default_str();
+      ->check(CLI::IsMember({"fast", "medium", "high"}))
+      ->capture_default_str();
   cmd->add_option("--isd", o.isd, "Image sampling distance (voxel units)")->check(CLI::PositiveNumber);
   cmd->add_option("--osd", o.osd, "Object sampling distance (voxel units)")->check(CLI::PositiveNumber);
   cmd->add_option("--filter", o.filter, "Reconstruction filter")
       ->check(CLI::IsMember({"nearest", "trilinear", "mean"}));
-  cmd->add_option("--shading", o.shading, "Headlight diffuse shading")->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--shading", o.shading, "Headlight diffuse shading")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(CLI::Range(0.0, 10.0));
   cmd->add_option("--kd", o.kd, "Diffuse coefficient")->check(CLI::Range(0.0, 10.0));
-  cmd->add_option("--ert", o.ert, "Early ray termination opacity (1 = off)")->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--ert", o.ert, "Early ray termination opacity (1 = off)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--mip", o.mip, "Maximum intensity projection instead of DVR");
   cmd->add_option("--window", o.window, "MIP window width (HU)")->check(CLI::PositiveNumber);
   cmd->add_option("--level", o.level, "MIP window centre (HU)");
   cmd->add_flag("--reference", o.reference, "Use the plain reference raycaster (same image, slower)");
   angio::addVesselGlyphOptions(*cmd, o.vesselGlyph);
-  auto* params = cmd->add_option("--params", o.params, "Render again what this sidecar (IMAGE.json) "
-                                                       "describes, to --out or its image");
+  auto* params = cmd->add_option("--params", o.params,
+                                 "Render again what this sidecar (IMAGE.json) "
+                                 "describes, to --out or its image");
   for (CLI::Option* option : cmd->get_options())
     if (option != params && option != out && option != cmd->get_help_ptr()) params->excludes(option);
 }
@@ -54,19 +60,22 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
   cmd->add_option("--path", o.path, "Path index, or all (side by side, sharing the trunk)")
       ->capture_default_str();
   cmd->add_option("--mode", o.mode, "CPR projection")
-      ->check(CLI::IsMember({"projected", "stretched", "straightened"}))->capture_default_str();
-  cmd->add_option("--axis", o.axis, "View rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+      ->check(CLI::IsMember({"projected", "stretched", "straightened"}))
+      ->capture_default_str();
+  cmd->add_option("--axis", o.axis, "View rotation axis")
+      ->check(CLI::IsMember({"i", "j", "k"}))
       ->capture_default_str();
   cmd->add_option("--angle", o.angleDeg, "View angle in degrees (turns the vector of interest)")
       ->capture_default_str();
-  cmd->add_option("--width", o.widthMm, "Lateral extent in mm (default 60): straightened: width per "
-                                        "path; stretched: width / 2 beside the centerline; projected: "
-                                        "band around it (default: whole rows)")
+  cmd->add_option("--width", o.widthMm,
+                  "Lateral extent in mm (default 60): straightened: width per "
+                  "path; stretched: width / 2 beside the centerline; projected: "
+                  "band around it (default: whole rows)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--pixel", o.pixelMm, "Pixel size in mm (default: the voxel unit)")
       ->check(CLI::PositiveNumber);
-  auto* window = cmd->add_option("--window", o.window, "Grey window width (HU)")
-                     ->check(CLI::PositiveNumber);
+  auto* window =
+      cmd->add_option("--window", o.window, "Grey window width (HU)")->check(CLI::PositiveNumber);
   auto* level = cmd->add_option("--level", o.level, "Grey window centre (HU)");
   window->needs(level);
   level->needs(window);
@@ -76,11 +85,13 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
   tf->excludes(window)->excludes(level)->excludes(preset);
   cmd->add_flag("!--no-overlay", o.overlay, "Leave out the centerline marker and the ruler");
   cmd->add_option("--resampler", o.resampler, "trilinear (exact) or opencv-remap (comparison)")
-      ->check(CLI::IsMember({"trilinear", "opencv-remap"}))->capture_default_str();
+      ->check(CLI::IsMember({"trilinear", "opencv-remap"}))
+      ->capture_default_str();
   cmd->add_option("--bench", o.benchRuns, "Also time the CPR this many times (median, min, max)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--bench-length", o.benchLengthMm, "Cut each path to this length for --bench (mm)")
-      ->check(CLI::PositiveNumber)->capture_default_str();
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
 }
 
 void addPhantom(CLI::App& app, angio::PhantomOptionsCli& o) {
@@ -96,9 +107,11 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_option("VOLUME", o.volume, "Volume (default: the generated phantom)");
   cmd->add_option("--size", o.size, "Phantom voxels as IxJxK when no VOLUME")->capture_default_str();
   cmd->add_option("--tf", o.tf, "TF preset or file")->capture_default_str();
-  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+  cmd->add_option("--axis", o.axis, "Rotation axis")
+      ->check(CLI::IsMember({"i", "j", "k"}))
       ->capture_default_str();
-  cmd->add_option("--angles", o.angles, "Angles per level")->check(CLI::Range(1, 3600))
+  cmd->add_option("--angles", o.angles, "Angles per level")
+      ->check(CLI::Range(1, 3600))
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_flag("--reference", o.reference, "Also time the reference raycaster (slow)");
@@ -128,21 +141,25 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
                   "Phantom voxels as IxJxK when no VOLUME (modest by default, for a quick start)")
       ->capture_default_str();
   cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
-  cmd->add_option("--axis", o.axis, "Rotation axis")->check(CLI::IsMember({"i", "j", "k"}))
+  cmd->add_option("--axis", o.axis, "Rotation axis")
+      ->check(CLI::IsMember({"i", "j", "k"}))
       ->capture_default_str();
   cmd->add_option("--angle", o.angleDeg, "Start angle in degrees")->capture_default_str();
   cmd->add_flag("--mip", o.mip, "Start in MIP mode");
   cmd->add_option("--size", o.size, "Window size WxH in pixels")->capture_default_str();
   cmd->add_flag("--headless", o.headless, "No window: OSMesa software rendering of the same UI");
-  cmd->add_option("--script", o.script, "Headless: JSON list of input steps (move, click, drag, "
-                                         "wheel, key, wait_ms, wait_level, screenshot, state)");
+  cmd->add_option("--script", o.script,
+                  "Headless: JSON list of input steps (move, click, drag, "
+                  "wheel, key, wait_ms, wait_level, screenshot, state)");
   cmd->add_option("--screenshot", o.screenshot,
                   "Screenshot at the end (headless without --script: once the high image is shown)");
   cmd->add_option("--state-out", o.stateOut, "Write the app's state and timings as JSON at the end");
   cmd->add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for a quality level")
-      ->check(CLI::PositiveNumber)->capture_default_str();
-  cmd->add_option("--session", o.session, "Restore a saved session (its dataset unless VOLUME is "
-                                           "given, view, TF, levels, panels)");
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--session", o.session,
+                  "Restore a saved session (its dataset unless VOLUME is "
+                  "given, view, TF, levels, panels)");
   cmd->add_option("--quit-after", o.quitAfterSeconds, "Window: close after this many seconds")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--centerlines", o.centerlines,

@@ -9,8 +9,9 @@ namespace angio {
 ProgressLine::ProgressLine(std::string label) : label_(std::move(label)) {}
 
 ProgressLine::~ProgressLine() {
-  if (printed_) std::fprintf(stderr, "%s%s done in %.1f s\n", ::isatty(STDERR_FILENO) ? "\r" : "", label_.c_str(),
-                             std::chrono::duration<double>(Clock::now() - start_).count());
+  if (printed_)
+    std::fprintf(stderr, "%s%s done in %.1f s\n", ::isatty(STDERR_FILENO) ? "\r" : "", label_.c_str(),
+                 std::chrono::duration<double>(Clock::now() - start_).count());
 }
 
 void ProgressLine::operator()(double fraction) {

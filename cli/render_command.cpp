@@ -71,7 +71,8 @@ Centerlines loadCenterlines(const RenderRecipe& sidecar, const Volume& volume) {
   if (!sidecar.vesselGlyph) return {};
   CenterlineLoadOptions load;
   load.warn = printWarning;
-  Centerlines centerlines = toVolumeFrame(loadCenterlines(sidecar.vesselGlyph->centerlines, load), volume);
+  Centerlines centerlines =
+      toVolumeFrame(loadCenterlines(sidecar.vesselGlyph->centerlines, load), volume);
   checkCenterlinesInside(centerlines, volume, load);
   return centerlines;
 }

@@ -21,21 +21,26 @@ void requireOption(bool given, bool needed, const char* option, const char* need
 void addVesselGlyphOptions(CLI::App& cmd, VesselGlyphCliOptions& o) {
   cmd.add_option("--centerlines", o.centerlines,
                  "VesselGlyph focus+context rendering along these centerlines (.vtp, .mrk.json, .csv)");
-  cmd.add_option("--vg-focus", o.focus, "Focus shape: circle:radius=R, R in mm (3, 3mm) or a factor "
-                                        "of the vessel radius (2.0x) [circle:radius=2.0x]");
-  cmd.add_option("--vg-context", o.context, "Context shape: slab:front=MM,back=MM[,width=MM|inf], "
-                                            "tube:radius=R or none [slab:front=20,back=20,width=40]");
+  cmd.add_option("--vg-focus", o.focus,
+                 "Focus shape: circle:radius=R, R in mm (3, 3mm) or a factor "
+                 "of the vessel radius (2.0x) [circle:radius=2.0x]");
+  cmd.add_option("--vg-context", o.context,
+                 "Context shape: slab:front=MM,back=MM[,width=MM|inf], "
+                 "tube:radius=R or none [slab:front=20,back=20,width=40]");
   cmd.add_option("--focus-tf", o.focusTf, "TF of the focus region (preset or file) [--tf]");
   cmd.add_option("--context-tf", o.contextTf, "TF of the context region (preset or file) [--tf]");
-  cmd.add_option("--vg-outside", o.outside, "Outside the regions: clip, or a TF to render it with [clip]");
+  cmd.add_option("--vg-outside", o.outside,
+                 "Outside the regions: clip, or a TF to render it with [clip]");
   cmd.add_flag("--cleft", o.cleft, "Foreground cleft: remove the context in front of the focus");
   cmd.add_flag("--half-vessel", o.halfVessel, "Clip the focus at the centerline's depth");
   cmd.add_flag("--hybrid-cpr", o.hybrid, "DVR+CPR hybrid: the projected CPR in the focus footprint");
   cmd.add_option("--hybrid-path", o.hybridPath, "Hybrid: path index or all [all]");
   cmd.add_option("--transition", o.transitionMm, "Hybrid: smooth transition band in mm [0]")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_option("--cpr-window", o.cprWindow, "Hybrid: grey CPR window width (HU) instead of the "
-                                              "focus TF's colors")->check(CLI::PositiveNumber);
+  cmd.add_option("--cpr-window", o.cprWindow,
+                 "Hybrid: grey CPR window width (HU) instead of the "
+                 "focus TF's colors")
+      ->check(CLI::PositiveNumber);
   cmd.add_option("--cpr-level", o.cprLevel, "Hybrid: grey CPR window centre (HU)");
 }
 
@@ -70,7 +75,8 @@ std::optional<HybridCprRecipe> hybridCprRecipe(const VesselGlyphCliOptions& o) {
   const char* needs = "--hybrid-cpr";
   requireOption(o.hybridPath.has_value(), o.hybrid, "--hybrid-path", needs);
   requireOption(o.transitionMm.has_value(), o.hybrid, "--transition", needs);
-  requireOption(o.cprWindow.has_value() || o.cprLevel.has_value(), o.hybrid, "--cpr-window/--cpr-level", needs);
+  requireOption(o.cprWindow.has_value() || o.cprLevel.has_value(), o.hybrid, "--cpr-window/--cpr-level",
+                needs);
   if (o.cprWindow.has_value() != o.cprLevel.has_value())
     throw std::invalid_argument("--cpr-window and --cpr-level go together");
   if (!o.hybrid) return std::nullopt;

@@ -116,8 +116,7 @@ void copyStoredBlocks(const Volume& volume, BlockedVolume& blocked) {
   static_assert(kDummyVoxel == 0, "storage is zero-filled, which is the dummy's value");
   tbb::parallel_for(0, blocked.blockCount(), [&](int block) {
     if (blocked.isBackground(block)) return;
-    copyWindow(volume, blocked.blockCoord(block),
-               blocked.storage.data() + blocked.blockOffset[block]);
+    copyWindow(volume, blocked.blockCoord(block), blocked.storage.data() + blocked.blockOffset[block]);
   });
 }
 
@@ -125,8 +124,7 @@ template <typename Fn>
 double wallMs(Fn&& fn) {
   const auto start = std::chrono::steady_clock::now();
   fn();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace

@@ -78,9 +78,7 @@ struct BlockedVolume {
   int backgroundBlocks = 0;  // blocks that share the dummy
 
   int blockCount() const { return blocks.x * blocks.y * blocks.z; }
-  int blockIndex(glm::ivec3 block) const {
-    return (block.z * blocks.y + block.y) * blocks.x + block.x;
-  }
+  int blockIndex(glm::ivec3 block) const { return (block.z * blocks.y + block.y) * blocks.x + block.x; }
   glm::ivec3 blockCoord(int block) const {
     return {block % blocks.x, block / blocks.x % blocks.y, block / (blocks.x * blocks.y)};
   }
@@ -130,7 +128,6 @@ struct BlockingReport {
   int visibleBlocks = 0;     // for the TF
   bool tfNeedsBackgroundVoxels = false;
 };
-BlockingReport blockingReport(const Volume& volume, const TfTable& table,
-                              BlockingOptions options = {});
+BlockingReport blockingReport(const Volume& volume, const TfTable& table, BlockingOptions options = {});
 
 }  // namespace angio

@@ -17,7 +17,8 @@ SampleTable correctedTable(const TfTable& table, double osd) {
 
 FrameTables frameTables(const RegionTables& tables, double osd) {
   FrameTables frame;
-  if (tables.regions && tables.focus) frame.focus = correctedTable(*tables.focus, osd), frame.hasFocus = true;
+  if (tables.regions && tables.focus)
+    frame.focus = correctedTable(*tables.focus, osd), frame.hasFocus = true;
   if (tables.regions && tables.context)
     frame.context = correctedTable(*tables.context, osd), frame.hasContext = true;
   if (tables.outside) frame.outside = correctedTable(*tables.outside, osd), frame.hasOutside = true;

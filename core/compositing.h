@@ -30,7 +30,7 @@ struct RegionTables {
   const RayRegions* regions = nullptr;  // none: every sample is outside
   const TfTable* focus = nullptr;
   const TfTable* context = nullptr;
-  const TfTable* outside = nullptr;     // none: the outside is clipped (not rendered)
+  const TfTable* outside = nullptr;  // none: the outside is clipped (not rendered)
 };
 
 inline RegionTables singleTable(const TfTable& table) { return {nullptr, nullptr, nullptr, &table}; }
@@ -79,9 +79,7 @@ class RegionCursor {
 };
 
 // Interpolated density (>= 0) -> table entry: the nearest of the 4096 entries.
-inline int tableIndex(float density) {
-  return std::min(int(density + 0.5f), kDensityLevels - 1);
-}
+inline int tableIndex(float density) { return std::min(int(density + 0.5f), kDensityLevels - 1); }
 
 // Continuous voxel coordinates of the samples of one ray: q(k) = p(k delta) / spacing, written as
 // origin/spacing + k * (delta d / spacing) so a sample costs one multiply-add per axis.

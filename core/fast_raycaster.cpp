@@ -52,9 +52,9 @@ struct Frame {
 // take there (MIP), over the slices the row's samples read. Rows reading the same slices share it.
 struct RowTiles {
   SliceSpan span{0, -1};
-  std::vector<std::uint8_t> visible;         // per tile (DVR)
-  std::vector<std::uint16_t> maxDensity;     // per tile (MIP)
-  std::vector<std::uint8_t> groupVisible;    // per tile group: any tile in it visible
+  std::vector<std::uint8_t> visible;       // per tile (DVR)
+  std::vector<std::uint16_t> maxDensity;   // per tile (MIP)
+  std::vector<std::uint8_t> groupVisible;  // per tile group: any tile in it visible
   std::vector<std::uint16_t> groupMaxDensity;
 };
 
@@ -127,7 +127,7 @@ struct RowBundle {
   // identical (same voxels, same TF) and the first row's pixels are copied to the others.
   int lanes = 1;
   std::array<float, kMaxBundleRows> fracA{};  // each row's cell fraction along a (cellAt)
-  double qa = 0;  // the first row's axis coordinate, voxel units
+  double qa = 0;                              // the first row's axis coordinate, voxel units
 };
 
 // Where row y's rays are along a, and what decides the voxels they read there: cellAt's base
@@ -148,7 +148,8 @@ RowPlace rowPlace(const Frame& f, int y) {
   RowPlace place;
   place.outside = origin[a] < -1e-9 || origin[a] > f.view.extent[a] + 1e-9;
   place.qa = q[a];
-  place.key = f.params.sampling.filter == Filter::trilinear ? cell.base[a] : nearestVoxel(f.volume, q)[a];
+  place.key =
+      f.params.sampling.filter == Filter::trilinear ? cell.base[a] : nearestVoxel(f.volume, q)[a];
   place.fracA = cell.frac[a];
   return place;
 }
@@ -183,7 +184,7 @@ struct Lane {
   RayAccumulator ray;
   float mipMaximum = 0.f;
   long resumeAt = std::numeric_limits<long>::min();  // samples before it are in a clipped region
-  bool done = false;  // terminated early, or nothing more shown
+  bool done = false;                                 // terminated early, or nothing more shown
 };
 
 // What the rays of one column of a bundle carry from one tile group to the next.
@@ -260,7 +261,8 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
 // true when every lane is done. Samples the sampler proves invisible for every lane (or, in MIP,
 // not above any lane's maximum) are skipped without interpolation; they could not change a pixel.
 template <class Mode, class Sampler>
-bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, long first, BundleRay<Sampler>& b) {
+bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, long first,
+               BundleRay<Sampler>& b) {
   const bool skip = f.skipCells;
   const int lanes = bundle.lanes;
   Sampler& sampler = b.sampler;
@@ -337,22 +339,29 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
 template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   BundleRay<Sampler> b{RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
-                       Sampler(f.volume, f.rayStepQ, f.view.axis), {}, bundle.lanes};
+                       Sampler(f.volume, f.rayStepQ, f.view.axis),
+                       {},
+                       bundle.lanes};
   for (int l = 0; l < bundle.lanes; ++l)
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
   return b;
 }
 
 template <class Mode, class Sampler>
-void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampler>& scratch, Image& image) {
+void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampler>& scratch,
+                 Image& image) {
   const RayTemplates& templates = f.templates;
   for (int r = 0; r < bundle.rows; ++r) {
     const int y = bundle.firstRow + r, l = std::min(r, bundle.lanes - 1);
     for (int x = 0; x < f.view.width; ++x) {
       const auto& b = scratch.rays[x];
-      if (!b) image.at(x, y) = Mode::mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
-                                   ? mipPixel(0.f, f.params.mip) : glm::vec4(0.f);
-      else image.at(x, y) = Mode::mip ? mipPixel(b->lanes[l].mipMaximum, f.params.mip) : b->lanes[l].ray.pixel();
+      if (!b)
+        image.at(x, y) = Mode::mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
+                             ? mipPixel(0.f, f.params.mip)
+                             : glm::vec4(0.f);
+      else
+        image.at(x, y) =
+            Mode::mip ? mipPixel(b->lanes[l].mipMaximum, f.params.mip) : b->lanes[l].ray.pixel();
     }
   }
 }
@@ -418,8 +427,11 @@ RowFunction rowFunctionFor(Filter filter) {
 RowFunction rowFunctionFor(const RenderParams& params, bool regions) {
   const bool mip = params.compositing == Compositing::mip;
   const Filter filter = params.sampling.filter;
-  if (regions) return mip ? rowFunctionFor<Compiled<true, true>>(filter) : rowFunctionFor<Compiled<false, true>>(filter);
-  return mip ? rowFunctionFor<Compiled<true, false>>(filter) : rowFunctionFor<Compiled<false, false>>(filter);
+  if (regions)
+    return mip ? rowFunctionFor<Compiled<true, true>>(filter)
+               : rowFunctionFor<Compiled<false, true>>(filter);
+  return mip ? rowFunctionFor<Compiled<true, false>>(filter)
+             : rowFunctionFor<Compiled<false, false>>(filter);
 }
 
 // The frame's image: every pixel is written by its row, so recycled memory needs no clearing.
@@ -449,8 +461,7 @@ TfTable unionVisibility(const RegionTables& tables) {
 }  // namespace
 
 Image renderFast(const Volume& volume, const TileClassification& classification, const TfTable& table,
-                 const RenderParams& params, const FastRenderOptions& options,
-                 FastRenderStats* stats) {
+                 const RenderParams& params, const FastRenderOptions& options, FastRenderStats* stats) {
   return renderFast(volume, classification, singleTable(table), params, options, stats);
 }
 
@@ -463,8 +474,9 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
     throw std::logic_error("renderFast: the tile classification was made for other TFs");
   const auto start = std::chrono::steady_clock::now();
   const SliceTiles& tiles = classification.tiles();
-  Frame f{volume, tiles, classification.visible(), params, options, tables, makeViewGeometry(volume, params),
-          frameTables(tables, params.sampling.osd), {}};
+  Frame f{volume,  tiles,  classification.visible(),         params,
+          options, tables, makeViewGeometry(volume, params), frameTables(tables, params.sampling.osd),
+          {}};
   const TfTable anyRegion = unionVisibility(tables);
   f.anyRegionTf = &anyRegion;
   f.skipGroups = options.skipEmpty && options.skipGroups;
@@ -487,12 +499,14 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   std::atomic<std::uint64_t> samples{0};
   std::atomic<bool> cancelled{false};
   const std::vector<RowBundle> bundles = rowBundles(f);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bundles.size()), [&](const tbb::blocked_range<std::size_t>& range) {
-    std::uint64_t local = 0;
-    if (!renderRowsFn(f, bundles.data() + range.begin(), bundles.data() + range.end(), image, local))
-      cancelled = true;
-    samples += local;
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, bundles.size()),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        std::uint64_t local = 0;
+        if (!renderRowsFn(f, bundles.data() + range.begin(), bundles.data() + range.end(), image, local))
+          cancelled = true;
+        samples += local;
+      });
   if (stats) *stats = {samples.load(), templateMs, cancelled.load()};
   return image;
 }

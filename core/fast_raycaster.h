@@ -44,8 +44,8 @@ struct FastRenderOptions {
 };
 
 struct FastRenderStats {
-  std::uint64_t samples = 0;     // samples in tiles not skipped (clipped regions included)
-  double templateMs = 0;         // building the ray templates for this view
+  std::uint64_t samples = 0;  // samples in tiles not skipped (clipped regions included)
+  double templateMs = 0;      // building the ray templates for this view
   bool cancelled = false;
 };
 

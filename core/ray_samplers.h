@@ -94,13 +94,13 @@ class TrilinearRaySampler {
   // only in the last of trilinear's interpolations, along z: the two bilinear planes are computed
   // once per sample for all rows.
   float density(float fracA) {
-    return interpolateRow(fracA, [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; },
-                          densityPlanes_);
+    return interpolateRow(
+        fracA, [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; }, densityPlanes_);
   }
   glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();
-    return interpolateRow(fracA, [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; },
-                          gradientPlanes_);
+    return interpolateRow(
+        fracA, [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; }, gradientPlanes_);
   }
 
  private:
@@ -202,9 +202,9 @@ class TrilinearRaySampler {
   glm::ivec3 cached_{-1};
   bool gradientsLoaded_ = false;
   int lo_ = 0, hi_ = 0;
-  std::array<float, 8> corners_;       // filled by load() before any use
+  std::array<float, 8> corners_;        // filled by load() before any use
   std::array<glm::vec3, 8> gradients_;  // filled by loadGradients() before any use
-  Planes<float> densityPlanes_;  // rotation about k
+  Planes<float> densityPlanes_;         // rotation about k
   Planes<glm::vec3> gradientPlanes_;
 };
 

@@ -25,10 +25,8 @@ std::vector<TileRun> columnRuns(const Volume& volume, const ViewGeometry& view, 
   for (long k = range.first; k <= range.last; ++k) {
     const glm::dvec3 q = positions.at(k);
     const int tile = tileOf(q[tiles.axisC], nc) * tiles.tilesB + tileOf(q[tiles.axisB], nb);
-    if (!runs.empty() && runs.back().tile == tile)
-      ++runs.back().count;
-    else
-      runs.push_back({tile, 1, k});
+    if (!runs.empty() && runs.back().tile == tile) ++runs.back().count;
+    else runs.push_back({tile, 1, k});
   }
   return runs;
 }
@@ -40,7 +38,8 @@ void appendColumn(const SliceTiles& tiles, const std::vector<TileRun>& runs, Ray
   for (const TileRun& run : runs) {
     const int group = tiles.groupOf(run.tile);
     const auto index = std::uint32_t(templates.runs.size());
-    if (templates.groups.size() == templates.columnBegin.back() || templates.groups.back().group != group)
+    if (templates.groups.size() == templates.columnBegin.back() ||
+        templates.groups.back().group != group)
       templates.groups.push_back({group, index, index});
     templates.runs.push_back(run);
     templates.groups.back().endRun = index + 1;
@@ -81,7 +80,8 @@ RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, c
                                const std::atomic<bool>* cancel) {
   std::vector<std::vector<TileRun>> perColumn(view.width);
   tbb::parallel_for(0, view.width, [&](int x) {
-    if (!cancel || !cancel->load(std::memory_order_relaxed)) perColumn[x] = columnRuns(volume, view, tiles, x);
+    if (!cancel || !cancel->load(std::memory_order_relaxed))
+      perColumn[x] = columnRuns(volume, view, tiles, x);
   });
   RayTemplates templates;
   templates.columnBegin.reserve(view.width + 1);

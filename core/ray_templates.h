@@ -17,7 +17,7 @@ namespace angio {
 struct TileRun {
   std::int32_t tile = 0;  // tileC * tilesB + tileB
   std::int32_t count = 0;
-  long firstSample = 0;   // k of the first sample of the run
+  long firstSample = 0;  // k of the first sample of the run
 };
 
 struct GroupRun {

@@ -19,7 +19,7 @@ struct RegionInterval {
 };
 
 struct RayRegions {
-  int width = 0;   // the view's image size
+  int width = 0;  // the view's image size
   int height = 0;
   // Intervals of pixel (x, y), n = y * width + x: [rayBegin[n], rayBegin[n + 1]).
   std::vector<std::uint32_t> rayBegin;

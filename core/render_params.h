@@ -11,8 +11,8 @@ enum class Quality { fast, medium, high };
 enum class Compositing { dvr, mip };
 
 struct Sampling {
-  double isd = 1.0;   // image sampling distance, voxel units
-  double osd = 1.0;   // object sampling distance, voxel units
+  double isd = 1.0;  // image sampling distance, voxel units
+  double osd = 1.0;  // object sampling distance, voxel units
   Filter filter = Filter::nearest;
   double ert = 0.98;  // early ray termination threshold on accumulated opacity; 1 = never
 

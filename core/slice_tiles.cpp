@@ -97,8 +97,9 @@ SliceSpan slicesReadAt(const SliceTiles& tiles, double qa, Filter filter) {
 std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const TfTable& table) {
   std::vector<std::uint8_t> visible(tiles.minDensity.size());
   tbb::parallel_for(std::size_t(0), visible.size(), [&](std::size_t n) {
-    visible[n] = std::uint8_t((table.anyVisible(tiles.minDensity[n], tiles.maxDensity[n]) ? kCellsVisible : 0) |
-                              (table.anyVisible(tiles.wideMinDensity[n], tiles.wideMaxDensity[n]) ? kWideVisible : 0));
+    visible[n] = std::uint8_t(
+        (table.anyVisible(tiles.minDensity[n], tiles.maxDensity[n]) ? kCellsVisible : 0) |
+        (table.anyVisible(tiles.wideMinDensity[n], tiles.wideMaxDensity[n]) ? kWideVisible : 0));
   });
   return visible;
 }

@@ -9,8 +9,8 @@
 namespace angio {
 
 struct ViewGeometry {
-  int width = 0;    // W = ceil(hypot(E_b, E_c) / D)
-  int height = 0;   // H = ceil(E_a / D)
+  int width = 0;          // W = ceil(hypot(E_b, E_c) / D)
+  int height = 0;         // H = ceil(E_a / D)
   double pixelMm = 0;     // D
   double sampleMm = 0;    // delta
   glm::dvec3 extent{0};   // E (mm)

@@ -15,9 +15,7 @@ Volume makeVolume(glm::ivec3 dims, glm::dvec3 spacing, Voxel fill) {
   return volume;
 }
 
-glm::dvec3 domainExtent(const Volume& volume) {
-  return glm::dvec3(volume.dims - 1) * volume.spacing;
-}
+glm::dvec3 domainExtent(const Volume& volume) { return glm::dvec3(volume.dims - 1) * volume.spacing; }
 
 double voxelUnit(const Volume& volume) {
   return std::min({volume.spacing.x, volume.spacing.y, volume.spacing.z});

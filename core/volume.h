@@ -19,15 +19,13 @@ namespace angio {
 
 struct Volume {
   glm::ivec3 dims{0};
-  glm::dvec3 spacing{1.0};         // mm per voxel step along i, j, k
-  glm::dvec3 origin{0.0};          // physical position (mm, LPS) of voxel (0, 0, 0)
-  glm::dmat3 direction{1.0};       // columns: physical direction of the i, j, k axes
-  std::vector<Voxel> voxels;       // i fastest, then j, then k
+  glm::dvec3 spacing{1.0};    // mm per voxel step along i, j, k
+  glm::dvec3 origin{0.0};     // physical position (mm, LPS) of voxel (0, 0, 0)
+  glm::dmat3 direction{1.0};  // columns: physical direction of the i, j, k axes
+  std::vector<Voxel> voxels;  // i fastest, then j, then k
 
   std::size_t voxelCount() const { return std::size_t(dims.x) * dims.y * dims.z; }
-  std::size_t indexOf(int i, int j, int k) const {
-    return (std::size_t(k) * dims.y + j) * dims.x + i;
-  }
+  std::size_t indexOf(int i, int j, int k) const { return (std::size_t(k) * dims.y + j) * dims.x + i; }
   Voxel at(int i, int j, int k) const { return voxels[indexOf(i, j, k)]; }
   int densityAt(int i, int j, int k) const { return densityOf(at(i, j, k)); }
 };

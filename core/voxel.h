@@ -10,7 +10,7 @@ namespace angio {
 using Voxel = std::uint16_t;
 
 constexpr int kDensityLevels = 4096;
-constexpr int kHuOffset = 1024;      // density 0 is -1024 HU
+constexpr int kHuOffset = 1024;  // density 0 is -1024 HU
 constexpr int kMaxLabel = 15;
 
 constexpr int densityOf(Voxel v) { return v & 0x0FFF; }

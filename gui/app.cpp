@@ -18,13 +18,8 @@ void FrameTimes::Stats::add(double ms) {
 
 App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& threads,
          std::function<void()> wakeUi)
-    : data_(std::move(dataset)),
-      workstation_(std::move(start.document)),
-      texture_(gl),
-      wakeUi_(std::move(wakeUi)),
-      threads_(threads),
-      renderer_(makeRenderer()),
-      presets_(listPresets()),
+    : data_(std::move(dataset)), workstation_(std::move(start.document)), texture_(gl),
+      wakeUi_(std::move(wakeUi)), threads_(threads), renderer_(makeRenderer()), presets_(listPresets()),
       cprView_(gl) {
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
   ImGuiIO& io = ImGui::GetIO();
@@ -82,7 +77,8 @@ void App::frame(double previousFrameMs) {
                            ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)) ||
                            ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow));
   ImGui::Render();
-  if (doc().vesselGlyph.enabled && vessel_.physical) loadMissingRegionTfs();  // the request's regions need them
+  if (doc().vesselGlyph.enabled && vessel_.physical)
+    loadMissingRegionTfs();  // the request's regions need them
   requestRender(interacting);
 }
 
@@ -148,7 +144,8 @@ ViewportOverlay App::viewportOverlay() const {
   const glm::dvec3 extent = domainExtent(data_.volume);
   const ViewState& view = doc().view;
   const int a = int(view.axis), b = (a + 1) % 3, c = (a + 2) % 3;
-  overlay.fitMm = glm::dvec2(std::max(std::hypot(extent[b], extent[c]), 1e-3), std::max(extent[a], 1e-3));
+  overlay.fitMm =
+      glm::dvec2(std::max(std::hypot(extent[b], extent[c]), 1e-3), std::max(extent[a], 1e-3));
   char caption[96];
   std::snprintf(caption, sizeof caption, "%.1f deg about %s%s", view.angleDeg, toString(view.axis),
                 doc().mode == Compositing::mip ? "   MIP" : "");
@@ -174,7 +171,8 @@ FramePacing App::pacing() const {
 bool App::settled(Quality level) const {
   const std::shared_ptr<const ProgressiveFrame> frame = renderer_->latestFrame();
   if (export_.job.valid() || backgroundBusy()) return false;
-  const bool shownIsNewest = shown_ && !incoming_ && frame == shown_ && shown_->request == lastRequestId_;
+  const bool shownIsNewest =
+      shown_ && !incoming_ && frame == shown_ && shown_->request == lastRequestId_;
   if (shownIsNewest && int(shown_->level) >= int(level)) return true;
   const ProgressiveStatus status = renderer_->status();
   // Finished below `level` (an interactive request): nothing more will come.

@@ -130,11 +130,11 @@ class App {
   std::shared_ptr<const PreparedScene> currentScene();
   std::shared_ptr<const PreparedScene> prepareScene(RenderRecipe recipe, const Centerlines& centerlines);
   RenderRecipe exportRecipe() const;  // of what the last request rendered
-  Centerlines exportCenterlines();  // the recipe's centerlines in the volume frame (none: empty)
+  Centerlines exportCenterlines();    // the recipe's centerlines in the volume frame (none: empty)
   // The side panel and status bar (gui/app_panels.cpp): the sections are gui/panel_*.h; these
   // give them what they show and act on what they return.
   void drawSidePanel();
-  bool sectionHeader(const char* title);  // a CollapsingHeader whose open state the session keeps
+  bool sectionHeader(const char* title);   // a CollapsingHeader whose open state the session keeps
   void noteRect(const std::string& name);  // the last widget's rectangle, for report()
   void drawStatusBar();
   void drawTfSection();
@@ -186,7 +186,7 @@ class App {
   Workstation workstation_;
   StreamedTexture texture_;
   std::function<void()> wakeUi_;
-  RenderThreads& threads_;  // the program's: the renderer renders in its arenas
+  RenderThreads& threads_;                         // the program's: the renderer renders in its arenas
   std::unique_ptr<ProgressiveRenderer> renderer_;  // replaced with the dataset
 
   // Rendering hand-off.

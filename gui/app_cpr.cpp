@@ -18,9 +18,9 @@ namespace angio {
 
 namespace {
 
-constexpr float kCprShare = 0.35f;  // of the room left of the side panel
+constexpr float kCprShare = 0.35f;      // of the room left of the side panel
 constexpr double kMaxCprPixelMm = 1.0;  // finer than coarse volumes' DVR pixels, for the ruler
-constexpr float kClickReachPx = 12;  // a click this near a projected centerline moves the cursor
+constexpr float kClickReachPx = 12;     // a click this near a projected centerline moves the cursor
 
 // Where a centerline point lies in the CPR image: on its path's curve, or, on a trunk the path
 // shares with an earlier path (drawn once, vessel/cpr_layout.h), on that path's curve.
@@ -78,7 +78,8 @@ float App::cprViewWidth() const {
 
 void App::drawCprSection() {
   if (!vessel_.physical || !sectionHeader("CPR")) return;  // the section needs centerlines
-  const CprPanelInfo info{&*vessel_.physical, doc().vesselGlyph.enabled, cprView_.error, vessel_.hybridProblem};
+  const CprPanelInfo info{&*vessel_.physical, doc().vesselGlyph.enabled, cprView_.error,
+                          vessel_.hybridProblem};
   commit(drawCprPanel(doc().cpr, info, widgetRects_));
 }
 
@@ -98,10 +99,11 @@ void App::updateCpr() {
   if (!centerlines) return;
   loadMissingRegionTfs();
   const Document& state = doc();
-  CprInputs inputs{vessel_.framedFor, vessel_.file, state.view.axis, state.view.angleDeg,
-                   // The high level's pixel size, so a projected CPR registers with the DVR image.
-                   std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm),
-                   state.cpr.mode, state.cpr.path, state.cpr.coloring, std::nullopt};
+  CprInputs inputs{
+      vessel_.framedFor, vessel_.file, state.view.axis, state.view.angleDeg,
+      // The high level's pixel size, so a projected CPR registers with the DVR image.
+      std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm),
+      state.cpr.mode, state.cpr.path, state.cpr.coloring, std::nullopt};
   if (state.cpr.coloring == CprColoring::focusTf) inputs.focusTf = state.vesselGlyph.focusTf;
   if (inputs == panel.madeFor || panel.job.running()) return;  // one at a time: the next one after it
   if (panel.cpr && (ImGui::IsAnyItemActive() || state.view.autoSpin)) return;
@@ -124,7 +126,8 @@ void App::updateCpr() {
     CprDisplay display;
     if (inputs.coloring == CprColoring::calcium) display.windowLevel = kCalciumWindow;
     if (inputs.focusTf) display.tf = *inputs.focusTf;
-    std::shared_ptr<const DisplayImage> image = makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
+    std::shared_ptr<const DisplayImage> image =
+        makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
     return ComputedCpr{inputs, std::move(cpr), std::move(image)};
   });
 }
@@ -166,7 +169,8 @@ void App::drawCprView() {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
   const CprState& cprState = doc().cpr;
-  ImGui::Text("CPR %s, %s", toString(cprState.mode), cprPathLabel(*vessel_.physical, cprState.path).c_str());
+  ImGui::Text("CPR %s, %s", toString(cprState.mode),
+              cprPathLabel(*vessel_.physical, cprState.path).c_str());
   const ImVec2 hoverLine = ImGui::GetCursorScreenPos();
   ImGui::NewLine();
   if (!panel.error.empty()) ImGui::TextWrapped("%s", panel.error.c_str());
@@ -176,7 +180,8 @@ void App::drawCprView() {
   }
   const Rgb8Image& image = panel.frame->levels.front();
   const ImVec2 avail = ImGui::GetContentRegionAvail(), at = ImGui::GetCursorScreenPos();
-  const float scale = std::max(std::min(avail.x / float(image.width), avail.y / float(image.height)), 1e-3f);
+  const float scale =
+      std::max(std::min(avail.x / float(image.width), avail.y / float(image.height)), 1e-3f);
   const ImVec2 size(float(image.width) * scale, float(image.height) * scale);
   panel.imageMin = ImVec2(at.x + std::max(avail.x - size.x, 0.f) / 2, at.y);
   panel.imageMax = ImVec2(panel.imageMin.x + size.x, panel.imageMin.y + size.y);
@@ -195,24 +200,29 @@ void App::drawCprView() {
   if (panel.hovered)
     std::snprintf(text, sizeof text, "arc %.1f mm   %.0f HU   path %d", panel.hovered->arcMm,
                   double(panel.hovered->hu), panel.hovered->path);
-  else
-    std::snprintf(text, sizeof text, "hover the CPR: arc length, HU");
-  draw->AddText(hoverLine, panel.hovered ? IM_COL32(255, 230, 90, 255) : IM_COL32(150, 150, 150, 255), text);
+  else std::snprintf(text, sizeof text, "hover the CPR: arc length, HU");
+  draw->AddText(hoverLine, panel.hovered ? IM_COL32(255, 230, 90, 255) : IM_COL32(150, 150, 150, 255),
+                text);
   panel.cursorPixel.reset();
   if (panel.cursor && (cprState.path < 0 || cprState.path == panel.cursor->path))
-    panel.cursorPixel = cprPixelOf(panel.cpr->layout, cprState.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
+    panel.cursorPixel =
+        cprPixelOf(panel.cpr->layout, cprState.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
   if (panel.cursorPixel) {
     const ImVec2 mark(panel.imageMin.x + float(panel.cursorPixel->x + 0.5) * scale,
                       panel.imageMin.y + float(panel.cursorPixel->y + 0.5) * scale);
     draw->AddCircle(mark, 7, IM_COL32(90, 255, 120, 255), 0, 2);
-    draw->AddLine(ImVec2(panel.imageMin.x, mark.y), ImVec2(mark.x - 8, mark.y), IM_COL32(90, 255, 120, 160));
-    draw->AddLine(ImVec2(mark.x + 8, mark.y), ImVec2(panel.imageMax.x, mark.y), IM_COL32(90, 255, 120, 160));
+    draw->AddLine(ImVec2(panel.imageMin.x, mark.y), ImVec2(mark.x - 8, mark.y),
+                  IM_COL32(90, 255, 120, 160));
+    draw->AddLine(ImVec2(mark.x + 8, mark.y), ImVec2(panel.imageMax.x, mark.y),
+                  IM_COL32(90, 255, 120, 160));
   }
   if (shown_ && viewport_.hasImage) {  // the hovered point (yellow) and the cursor (green) on the DVR
     const ViewGeometry shownView = makeViewGeometry(data_.volume, shown_->params);
     ImDrawList* front = ImGui::GetForegroundDrawList();
     front->PushClipRect(viewport_.min, viewport_.max, true);
-    if (panel.cursor) front->AddCircle(dvrScreenOf(shownView, panel.cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0, 2);
+    if (panel.cursor)
+      front->AddCircle(dvrScreenOf(shownView, panel.cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0,
+                       2);
     if (panel.hovered) {
       panel.markedOnDvr = dvrScreenOf(shownView, panel.hovered->pointMm);
       front->AddCircle(*panel.markedOnDvr, 7, IM_COL32(255, 230, 90, 255), 0, 2);

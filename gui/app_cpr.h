@@ -18,8 +18,8 @@ namespace angio {
 
 // A point of a centerline: the CPR view's cursor.
 struct CenterlinePlace {
-  int path = 0;      // index into the centerlines
-  double arcMm = 0;  // from the path's first point
+  int path = 0;             // index into the centerlines
+  double arcMm = 0;         // from the path's first point
   glm::dvec3 pointMm{0.0};  // volume frame
 };
 
@@ -53,15 +53,15 @@ struct CprViewPanel {
   StreamedTexture texture;
   std::shared_ptr<const DisplayImage> frame;  // the CPR image as the texture uploads it
   std::optional<Cpr> cpr;
-  std::optional<CprInputs> madeFor;  // what `cpr` (or the last error) was computed from
-  BackgroundJob<ComputedCpr> job;    // the next CPR being computed
+  std::optional<CprInputs> madeFor;    // what `cpr` (or the last error) was computed from
+  BackgroundJob<ComputedCpr> job;      // the next CPR being computed
   std::optional<CprInputs> computing;  // ... from these inputs
   std::string error;
-  std::optional<CprPick> hovered;  // the CPR pixel under the mouse
-  std::optional<ImVec2> markedOnDvr;  // where it was marked on the DVR image (screen)
+  std::optional<CprPick> hovered;         // the CPR pixel under the mouse
+  std::optional<ImVec2> markedOnDvr;      // where it was marked on the DVR image (screen)
   std::optional<CenterlinePlace> cursor;  // set by a click near a centerline on the DVR image
   std::optional<glm::dvec2> cursorPixel;  // the cursor in the CPR image (pixel centres at integers)
-  ImVec2 imageMin, imageMax;       // where the CPR image was drawn (screen)
+  ImVec2 imageMin, imageMax;              // where the CPR image was drawn (screen)
 };
 
 }  // namespace angio

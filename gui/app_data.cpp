@@ -118,7 +118,8 @@ void App::drawDataSection() {
   if (requests.browse) {
     const fs::path current = loadPath_.empty() ? fs::path(data_.name) : fs::path(loadPath_);
     std::error_code error;
-    browser_.show(fs::is_directory(current.parent_path(), error) ? current.parent_path() : fs::current_path());
+    browser_.show(fs::is_directory(current.parent_path(), error) ? current.parent_path()
+                                                                 : fs::current_path());
   }
   if (requests.open) openDataset(*requests.open);
   if (requests.cancelLoad) load_.cancel();

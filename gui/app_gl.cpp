@@ -68,8 +68,7 @@ std::vector<std::uint8_t> GlApi::readFrameRgb(int width, int height) const {
   pixelStorei(kPackAlignment, 1);
   readPixels(0, 0, width, height, kRgb, kUnsignedByte, bottomUp.data());
   const std::size_t row = std::size_t(width) * 3;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&bottomUp[row * (height - 1 - y)], row, &rgb[row * y]);
+  for (int y = 0; y < height; ++y) std::copy_n(&bottomUp[row * (height - 1 - y)], row, &rgb[row * y]);
   return rgb;
 }
 
@@ -103,7 +102,8 @@ void StreamedTexture::begin(std::shared_ptr<const DisplayImage> image) {
   gl_.texParameteri(kTexture2D, kTextureWrapT, kClampToEdge);
   for (int level = 0; level < levels; ++level) {
     const LevelView view = levelOf(*incoming_, level);
-    gl_.texImage2D(kTexture2D, level, int(kRgb8), view.width, view.height, 0, kRgb, kUnsignedByte, nullptr);
+    gl_.texImage2D(kTexture2D, level, int(kRgb8), view.width, view.height, 0, kRgb, kUnsignedByte,
+                   nullptr);
   }
   restoreBinding();
 }

@@ -42,16 +42,16 @@ void App::drawExportSection() {
   if (!requests.start) return;
   export_.cancel = std::make_shared<std::atomic<bool>>(false);
   export_.started = Clock::now();
-  export_.job = std::async(std::launch::async, [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
-                                                path = export_.ui.path, cancel = export_.cancel] {
-    return exportView(data_.volume, centerlines, recipe, path, cancel.get());
-  });
+  export_.job =
+      std::async(std::launch::async, [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
+                                      path = export_.ui.path, cancel = export_.cancel] {
+        return exportView(data_.volume, centerlines, recipe, path, cancel.get());
+      });
   message_ = "exporting " + export_.ui.path;
 }
 
 void App::pollExport() {
-  if (!export_.job.valid() ||
-      export_.job.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+  if (!export_.job.valid() || export_.job.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
     return;
   try {
     const std::string summary = export_.job.get();

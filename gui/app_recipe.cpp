@@ -65,7 +65,8 @@ std::shared_ptr<const PreparedScene> App::currentScene() {
 
 // A hybrid that cannot be made (e.g. its path is not there) leaves VesselGlyph without it, and
 // VesselGlyph settings that cannot be used leave plain DVR; the panels show why.
-std::shared_ptr<const PreparedScene> App::prepareScene(RenderRecipe recipe, const Centerlines& centerlines) {
+std::shared_ptr<const PreparedScene> App::prepareScene(RenderRecipe recipe,
+                                                       const Centerlines& centerlines) {
   try {
     return PreparedScene::prepare(data_.volume, centerlines, recipe, scene_.get());
   } catch (const std::exception& error) {

@@ -45,7 +45,8 @@ nlohmann::json App::report() const {
   nlohmann::json levels = nlohmann::json::object();
   for (int q = 0; q < kQualityLevels; ++q) {
     const LevelTiming& t = status.levels[q];
-    if (t.done) levels[toString(Quality(q))] = {{"ms", t.ms}, {"samples_per_second", t.samplesPerSecond()}};
+    if (t.done)
+      levels[toString(Quality(q))] = {{"ms", t.ms}, {"samples_per_second", t.samplesPerSecond()}};
   }
   const OrientationLetters letters = orientationLetters(doc().view.axis, doc().view.angleDeg);
   nlohmann::json layout = {{"viewport", rectJson(viewport_.min, viewport_.max)},
@@ -54,21 +55,29 @@ nlohmann::json App::report() const {
   return {
       {"state", nlohmann::json::parse(toJson(doc()))},
       {"runtime",
-       {{"dataset", {{"name", data_.name},
-                     {"dims", {data_.volume.dims.x, data_.volume.dims.y, data_.volume.dims.z}}}},
+       {{"dataset",
+         {{"name", data_.name},
+          {"dims", {data_.volume.dims.x, data_.volume.dims.y, data_.volume.dims.z}}}},
         {"shown", shown},
         {"newest_request", lastRequestId_},
         {"busy", status.busy},
         {"levels", levels},
         {"last_interrupt_ms", status.lastInterruptMs},
         {"startup_to_first_image_ms", startupImageMs_},
-        {"input_to_first_image_ms", {{"last", lastFirstImageMs_}, {"count", firstImage_.frames},
-                                     {"mean", firstImage_.meanMs()}, {"max", firstImage_.maxMs}}},
+        {"input_to_first_image_ms",
+         {{"last", lastFirstImageMs_},
+          {"count", firstImage_.frames},
+          {"mean", firstImage_.meanMs()},
+          {"max", firstImage_.maxMs}}},
         {"latency", latency_.report()},
         {"texture_upload_ms", {{"last", lastUploadMs_}, {"max", maxUploadMs_}}},
-        {"ui_frame_ms", {{"all", statsJson(frameTimes_.all)}, {"while_high", statsJson(frameTimes_.whileHigh)}}},
-        {"orientation", {{"right", std::string(1, letters.right)}, {"left", std::string(1, letters.left)},
-                         {"top", std::string(1, letters.top)}, {"bottom", std::string(1, letters.bottom)}}},
+        {"ui_frame_ms",
+         {{"all", statsJson(frameTimes_.all)}, {"while_high", statsJson(frameTimes_.whileHigh)}}},
+        {"orientation",
+         {{"right", std::string(1, letters.right)},
+          {"left", std::string(1, letters.left)},
+          {"top", std::string(1, letters.top)},
+          {"bottom", std::string(1, letters.bottom)}}},
         {"tf_undo_available", tfTargets_.history().canUndo()},
         {"message", message_},
         {"data", dataReport()},
@@ -85,7 +94,8 @@ nlohmann::json App::dataReport() const {
           {"description", data_.description},
           {"dims", {v.dims.x, v.dims.y, v.dims.z}},
           {"spacing", {v.spacing.x, v.spacing.y, v.spacing.z}},
-          {"orientation", std::string{lpsLetter(v.direction[0]), lpsLetter(v.direction[1]), lpsLetter(v.direction[2])}},
+          {"orientation",
+           std::string{lpsLetter(v.direction[0]), lpsLetter(v.direction[1]), lpsLetter(v.direction[2])}},
           {"hu_range", hu},
           {"loading", load_.running()},
           {"load_error", loadError_},
@@ -122,7 +132,8 @@ nlohmann::json App::cprReport() const {
   const CprViewPanel& panel = cprView_;
   nlohmann::json hovered = nullptr;
   if (panel.hovered) {
-    hovered = {{"arc_mm", panel.hovered->arcMm}, {"hu", panel.hovered->hu}, {"path", panel.hovered->path}};
+    hovered = {
+        {"arc_mm", panel.hovered->arcMm}, {"hu", panel.hovered->hu}, {"path", panel.hovered->path}};
     if (panel.markedOnDvr) hovered["dvr_screen"] = {panel.markedOnDvr->x, panel.markedOnDvr->y};
   }
   nlohmann::json cursor = nullptr;

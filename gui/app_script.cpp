@@ -17,7 +17,9 @@ struct StepParser {
   const std::filesystem::path& source;
   std::string where;  // "step 3"
 
-  [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, where + ": " + problem); }
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw InputError(source, where + ": " + problem);
+  }
 
   glm::vec2 point(const Json& value, const char* what) const {
     if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
@@ -31,7 +33,8 @@ struct StepParser {
     return n;
   }
   std::string string(const Json& value, const char* what) const {
-    if (!value.is_string() || value.get<std::string>().empty()) fail(std::string(what) + " must be a non-empty string");
+    if (!value.is_string() || value.get<std::string>().empty())
+      fail(std::string(what) + " must be a non-empty string");
     return value.get<std::string>();
   }
   int button(const Json& object) const {

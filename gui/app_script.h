@@ -28,16 +28,29 @@ namespace angio {
 
 struct ScriptStep {
   enum class Kind {
-    move, click, doubleClick, drag, press, release, wheel, key, text, waitMs, waitLevel, screenshot, state, open
+    move,
+    click,
+    doubleClick,
+    drag,
+    press,
+    release,
+    wheel,
+    key,
+    text,
+    waitMs,
+    waitLevel,
+    screenshot,
+    state,
+    open
   };
   Kind kind = Kind::move;
   glm::vec2 at{0.f};  // move, click, wheel position; drag start
   glm::vec2 to{0.f};  // drag end
   int button = 0;
-  int steps = 10;     // drag: mouse moves between press and release
-  double value = 0;   // wait_ms, wheel delta
+  int steps = 10;    // drag: mouse moves between press and release
+  double value = 0;  // wait_ms, wheel delta
   Quality level = Quality::high;
-  std::string text;   // key name, typed text, output file
+  std::string text;  // key name, typed text, output file
 };
 
 // Throws InputError naming the file and the step (numbered from 1) for anything malformed.

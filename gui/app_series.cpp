@@ -20,7 +20,9 @@ void App::drawSeriesExport() {
                     folder = series_.folder](JobControl& control) {
     SeriesCallbacks callbacks;
     callbacks.cancel = &control.cancel;
-    callbacks.progress = [&control](int done, int total) { control.progress.store(double(done) / total); };
+    callbacks.progress = [&control](int done, int total) {
+      control.progress.store(double(done) / total);
+    };
     return exportRotationSeries(data_.volume, centerlines, base, spec, folder, callbacks);
   });
   message_ = "exporting a rotation series to " + series_.folder;

@@ -22,7 +22,8 @@ void App::startSession() {
     Document session = loadSession(last);
     commit(RecentFilesEdit{session.recentFiles});
     // Offered only when started without a volume (on the phantom) and it names something else.
-    if (isPhantomName(doc().dataset) && session.dataset != doc().dataset) offeredSession_ = std::move(session);
+    if (isPhantomName(doc().dataset) && session.dataset != doc().dataset)
+      offeredSession_ = std::move(session);
   } catch (const std::exception& problem) {
     message_ = problem.what();
   }
@@ -42,8 +43,7 @@ void App::applySession(const Document& session) {
   if (session.dataset == data_.name || session.dataset.empty()) return;
   if (isPhantomName(session.dataset))
     message_ = "the session's dataset is a " + session.dataset + "; kept " + data_.name;
-  else
-    openDataset(session.dataset);
+  else openDataset(session.dataset);
 }
 
 bool App::sectionHeader(const char* title) {

@@ -19,12 +19,14 @@ void App::applyTf(const TransferFunction& tf, const std::string& preset) {
 
 void App::undoTf() {
   if (tfPanel_.editor.gestureBefore) return;  // not in the middle of an edit
-  if (auto previous = tfTargets_.history().undo(editedTf())) commit(TfChange{tfTargets_.editing(), *previous, ""});
+  if (auto previous = tfTargets_.history().undo(editedTf()))
+    commit(TfChange{tfTargets_.editing(), *previous, ""});
 }
 
 void App::redoTf() {
   if (tfPanel_.editor.gestureBefore) return;
-  if (auto next = tfTargets_.history().redo(editedTf())) commit(TfChange{tfTargets_.editing(), *next, ""});
+  if (auto next = tfTargets_.history().redo(editedTf()))
+    commit(TfChange{tfTargets_.editing(), *next, ""});
 }
 
 void App::drawTfSection() {
@@ -44,7 +46,8 @@ void App::drawTfSection() {
   if (requests.committedBefore) tfTargets_.history().push(*requests.committedBefore);
   if (requests.edit) commit(*requests.edit);
   if (requests.save) saveEditedTf();
-  if (requests.switchTo) switchTfTarget(*requests.switchTo);  // last: the requests above are the old target's
+  if (requests.switchTo)
+    switchTfTarget(*requests.switchTo);  // last: the requests above are the old target's
 }
 
 void App::saveEditedTf() {

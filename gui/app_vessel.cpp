@@ -18,9 +18,7 @@ namespace angio {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm) {
   const glm::dvec3 offset = pointMm - view.centre;
@@ -149,7 +147,8 @@ void App::drawVesselSection() {
   info.error = vg.error;
   info.problem = vg.problem;
   info.presets = &presets_;
-  const VesselGlyphPanelResult result = drawVesselGlyphPanel(doc().vesselGlyph, vg.ui, info, widgetRects_);
+  const VesselGlyphPanelResult result =
+      drawVesselGlyphPanel(doc().vesselGlyph, vg.ui, info, widgetRects_);
   if (!result.message.empty()) message_ = result.message;
   if (result.edit) commit(*result.edit);
   if (result.loadCenterlines) loadVesselCenterlines({vg.ui.path, "", CenterlineLoad::From::panel});
@@ -171,9 +170,11 @@ void App::drawCenterlineOverlay() {
   std::vector<ImVec2> screen;
   for (const CenterlinePath& path : centerlines->paths) {
     screen.clear();
-    for (const CenterlinePoint& point : path.points) screen.push_back(dvrScreenOf(view, point.positionMm));
+    for (const CenterlinePoint& point : path.points)
+      screen.push_back(dvrScreenOf(view, point.positionMm));
     if (screen.size() >= 2)
-      draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 200), ImDrawFlags_None, 1.5f);
+      draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 200), ImDrawFlags_None,
+                        1.5f);
   }
   draw->PopClipRect();
 }

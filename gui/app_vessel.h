@@ -28,23 +28,23 @@ struct LoadedCenterlines {
 };
 
 struct VesselGlyphPanel {
-  VesselGlyphPanelUi ui;                 // the "Load centerlines..." field
+  VesselGlyphPanelUi ui;  // the "Load centerlines..." field
 
   // Loading (pollCenterlineLoad takes the result once the dataset is there to check it against).
   CenterlineLoad loading;
   BackgroundJob<LoadedCenterlines> load;
 
   // What was loaded.
-  std::optional<Centerlines> physical;   // as the file holds them (LPS mm)
-  std::string file;                      // where they came from
-  std::string warnings;                  // the loader's, one per line
-  std::string error;                     // the last load's error, shown in the panel
+  std::optional<Centerlines> physical;  // as the file holds them (LPS mm)
+  std::string file;                     // where they came from
+  std::string warnings;                 // the loader's, one per line
+  std::string error;                    // the last load's error, shown in the panel
 
   // Derived, rebuilt on change (UI thread).
-  std::optional<Centerlines> inVolume;   // physical mapped into the shown dataset's volume frame
-  std::string framedFor;                 // the dataset inVolume was mapped for
-  std::string problem;                   // why VG is not rendered although enabled
-  std::string hybridProblem;             // why the hybrid is not rendered although on
+  std::optional<Centerlines> inVolume;  // physical mapped into the shown dataset's volume frame
+  std::string framedFor;                // the dataset inVolume was mapped for
+  std::string problem;                  // why VG is not rendered although enabled
+  std::string hybridProblem;            // why the hybrid is not rendered although on
 };
 
 // Continuous pixel coordinates (x right, y down; pixel n spans [n, n + 1)) of a volume-frame

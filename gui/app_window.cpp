@@ -48,7 +48,8 @@ class Window {
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
-    gl_ = GlApi::load([](const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); });
+    gl_ =
+        GlApi::load([](const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); });
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
@@ -116,7 +117,8 @@ bool windowSystemAvailable() {
   return true;
 }
 
-int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options, RenderThreads& threads) {
+int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options,
+              RenderThreads& threads) {
   Window window(options);
   std::signal(SIGINT, requestClose);
   std::signal(SIGTERM, requestClose);
@@ -156,7 +158,8 @@ int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& option
     window.gl().clearFrame(width, height);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     previousFrameMs = Ms(Clock::now() - start).count();
-    if (closing && !options.screenshot.empty()) writeScreenshot(options.screenshot, window.gl(), width, height);
+    if (closing && !options.screenshot.empty())
+      writeScreenshot(options.screenshot, window.gl(), width, height);
     glfwSwapBuffers(window.handle());
     app.framePresented();
   }

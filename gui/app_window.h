@@ -9,7 +9,7 @@ namespace angio {
 
 struct WindowOptions {
   int width = 1400, height = 900;
-  double quitAfterSeconds = 0;     // > 0: close by itself (smoke tests under Xvfb)
+  double quitAfterSeconds = 0;       // > 0: close by itself (smoke tests under Xvfb)
   std::filesystem::path stateOut;    // App::report() as JSON when the window closes
   std::filesystem::path screenshot;  // the window's last frame, when it closes
 };
@@ -19,6 +19,7 @@ bool windowSystemAvailable();
 
 // Runs until the window is closed, SIGINT/SIGTERM arrive (both close it cleanly, writing the
 // state and screenshot) or quitAfterSeconds pass.
-int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options, RenderThreads& threads);
+int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& options,
+              RenderThreads& threads);
 
 }  // namespace angio

@@ -30,9 +30,8 @@ class BackgroundJob {
     stop();
     control_ = std::make_shared<JobControl>();
     started_ = std::chrono::steady_clock::now();
-    result_ = std::async(std::launch::async, [control = control_, work = std::move(work)] {
-      return work(*control);
-    });
+    result_ = std::async(std::launch::async,
+                         [control = control_, work = std::move(work)] { return work(*control); });
   }
 
   bool running() const { return result_.valid(); }

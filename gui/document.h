@@ -47,10 +47,10 @@ const char* cprColoringName(CprColoring coloring);
 struct CprState {
   bool shown = false;  // the CPR view beside the image
   CprMode mode = CprMode::straightened;
-  int path = -1;       // centerline path index, -1 = all paths
+  int path = -1;  // centerline path index, -1 = all paths
   CprColoring coloring = CprColoring::ctaLumen;
-  bool hybrid = false;       // the DVR+CPR hybrid (needs VesselGlyph on)
-  double transitionMm = 0;   // the hybrid's transition band, 0 = hard edge
+  bool hybrid = false;      // the DVR+CPR hybrid (needs VesselGlyph on)
+  double transitionMm = 0;  // the hybrid's transition band, 0 = hard edge
 
   friend bool operator==(const CprState&, const CprState&) = default;
 };
@@ -62,7 +62,7 @@ struct VesselGlyphState {
   bool enabled = false;             // VesselGlyph rendering on
   bool overlay = true;              // the projected centerlines over the image
   VesselGlyphSettings settings;
-  bool outsideRendered = false;     // the outside: rendered with the main TF, else clipped
+  bool outsideRendered = false;         // the outside: rendered with the main TF, else clipped
   TransferFunction focusTf, contextTf;  // no points: the presets below, loaded on first use
   std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";  // "" = edited
 
@@ -91,7 +91,6 @@ enum class TfTarget { main = 0, focus = 1, context = 2 };
 const char* tfTargetName(TfTarget target);  // "main", "focus", "context"
 const TransferFunction& tfOf(const Document& document, TfTarget target);
 const std::string& presetOf(const Document& document, TfTarget target);
-
 
 // The render parameters the document asks for (sampling left at its default: each level sets it).
 RenderParams renderParamsOf(const Document& document);

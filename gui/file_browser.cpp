@@ -17,11 +17,12 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kTitle = "Open volume";
-constexpr int kDicomProbeFiles = 8;   // files looked at per folder
+constexpr int kDicomProbeFiles = 8;            // files looked at per folder
 constexpr std::size_t kDicomProbeLimit = 400;  // folders beyond this many are not probed
 
 std::string lowered(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   return text;
 }
 
@@ -140,14 +141,16 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
       choose(typed);
     }  // a file, or a DICOM folder; a missing one fails in the loader, named
   }
-  ImGui::TextDisabled("volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder");
+  ImGui::TextDisabled(
+      "volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder");
 
   const float footer = ImGui::GetFrameHeightWithSpacing() * 2 + 4;
   ImGui::BeginChild("##entries", ImVec2(0, -footer), true);
   for (int n = 0; n < int(browser.entries.size()); ++n) {
     const BrowserEntry& entry = browser.entries[n];
-    const std::string label = entry.folder ? (entry.dicomSeries ? "[DICOM] " : "[dir]   ") + entry.name + "/"
-                                           : "        " + entry.name;
+    const std::string label = entry.folder
+                                  ? (entry.dicomSeries ? "[DICOM] " : "[dir]   ") + entry.name + "/"
+                                  : "        " + entry.name;
     if (ImGui::Selectable(label.c_str(), browser.selected == n, ImGuiSelectableFlags_AllowDoubleClick)) {
       browser.selected = n;
       browser.typedPath = entry.path.string();
@@ -164,8 +167,9 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
   ImGui::EndChild();
 
   if (!browser.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", browser.error.c_str());
-  const BrowserEntry* selected =
-      browser.selected >= 0 && browser.selected < int(browser.entries.size()) ? &browser.entries[browser.selected] : nullptr;
+  const BrowserEntry* selected = browser.selected >= 0 && browser.selected < int(browser.entries.size())
+                                     ? &browser.entries[browser.selected]
+                                     : nullptr;
   ImGui::BeginDisabled(!selected || (selected->folder && !selected->dicomSeries));
   if (ImGui::Button("Open")) choose(selected->path);
   ImGui::EndDisabled();

@@ -11,10 +11,10 @@
 namespace angio {
 
 struct BrowserEntry {
-  std::string name;             // file name, shown
+  std::string name;  // file name, shown
   std::filesystem::path path;
   bool folder = false;
-  bool dicomSeries = false;     // a folder holding DICOM slices
+  bool dicomSeries = false;  // a folder holding DICOM slices
 };
 
 // By case-insensitive extension: .mha .mhd .nrrd .nhdr .nii .nii.gz.
@@ -28,11 +28,11 @@ std::vector<BrowserEntry> listFolder(const std::filesystem::path& folder);
 struct FileBrowser {
   bool requestOpen = false;  // show() sets it; the modal opens on the next draw
   std::filesystem::path folder;
-  std::string typedPath;     // the path field: a folder to go to or a file to open
+  std::string typedPath;  // the path field: a folder to go to or a file to open
   std::vector<BrowserEntry> entries;
   int selected = -1;
   std::string error;
-  bool focusPath = false;    // give the path field the keyboard on the next draw
+  bool focusPath = false;  // give the path field the keyboard on the next draw
 
   void show(const std::filesystem::path& startFolder);
   void go(const std::filesystem::path& newFolder);  // lists it (error kept in `error`)

@@ -39,14 +39,26 @@ struct NamedKey {
   int key;
 };
 // Key names of the script, mapped to ImGuiKey (the headless key map is the identity).
-constexpr NamedKey kKeys[] = {
-    {"Tab", ImGuiKey_Tab},         {"Left", ImGuiKey_LeftArrow},  {"Right", ImGuiKey_RightArrow},
-    {"Up", ImGuiKey_UpArrow},      {"Down", ImGuiKey_DownArrow},  {"PageUp", ImGuiKey_PageUp},
-    {"PageDown", ImGuiKey_PageDown}, {"Home", ImGuiKey_Home},     {"End", ImGuiKey_End},
-    {"Delete", ImGuiKey_Delete},   {"Backspace", ImGuiKey_Backspace}, {"Space", ImGuiKey_Space},
-    {"Enter", ImGuiKey_Enter},     {"Escape", ImGuiKey_Escape},   {"A", ImGuiKey_A},
-    {"C", ImGuiKey_C},             {"V", ImGuiKey_V},             {"X", ImGuiKey_X},
-    {"Y", ImGuiKey_Y},             {"Z", ImGuiKey_Z}};
+constexpr NamedKey kKeys[] = {{"Tab", ImGuiKey_Tab},
+                              {"Left", ImGuiKey_LeftArrow},
+                              {"Right", ImGuiKey_RightArrow},
+                              {"Up", ImGuiKey_UpArrow},
+                              {"Down", ImGuiKey_DownArrow},
+                              {"PageUp", ImGuiKey_PageUp},
+                              {"PageDown", ImGuiKey_PageDown},
+                              {"Home", ImGuiKey_Home},
+                              {"End", ImGuiKey_End},
+                              {"Delete", ImGuiKey_Delete},
+                              {"Backspace", ImGuiKey_Backspace},
+                              {"Space", ImGuiKey_Space},
+                              {"Enter", ImGuiKey_Enter},
+                              {"Escape", ImGuiKey_Escape},
+                              {"A", ImGuiKey_A},
+                              {"C", ImGuiKey_C},
+                              {"V", ImGuiKey_V},
+                              {"X", ImGuiKey_X},
+                              {"Y", ImGuiKey_Y},
+                              {"Z", ImGuiKey_Z}};
 
 int keyOf(const std::string& name) {
   for (const NamedKey& named : kKeys)
@@ -64,14 +76,16 @@ void writeJson(const std::filesystem::path& path, const nlohmann::json& json) {
 
 class HeadlessSession {
  public:
-  HeadlessSession(LoadedDataset dataset, AppStart start, const HeadlessOptions& options, RenderThreads& threads)
+  HeadlessSession(LoadedDataset dataset, AppStart start, const HeadlessOptions& options,
+                  RenderThreads& threads)
       : options_(options), pixels_(std::size_t(options.width) * options.height * 4) {
     context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!context_) throw std::runtime_error("OSMesa: cannot create an OpenGL context");
     if (!OSMesaMakeCurrent(context_, pixels_.data(), GL_UNSIGNED_BYTE, options.width, options.height))
       throw std::runtime_error("OSMesa: cannot make the context current");
     OSMesaPixelStore(OSMESA_Y_UP, 0);  // row 0 of pixels_ is the top of the window
-    gl_ = GlApi::load([](const char* name) { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); });
+    gl_ = GlApi::load(
+        [](const char* name) { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); });
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -182,7 +196,8 @@ class HeadlessSession {
   }
 
   void waitLevel(Quality level) {
-    const auto deadline = Clock::now() + std::chrono::milliseconds(std::int64_t(options_.timeoutSeconds * 1000));
+    const auto deadline =
+        Clock::now() + std::chrono::milliseconds(std::int64_t(options_.timeoutSeconds * 1000));
     frame();
     while (!app_->settled(level)) {
       if (Clock::now() > deadline)
@@ -206,7 +221,8 @@ class HeadlessSession {
   void waitingFrame(Clock::time_point deadline) {
     const FramePacing pacing = app_->pacing();
     if (pacing != FramePacing::continuous) {
-      const auto tick = Clock::now() + std::chrono::milliseconds(pacing == FramePacing::progress ? 100 : 500);
+      const auto tick =
+          Clock::now() + std::chrono::milliseconds(pacing == FramePacing::progress ? 100 : 500);
       std::unique_lock lock(wakeMutex_);
       wakeCondition_.wait_until(lock, std::min(tick, deadline), [&] { return woken_; });
       woken_ = false;
@@ -272,7 +288,8 @@ class HeadlessSession {
 
 }  // namespace
 
-int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options, RenderThreads& threads) {
+int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options,
+                RenderThreads& threads) {
   HeadlessSession session(std::move(dataset), std::move(start), options, threads);
   session.run();
   return 0;

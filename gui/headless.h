@@ -14,11 +14,12 @@ namespace angio {
 struct HeadlessOptions {
   int width = 1280, height = 800;
   std::optional<std::vector<ScriptStep>> script;  // none: run until the high image is shown
-  std::filesystem::path screenshot;  // written at the end (PNG/TIFF/EXR by extension)
-  std::filesystem::path stateOut;    // App::report() as JSON at the end
-  double timeoutSeconds = 300;       // for each wait_level (and the no-script wait)
+  std::filesystem::path screenshot;               // written at the end (PNG/TIFF/EXR by extension)
+  std::filesystem::path stateOut;                 // App::report() as JSON at the end
+  double timeoutSeconds = 300;                    // for each wait_level (and the no-script wait)
 };
 
-int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options, RenderThreads& threads);
+int runHeadless(LoadedDataset dataset, AppStart start, const HeadlessOptions& options,
+                RenderThreads& threads);
 
 }  // namespace angio

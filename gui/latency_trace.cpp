@@ -11,9 +11,19 @@ using TimePoint = LatencyTrace::Clock::time_point;
 
 double msBetween(TimePoint from, TimePoint to) { return Ms(to - from).count(); }
 
-constexpr const char* kStageNames[] = {"input_to_request", "request_to_pickup", "worker_busy", "wake",
-                                       "pickup_to_render", "render", "publish", "publish_to_ui",
-                                       "upload", "present", "total", "cancel", "input_to_screen"};
+constexpr const char* kStageNames[] = {"input_to_request",
+                                       "request_to_pickup",
+                                       "worker_busy",
+                                       "wake",
+                                       "pickup_to_render",
+                                       "render",
+                                       "publish",
+                                       "publish_to_ui",
+                                       "upload",
+                                       "present",
+                                       "total",
+                                       "cancel",
+                                       "input_to_screen"};
 
 }  // namespace
 

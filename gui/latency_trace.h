@@ -77,7 +77,7 @@ class LatencyTrace {
     Clock::time_point seen, shown;
   };
 
-  std::deque<Input> inputs_;  // requests not on screen yet, oldest first
+  std::deque<Input> inputs_;     // requests not on screen yet, oldest first
   std::uint64_t lastInput_ = 0;  // newest request in inputs_ so far
   std::uint64_t seenSerial_ = 0;
   Clock::time_point seenAt_{};
@@ -86,8 +86,22 @@ class LatencyTrace {
   int superseded_ = 0;            // input-made requests that never got an image of their own
   std::array<int, kQualityLevels> firstLevels_{};  // level of each traced request's first frame
 
-  enum Stage { inputToRequest, requestToPickup, workerBusy, wake, pickupToRender, render, publish,
-               publishToUi, upload, present, total, cancel, inputToScreen, stageCount };
+  enum Stage {
+    inputToRequest,
+    requestToPickup,
+    workerBusy,
+    wake,
+    pickupToRender,
+    render,
+    publish,
+    publishToUi,
+    upload,
+    present,
+    total,
+    cancel,
+    inputToScreen,
+    stageCount
+  };
   std::array<LatencySamples, stageCount> stages_;
 };
 

@@ -44,16 +44,19 @@ void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, Widg
   const bool vesselGlyphOn = info.vesselGlyphEnabled || (cpr.hybrid && !hybridBefore);
   noteRect(rects, "cpr_hybrid");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("The projected CPR of the path above, colored as above, in the VesselGlyph "
-                      "focus's footprint of the image (thesis fig. 5.4)");
+    ImGui::SetTooltip(
+        "The projected CPR of the path above, colored as above, in the VesselGlyph "
+        "focus's footprint of the image (thesis fig. 5.4)");
   if (!cpr.hybrid) return;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(150);
   const double lo = 0, hi = kMaxTransitionMm;
   ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm");
   noteRect(rects, "cpr_transition");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Width of the band over which the CPR fades into the DVR (0: hard edge)");
-  if (!vesselGlyphOn) ImGui::TextColored(kWarningColor, "the hybrid needs VesselGlyph on (its focus is the cut)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Width of the band over which the CPR fades into the DVR (0: hard edge)");
+  if (!vesselGlyphOn)
+    ImGui::TextColored(kWarningColor, "the hybrid needs VesselGlyph on (its focus is the cut)");
   if (!info.hybridProblem.empty()) ImGui::TextColored(kErrorColor, "%s", info.hybridProblem.c_str());
 }
 

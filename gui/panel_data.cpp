@@ -14,7 +14,8 @@ namespace {
 void drawLoad(const DataPanelInfo& info, DataPanelRequests& requests, WidgetRects& rects) {
   if (info.loading) {
     char label[64];
-    std::snprintf(label, sizeof label, "loading %.0f%% (%.0f s)", 100 * info.loadProgress, info.loadSeconds);
+    std::snprintf(label, sizeof label, "loading %.0f%% (%.0f s)", 100 * info.loadProgress,
+                  info.loadSeconds);
     ImGui::ProgressBar(float(info.loadProgress), ImVec2(260, 0), label);
     ImGui::SameLine();
     ImGui::BeginDisabled(info.cancelRequested);
@@ -38,22 +39,26 @@ void drawDataset(const DataPanelInfo& info) {
     ImGui::Text("%d x %d x %d voxels, %.3g x %.3g x %.3g mm", v.dims.x, v.dims.y, v.dims.z, v.spacing.x,
                 v.spacing.y, v.spacing.z);
     ImGui::Text("axes i j k -> %c %c %c, origin %.1f %.1f %.1f mm (LPS)", lpsLetter(v.direction[0]),
-                lpsLetter(v.direction[1]), lpsLetter(v.direction[2]), v.origin.x, v.origin.y, v.origin.z);
+                lpsLetter(v.direction[1]), lpsLetter(v.direction[2]), v.origin.x, v.origin.y,
+                v.origin.z);
     if (ImGui::IsItemHovered()) {
       const glm::dmat3& d = v.direction;
-      ImGui::SetTooltip("direction (columns = i, j, k in LPS):\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f",
-                        d[0].x, d[1].x, d[2].x, d[0].y, d[1].y, d[2].y, d[0].z, d[1].z, d[2].z);
+      ImGui::SetTooltip(
+          "direction (columns = i, j, k in LPS):\n%6.3f %6.3f %6.3f\n%6.3f %6.3f %6.3f\n%6.3f %6.3f "
+          "%6.3f",
+          d[0].x, d[1].x, d[2].x, d[0].y, d[1].y, d[2].y, d[0].z, d[1].z, d[2].z);
     }
   }
   if (info.densities)
-    ImGui::Text("HU %.0f .. %.0f", huOfDensity(info.densities->minDensity), huOfDensity(info.densities->maxDensity));
-  else
-    ImGui::TextDisabled("HU range: counting...");
+    ImGui::Text("HU %.0f .. %.0f", huOfDensity(info.densities->minDensity),
+                huOfDensity(info.densities->maxDensity));
+  else ImGui::TextDisabled("HU range: counting...");
 }
 
 }  // namespace
 
-DataPanelRequests drawDataPanel(const Document& document, const DataPanelInfo& info, WidgetRects& rects) {
+DataPanelRequests drawDataPanel(const Document& document, const DataPanelInfo& info,
+                                WidgetRects& rects) {
   DataPanelRequests requests;
   requests.browse = ImGui::Button("Open...");
   noteRect(rects, "data_open");

@@ -31,7 +31,8 @@ void drawSeriesFormat(SeriesSpec& spec) {
   if (ImGui::RadioButton("TIFF 16-bit", tiff)) spec.format = "tif";
   ImGui::SameLine();
   ImGui::Checkbox("movie", &spec.movie);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Also write a movie through OpenCV: MP4 (mp4v), else AVI (MJPG)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Also write a movie through OpenCV: MP4 (mp4v), else AVI (MJPG)");
   if (!spec.movie) return;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
@@ -46,8 +47,9 @@ ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRect
   ImGui::SetNextItemWidth(260);
   ImGui::InputText("file##export", &ui.path);
   noteRect(rects, "export_path");
-  helpMarker("Format by extension: .png (8-bit), .tif (16-bit), .exr (float RGBA). A JSON sidecar "
-             "(FILE.json) records every parameter.");
+  helpMarker(
+      "Format by extension: .png (8-bit), .tif (16-bit), .exr (float RGBA). A JSON sidecar "
+      "(FILE.json) records every parameter.");
   const double isdMin = 0.1, isdMax = 5;
   ImGui::SetNextItemWidth(120);
   ImGui::SliderScalar("isd", ImGuiDataType_Double, &ui.isd, &isdMin, &isdMax, "%.2f");
@@ -74,7 +76,8 @@ ExportRequests drawSeriesExport(SeriesPanel& series, const JobInfo& job, WidgetR
   drawSeriesFormat(series.spec);
   if (job.running) {
     char label[64];
-    std::snprintf(label, sizeof label, "%.0f / %d views", job.progress * series.spec.count, series.spec.count);
+    std::snprintf(label, sizeof label, "%.0f / %d views", job.progress * series.spec.count,
+                  series.spec.count);
     ImGui::ProgressBar(float(job.progress), ImVec2(260, 0), label);
     ImGui::SameLine();
     ImGui::BeginDisabled(job.cancelRequested);

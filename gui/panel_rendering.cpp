@@ -44,7 +44,8 @@ void drawShading(Shading& shading) {
 }  // namespace
 
 std::optional<RenderingEdit> drawRenderingPanel(const Document& document) {
-  const RenderingEdit before{document.mode, document.shading, document.tf.mipWindow, document.tf.mipLevel};
+  const RenderingEdit before{document.mode, document.shading, document.tf.mipWindow,
+                             document.tf.mipLevel};
   RenderingEdit edit = before;
   bool mip = edit.mode == Compositing::mip;
   if (ImGui::Checkbox("MIP", &mip)) edit.mode = mip ? Compositing::mip : Compositing::dvr;

@@ -23,8 +23,9 @@ BannerChoice drawSessionBanner(const std::string& dataset, WidgetRects& rects) {
   ImGui::SetNextWindowPos(ImVec2(12, 12));
   ImGui::SetNextWindowBgAlpha(0.9f);
   ImGui::Begin("##lastsession", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing);
   if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();  // above the viewport, drawn after it
   ImGui::Text("Restore last session: %s", dataset.c_str());
   ImGui::SameLine();

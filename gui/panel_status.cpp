@@ -27,10 +27,12 @@ void drawStatusBar(const StatusInfo& info, float height) {
   ImGui::SameLine(0, 14);
   if (info.status.rendering) {
     char label[48];
-    std::snprintf(label, sizeof label, "%s %.0f ms", toString(*info.status.rendering), info.status.renderingMs);
+    std::snprintf(label, sizeof label, "%s %.0f ms", toString(*info.status.rendering),
+                  info.status.renderingMs);
     ImGui::ProgressBar(float(info.status.estimatedProgress()), ImVec2(150, 0), label);
   } else {
-    ImGui::ProgressBar(info.status.busy ? 0.f : 1.f, ImVec2(150, 0), info.status.busy ? "preparing" : "done");
+    ImGui::ProgressBar(info.status.busy ? 0.f : 1.f, ImVec2(150, 0),
+                       info.status.busy ? "preparing" : "done");
   }
   double samplesPerSecond = 0;
   for (const LevelTiming& t : info.status.levels)
@@ -41,7 +43,8 @@ void drawStatusBar(const StatusInfo& info, float height) {
   ImGui::Text("UI %.1f ms", info.uiFrameMs);
   if (!info.message.empty() || !info.status.error.empty()) {
     ImGui::SameLine(0, 14);
-    ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "%s", info.status.error.empty() ? info.message.c_str() : info.status.error.c_str());
+    ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "%s",
+                       info.status.error.empty() ? info.message.c_str() : info.status.error.c_str());
   }
   ImGui::End();
 }

@@ -17,7 +17,8 @@ void drawTargets(const TfPanelInfo& info, TfPanelRequests& requests, WidgetRects
     ImGui::SameLine();
     char label[32];
     std::snprintf(label, sizeof label, "%s##tftarget", tfTargetName(target));
-    if (ImGui::RadioButton(label, info.editing == target) && info.editing != target) requests.switchTo = target;
+    if (ImGui::RadioButton(label, info.editing == target) && info.editing != target)
+      requests.switchTo = target;
     noteRect(rects, std::string("vg_edit_") + tfTargetName(target));
   }
 }
@@ -30,7 +31,8 @@ void drawPresets(const Document& document, const TfPanelInfo& info, TfPanelReque
     for (const Preset& candidate : *info.presets) {
       if (!ImGui::Selectable(candidate.id.c_str(), candidate.id == preset)) continue;
       try {
-        requests.replace = TfChange{info.editing, loadPresetOrFile(candidate.file.string()), candidate.id};
+        requests.replace =
+            TfChange{info.editing, loadPresetOrFile(candidate.file.string()), candidate.id};
       } catch (const std::exception& error) {
         requests.message = error.what();
       }
@@ -67,12 +69,14 @@ void drawFile(TfPanelUi& ui, TfTarget editing, TfPanelRequests& requests, Widget
 
 }  // namespace
 
-TfPanelRequests drawTfPanel(const Document& document, TfPanelUi& ui, const TfPanelInfo& info, WidgetRects& rects) {
+TfPanelRequests drawTfPanel(const Document& document, TfPanelUi& ui, const TfPanelInfo& info,
+                            WidgetRects& rects) {
   TfPanelRequests requests;
   drawTargets(info, requests, rects);
   if (info.presets) drawPresets(document, info, requests);
   const std::vector<float> notCounted;
-  TfEdit edit = drawTfEditor(tfOf(document, info.editing), info.histogram ? *info.histogram : notCounted, ui.editor);
+  TfEdit edit = drawTfEditor(tfOf(document, info.editing), info.histogram ? *info.histogram : notCounted,
+                             ui.editor);
   requests.committedBefore = std::move(edit.committedBefore);
   if (edit.changed) requests.edit = TfChange{info.editing, std::move(edit.tf), ""};
   drawFile(ui, info.editing, requests, rects);

@@ -36,10 +36,11 @@ struct TfPanelRequests {
   std::optional<TfChange> edit;
   std::optional<TransferFunction> committedBefore;
   bool undo = false, redo = false;
-  bool save = false;     // the edited TF to ui.path
-  std::string message;   // what was loaded, or why not
+  bool save = false;    // the edited TF to ui.path
+  std::string message;  // what was loaded, or why not
 };
 
-TfPanelRequests drawTfPanel(const Document& document, TfPanelUi& ui, const TfPanelInfo& info, WidgetRects& rects);
+TfPanelRequests drawTfPanel(const Document& document, TfPanelUi& ui, const TfPanelInfo& info,
+                            WidgetRects& rects);
 
 }  // namespace angio

@@ -50,8 +50,8 @@ bool drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info, Widge
   if (info.loading) ImGui::TextDisabled("loading %s ...", info.loadingFile.c_str());
   if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
   if (info.physical)
-    ImGui::TextDisabled("%zu paths, %zu points: %s", info.physical->paths.size(), centerlinePointCount(*info.physical),
-                        info.file.c_str());
+    ImGui::TextDisabled("%zu paths, %zu points: %s", info.physical->paths.size(),
+                        centerlinePointCount(*info.physical), info.file.c_str());
   if (!info.warnings.empty()) ImGui::TextColored(kWarningColor, "%s", info.warnings.c_str());
   return load;
 }
@@ -63,7 +63,8 @@ void drawFocus(TubeRadius& focus, WidgetRects& rects) {
     focus = {RadiusMode::vesselFactor, 2.0, 0.0};
   noteRect(rects, "vg_focus_factor");
   ImGui::SameLine();
-  if (ImGui::RadioButton("mm##focus", focus.mode == RadiusMode::constant)) focus = {RadiusMode::constant, 5.0, 0.0};
+  if (ImGui::RadioButton("mm##focus", focus.mode == RadiusMode::constant))
+    focus = {RadiusMode::constant, 5.0, 0.0};
   noteRect(rects, "vg_focus_mm");
   if (focus.mode == RadiusMode::vesselFactor) {
     ImGui::SetNextItemWidth(180);

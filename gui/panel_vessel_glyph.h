@@ -20,10 +20,10 @@ struct VesselGlyphPanelUi {
 // What the panel shows of the app's centerline loading.
 struct VesselGlyphPanelInfo {
   bool loading = false;
-  std::string loadingFile;                 // while loading
-  const Centerlines* physical = nullptr;   // what was loaded (null: nothing)
-  std::string file, warnings, error;       // where from, the loader's warnings, the last error
-  std::string problem;                     // why VesselGlyph is not rendered although on
+  std::string loadingFile;                       // while loading
+  const Centerlines* physical = nullptr;         // what was loaded (null: nothing)
+  std::string file, warnings, error;             // where from, the loader's warnings, the last error
+  std::string problem;                           // why VesselGlyph is not rendered although on
   const std::vector<Preset>* presets = nullptr;  // for the region TF combos
 };
 

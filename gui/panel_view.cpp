@@ -39,7 +39,8 @@ void drawAxisAndAngle(ViewState& view) {
   for (std::size_t n = 0; n < std::size(kNamedViews); ++n) {
     if (n % 3) ImGui::SameLine();
     if (ImGui::Button(kNamedViews[n].label, ImVec2(90, 0))) view.angleDeg = kNamedViews[n].angleDeg;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%.0f deg)", kNamedViews[n].tooltip, kNamedViews[n].angleDeg);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s (%.0f deg)", kNamedViews[n].tooltip, kNamedViews[n].angleDeg);
   }
 }
 
@@ -51,7 +52,8 @@ void drawMotion(ViewState& view) {
   if (ImGui::SliderFloat("deg/s", &spin, -180, 180, "%.0f")) view.spinDegreesPerSecond = spin;
   float perPixel = float(view.degreesPerPixel);
   ImGui::SetNextItemWidth(130);
-  if (ImGui::SliderFloat("deg per pixel (drag)", &perPixel, 0.05f, 2.f, "%.2f")) view.degreesPerPixel = perPixel;
+  if (ImGui::SliderFloat("deg per pixel (drag)", &perPixel, 0.05f, 2.f, "%.2f"))
+    view.degreesPerPixel = perPixel;
   if (ImGui::Button("reset zoom/pan")) view.zoom = 1, view.panPx = glm::dvec2(0.0);
   ImGui::SameLine();
   ImGui::TextDisabled("zoom %.2fx (wheel), pan: right/middle drag", view.zoom);

@@ -27,15 +27,19 @@ constexpr int kVersion = 1;
 constexpr double kMaxTransitionMm = 100;
 
 Json cprJson(const CprState& cpr) {
-  return {{"shown", cpr.shown}, {"mode", toString(cpr.mode)}, {"path", cpr.path},
-          {"colouring", cprColoringName(cpr.coloring)}, {"hybrid", cpr.hybrid},
-          {"transition_mm", cpr.transitionMm}};
+  return {{"shown", cpr.shown},   {"mode", toString(cpr.mode)},
+          {"path", cpr.path},     {"colouring", cprColoringName(cpr.coloring)},
+          {"hybrid", cpr.hybrid}, {"transition_mm", cpr.transitionMm}};
 }
 
 Json vesselGlyphJson(const VesselGlyphState& vg) {
-  const auto tfOrNull = [](const TransferFunction& tf) { return tf.points.empty() ? Json(nullptr) : Json::parse(toJson(tf)); };
-  Json json = {{"centerlines", vg.centerlines}, {"centerlines_absolute", vg.centerlinesAbsolute},
-               {"enabled", vg.enabled}, {"overlay", vg.overlay}};
+  const auto tfOrNull = [](const TransferFunction& tf) {
+    return tf.points.empty() ? Json(nullptr) : Json::parse(toJson(tf));
+  };
+  Json json = {{"centerlines", vg.centerlines},
+               {"centerlines_absolute", vg.centerlinesAbsolute},
+               {"enabled", vg.enabled},
+               {"overlay", vg.overlay}};
   json.update(Json::parse(vesselGlyphSettingsJson(vg.settings).dump()));
   json["outside"] = vg.outsideRendered ? "main-tf" : "clip";
   json["focus_tf"] = tfOrNull(vg.focusTf);
@@ -46,14 +50,16 @@ Json vesselGlyphJson(const VesselGlyphState& vg) {
 }
 
 Json samplingJson(const Sampling& sampling) {
-  return {{"isd", sampling.isd}, {"osd", sampling.osd}, {"filter", toString(sampling.filter)},
+  return {{"isd", sampling.isd},
+          {"osd", sampling.osd},
+          {"filter", toString(sampling.filter)},
           {"ert", sampling.ert}};
 }
 
 // Reads one session file: every key optional (defaults stay), every present key checked.
 struct SessionReader {
   const fs::path& source;
-  std::string where = "";  // the keys' section in messages, e.g. "vessel_glyph.focus."
+  std::string where = "";       // the keys' section in messages, e.g. "vessel_glyph.focus."
   Json empty = Json::object();  // a missing section reads as this
 
   [[noreturn]] void fail(const std::string& problem) const { throw InputError(source, problem); }
@@ -128,8 +134,7 @@ struct SessionReader {
       s.slab.halfWidthMm = std::numeric_limits<double>::infinity();
     else if (c.contains("half_width_mm") && !c["half_width_mm"].is_number())
       fail(contextReader.where + "half_width_mm is not a number or \"inf\"");
-    else
-      s.slab.halfWidthMm = contextReader.number(c, "half_width_mm", 0, 1e5, s.slab.halfWidthMm);
+    else s.slab.halfWidthMm = contextReader.number(c, "half_width_mm", 0, 1e5, s.slab.halfWidthMm);
     s.contextTube = contextReader.in("tube").radius(contextReader.section(c, "tube"), s.contextTube);
     s.cleft = flag(v, "cleft", s.cleft);
     s.halfVessel = flag(v, "half_vessel", s.halfVessel);
@@ -145,7 +150,8 @@ struct SessionReader {
     vg.contextTf = tf(v, "context_tf", vg.contextTf);
     if (v.contains("focus_preset")) vg.focusPreset = text(v, "focus_preset");
     if (v.contains("context_preset")) vg.contextPreset = text(v, "context_preset");
-    if (vg.focusTf.points.empty() && vg.focusPreset.empty()) fail(where + "focus_tf is null and focus_preset empty");
+    if (vg.focusTf.points.empty() && vg.focusPreset.empty())
+      fail(where + "focus_tf is null and focus_preset empty");
     if (vg.contextTf.points.empty() && vg.contextPreset.empty())
       fail(where + "context_tf is null and context_preset empty");
     return vg;
@@ -169,7 +175,8 @@ struct SessionReader {
     }
     view.degreesPerPixel = number(v, "degrees_per_pixel", 1e-3, 100, view.degreesPerPixel);
     view.autoSpin = flag(v, "auto_spin", view.autoSpin);
-    view.spinDegreesPerSecond = number(v, "spin_degrees_per_second", -3600, 3600, view.spinDegreesPerSecond);
+    view.spinDegreesPerSecond =
+        number(v, "spin_degrees_per_second", -3600, 3600, view.spinDegreesPerSecond);
     return view;
   }
 
@@ -193,7 +200,8 @@ struct SessionReader {
       if (!mode) fail("cpr mode is not projected, stretched or straightened");
       cpr.mode = *mode;
     }
-    if (c.contains("path") && !c["path"].is_number_integer()) fail("cpr path is not a path index or -1 (all)");
+    if (c.contains("path") && !c["path"].is_number_integer())
+      fail("cpr path is not a path index or -1 (all)");
     cpr.path = int(number(c, "path", -1, 1e6, cpr.path));
     if (c.contains("colouring")) {
       const std::string coloring = text(c, "colouring");
@@ -240,7 +248,8 @@ struct SessionReader {
       if (!recent.is_array()) fail("recent_files is not a list");
       for (const Json& file : recent) {
         if (!file.is_string()) fail("recent_files holds something that is not a string");
-        if (session.recentFiles.size() < kMaxRecentFiles) session.recentFiles.push_back(file.get<std::string>());
+        if (session.recentFiles.size() < kMaxRecentFiles)
+          session.recentFiles.push_back(file.get<std::string>());
       }
     }
     return session;
@@ -252,7 +261,8 @@ struct SessionReader {
 std::string toJson(const Document& session) {
   const ViewState& v = session.view;
   Json levels = Json::object();
-  for (int q = 0; q < kQualityLevels; ++q) levels[toString(Quality(q))] = samplingJson(session.levels[q]);
+  for (int q = 0; q < kQualityLevels; ++q)
+    levels[toString(Quality(q))] = samplingJson(session.levels[q]);
   Json panels = Json::object();
   for (const auto& [name, open] : session.panelsOpen) panels[name] = open;
   const Json json = {
@@ -270,7 +280,8 @@ std::string toJson(const Document& session) {
       {"transfer_function", Json::parse(toJson(session.tf))},
       {"tf_preset", session.tfPreset},
       {"mode", session.mode == Compositing::mip ? "mip" : "dvr"},
-      {"shading", {{"enabled", session.shading.enabled}, {"ka", session.shading.ka}, {"kd", session.shading.kd}}},
+      {"shading",
+       {{"enabled", session.shading.enabled}, {"ka", session.shading.ka}, {"kd", session.shading.kd}}},
       {"levels", levels},
       {"cpr", cprJson(session.cpr)},
       {"vessel_glyph", vesselGlyphJson(session.vesselGlyph)},

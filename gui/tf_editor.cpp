@@ -132,9 +132,11 @@ void interactWithPlot(const PlotFrame& plot, TransferFunction& tf, TfEditorView&
     point.color = glm::vec3(evaluate(withoutModulators(tf), point.hu));
     tf.points.push_back(point);
     sortPoints(tf);
-    view.selected = int(std::find_if(tf.points.begin(), tf.points.end(), [&](const ControlPoint& p) {
-                          return p.hu == point.hu && p.opacity == point.opacity;
-                        }) - tf.points.begin());
+    view.selected = int(std::find_if(tf.points.begin(), tf.points.end(),
+                                     [&](const ControlPoint& p) {
+                                       return p.hu == point.hu && p.opacity == point.opacity;
+                                     }) -
+                        tf.points.begin());
     changed = true;
   } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     view.selected = under;
@@ -200,10 +202,11 @@ void drawModulators(TransferFunction& tf, TfEditorView& view, bool& changed) {
                           &scaleMin, &scaleMax, "x %.2f"))
     changed = true;
   ImGui::SetNextItemWidth(180);
-  if (ImGui::SliderScalar("HU shift", ImGuiDataType_Double, &tf.modulators.huShift, &shiftMin,
-                          &shiftMax, "%+.0f HU"))
+  if (ImGui::SliderScalar("HU shift", ImGuiDataType_Double, &tf.modulators.huShift, &shiftMin, &shiftMax,
+                          "%+.0f HU"))
     changed = true;
-  if (ImGui::SmallButton("reset modulators") && (tf.modulators.opacityScale != 1 || tf.modulators.huShift != 0)) {
+  if (ImGui::SmallButton("reset modulators") &&
+      (tf.modulators.opacityScale != 1 || tf.modulators.huShift != 0)) {
     tf.modulators = {};
     changed = true;
   }

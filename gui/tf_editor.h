@@ -21,12 +21,12 @@ struct TfEditorView {
   int dragging = -1;                   // index of the point being dragged
   // The TF before the edit gesture in progress (a drag, a slider held, a color being picked).
   std::optional<TransferFunction> gestureBefore;
-  ImVec2 plotMin, plotMax;             // where the plot was drawn last frame (screen)
+  ImVec2 plotMin, plotMax;  // where the plot was drawn last frame (screen)
 };
 
 struct TfEdit {
   TransferFunction tf;
-  bool changed = false;     // tf differs from the input
+  bool changed = false;  // tf differs from the input
   // Set when a gesture ended: the TF before it (one undo step).
   std::optional<TransferFunction> committedBefore;
 };
@@ -34,8 +34,7 @@ struct TfEdit {
 // log(1 + count) per density, scaled to [0, 1] over all densities; empty = not ready.
 std::vector<float> logHistogram(const DensityHistogram& histogram);
 
-TfEdit drawTfEditor(const TransferFunction& tf, const std::vector<float>& histogram,
-                    TfEditorView& view);
+TfEdit drawTfEditor(const TransferFunction& tf, const std::vector<float>& histogram, TfEditorView& view);
 
 // Undo/redo of TF edits: push the TF before each edit.
 class TfHistory {

@@ -40,8 +40,9 @@ void drawOrientation(ImDrawList* draw, const ViewState& view, ImVec2 imageMin, I
     const char text[2] = {letter, 0};
     const ImVec2 size = ImGui::CalcTextSize(text);
     const ImVec2 at(anchor.x + offset.x * size.x, anchor.y + offset.y * size.y);
-    const ImVec2 inside(std::clamp(at.x, min.x + margin, std::max(min.x + margin, max.x - size.x - margin)),
-                        std::clamp(at.y, min.y + captionRow, std::max(min.y + captionRow, max.y - size.y - margin)));
+    const ImVec2 inside(
+        std::clamp(at.x, min.x + margin, std::max(min.x + margin, max.x - size.x - margin)),
+        std::clamp(at.y, min.y + captionRow, std::max(min.y + captionRow, max.y - size.y - margin)));
     textWithShadow(draw, inside, color, text);
   };
   place(letters.right, ImVec2(visibleMax.x + 4, mid.y), ImVec2(0, -0.5f));
@@ -114,7 +115,8 @@ ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& sh
     zoomAboutCursor(view, centreOfViewport, io.MousePos, io.MouseWheel);
   if (ImGui::IsItemActive()) {
     // Grab semantics: dragging right carries the front of the patient to the right.
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) result.rotateDegrees = -io.MouseDelta.x * view.degreesPerPixel;
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
+      result.rotateDegrees = -io.MouseDelta.x * view.degreesPerPixel;
     if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
       view.panPx += glm::dvec2(io.MouseDelta.x, io.MouseDelta.y);
   }
@@ -131,12 +133,14 @@ ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& sh
   draw->AddRectFilled(min, max, IM_COL32(0, 0, 0, 255));
   const double fit = std::min(size.x / overlay.fitMm.x, size.y / overlay.fitMm.y) * kFitMargin;
   const double pixelsPerMm = fit * view.zoom;
-  const ImVec2 centre(centreOfViewport.x + float(view.panPx.x), centreOfViewport.y + float(view.panPx.y));
+  const ImVec2 centre(centreOfViewport.x + float(view.panPx.x),
+                      centreOfViewport.y + float(view.panPx.y));
   if (image && image->texture) {
     // The image centre is P0 whatever W and H (rendering model), so every level lines up.
     const float halfW = float(image->width * image->pixelMm * pixelsPerMm / 2);
     const float halfH = float(image->height * image->pixelMm * pixelsPerMm / 2);
-    const ImVec2 imageMin(centre.x - halfW, centre.y - halfH), imageMax(centre.x + halfW, centre.y + halfH);
+    const ImVec2 imageMin(centre.x - halfW, centre.y - halfH),
+        imageMax(centre.x + halfW, centre.y + halfH);
     draw->AddImage(image->texture, imageMin, imageMax);
     result.hasImage = true;
     result.imageMin = imageMin;

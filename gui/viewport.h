@@ -17,7 +17,7 @@ namespace angio {
 struct ViewportImage {
   ImTextureID texture = nullptr;
   int width = 0, height = 0;  // pixels
-  double pixelMm = 0;          // D
+  double pixelMm = 0;         // D
 };
 
 // What to draw around the image.
@@ -28,12 +28,12 @@ struct ViewportOverlay {
 };
 
 struct ViewportInteraction {
-  double rotateDegrees = 0;  // from a left drag this frame
+  double rotateDegrees = 0;                 // from a left drag this frame
   std::optional<ViewState> zoomedOrPanned;  // the view with this frame's zoom and pan, if changed
-  bool reset = false;        // double-click: zoom and pan were reset
-  ImVec2 min, max;           // the viewport's screen rectangle
-  bool hasImage = false;     // an image was drawn, at:
-  ImVec2 imageMin, imageMax; // its screen rectangle (may reach beyond the viewport)
+  bool reset = false;                       // double-click: zoom and pan were reset
+  ImVec2 min, max;                          // the viewport's screen rectangle
+  bool hasImage = false;                    // an image was drawn, at:
+  ImVec2 imageMin, imageMax;                // its screen rectangle (may reach beyond the viewport)
 };
 
 // The LPS letter a direction in the volume frame mostly points to (voxel axes i, j, k along +L,

@@ -72,8 +72,9 @@ struct SessionEdit {
   friend bool operator==(const SessionEdit&, const SessionEdit&) = default;
 };
 
-using Edit = std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
-                          CenterlineFileEdit, DatasetOpened, RecentFilesEdit, PanelOpenEdit, SessionEdit>;
+using Edit =
+    std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
+                 CenterlineFileEdit, DatasetOpened, RecentFilesEdit, PanelOpenEdit, SessionEdit>;
 
 class Workstation {
  public:

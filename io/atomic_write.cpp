@@ -19,8 +19,8 @@ std::filesystem::path temporaryName(const std::filesystem::path& target) {
   const auto dot = file.find('.', 1);
   const std::string stem = dot == std::string::npos ? file : file.substr(0, dot);
   const std::string extension = dot == std::string::npos ? "" : file.substr(dot);
-  return target.parent_path() / (stem + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                 std::to_string(counter++) + extension);
+  return target.parent_path() /
+         (stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + extension);
 }
 
 }  // namespace

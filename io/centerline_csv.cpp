@@ -72,8 +72,8 @@ double parseNumber(std::string_view field, const fs::path& source, int line) {
   if (!field.empty() && *first == '+') ++first;
   const auto [end, error] = std::from_chars(first, last, value);
   if (error != std::errc() || end != last || field.empty()) {
-    throw InputError(source, "line " + std::to_string(line) + ": '" + std::string(field) +
-                                 "' is not a number");
+    throw InputError(source,
+                     "line " + std::to_string(line) + ": '" + std::string(field) + "' is not a number");
   }
   return value;
 }
@@ -85,8 +85,8 @@ void checkHeader(std::string_view header, const fs::path& source, int line) {
     columns += field;
   }
   if (columns != kHeader) {
-    throw InputError(source, "line " + std::to_string(line) + ": expected the header '" +
-                                 std::string(kHeader) + "'");
+    throw InputError(
+        source, "line " + std::to_string(line) + ": expected the header '" + std::string(kHeader) + "'");
   }
 }
 
@@ -118,8 +118,8 @@ Centerlines parseCenterlinesCsv(const std::string& text, const fs::path& source,
     const auto [line, row] = lines[n];
     const std::vector<std::string_view> fields = splitFields(row);
     if (fields.size() != 5) {
-      throw InputError(source, "line " + std::to_string(line) + ": " +
-                                   std::to_string(fields.size()) + " fields, expected 5");
+      throw InputError(source, "line " + std::to_string(line) + ": " + std::to_string(fields.size()) +
+                                   " fields, expected 5");
     }
     if (fields[0].empty()) throw InputError(source, "line " + std::to_string(line) + ": no path id");
     auto found = pathOfId.find(fields[0]);
@@ -127,11 +127,9 @@ Centerlines parseCenterlinesCsv(const std::string& text, const fs::path& source,
       found = pathOfId.emplace(std::string(fields[0]), centerlines.paths.size()).first;
       centerlines.paths.push_back({std::string(fields[0]), {}});
     }
-    const glm::dvec3 position{parseNumber(fields[1], source, line),
-                              parseNumber(fields[2], source, line),
+    const glm::dvec3 position{parseNumber(fields[1], source, line), parseNumber(fields[2], source, line),
                               parseNumber(fields[3], source, line)};
-    centerlines.paths[found->second].points.push_back(
-        {position, parseNumber(fields[4], source, line)});
+    centerlines.paths[found->second].points.push_back({position, parseNumber(fields[4], source, line)});
   }
   checkLoadedCenterlines(centerlines, source, options);
   return centerlines;

@@ -65,9 +65,8 @@ std::optional<std::vector<double>> radiusValues(const Json& markup, std::size_t 
     const auto values = measurement.find("controlPointValues");
     if (values == measurement.end() || !values->is_array()) continue;
     if (values->size() != controlPoints) {
-      throw InputError(source, where + ": Radius measurement has " +
-                                   std::to_string(values->size()) + " values for " +
-                                   std::to_string(controlPoints) + " control points");
+      throw InputError(source, where + ": Radius measurement has " + std::to_string(values->size()) +
+                                   " values for " + std::to_string(controlPoints) + " control points");
     }
     std::vector<double> radii;
     for (std::size_t n = 0; n < values->size(); ++n) {
@@ -138,7 +137,8 @@ Centerlines parseCenterlinesMarkups(const std::string& text, const fs::path& sou
   centerlines.source = source.string();
   for (std::size_t index = 0; index < markups->size(); ++index) {
     const Json& markup = (*markups)[index];
-    if (!markup.is_object()) throw InputError(source, "markup " + std::to_string(index) + " is not an object");
+    if (!markup.is_object())
+      throw InputError(source, "markup " + std::to_string(index) + " is not an object");
     const std::string type = stringOr(markup, "type", "");
     if (type == "Curve" || type == "Line") {
       centerlines.paths.push_back(readCurve(markup, index, source, options));

@@ -106,8 +106,7 @@ Encoding fileEncoding(const pugi::xml_node& root, const fs::path& source) {
   return encoding;
 }
 
-AppendedData appendedData(const pugi::xml_node& root, const SplitFile& split,
-                          const fs::path& source) {
+AppendedData appendedData(const pugi::xml_node& root, const SplitFile& split, const fs::path& source) {
   const pugi::xml_node element = root.child("AppendedData");
   if (!element || !split.appended) return {};
   const std::string encoding = attribute(element, "encoding", "raw");
@@ -241,9 +240,9 @@ std::string readUncompressed(ByteStream& in, const Encoding& encoding, std::size
 
 void inflateBlock(const std::string& compressed, char* out, std::size_t outBytes) {
   uLongf produced = uLongf(outBytes);
-  const int status = uncompress(reinterpret_cast<Bytef*>(out), &produced,
-                                reinterpret_cast<const Bytef*>(compressed.data()),
-                                uLong(compressed.size()));
+  const int status =
+      uncompress(reinterpret_cast<Bytef*>(out), &produced,
+                 reinterpret_cast<const Bytef*>(compressed.data()), uLong(compressed.size()));
   if (status != Z_OK || produced != outBytes) {
     throw ArrayProblem("corrupt zlib block (" + std::string(zError(status)) + ")");
   }
@@ -472,9 +471,8 @@ std::vector<std::size_t> readLineEnds(const pugi::xml_node& lines, std::size_t c
   double previous = 0;
   for (std::size_t c = 0; c < cells; ++c) {
     if (!(offsets[c] >= previous) || offsets[c] != std::floor(offsets[c]) || offsets[c] > 1e15) {
-      throw InputError(context.source, "Lines offsets: bad offset " +
-                                           formatNumber(offsets[c]) + " of cell " +
-                                           std::to_string(c));
+      throw InputError(context.source, "Lines offsets: bad offset " + formatNumber(offsets[c]) +
+                                           " of cell " + std::to_string(c));
     }
     ends[c] = std::size_t(offsets[c]);
     previous = offsets[c];
@@ -494,8 +492,7 @@ void readPiece(const pugi::xml_node& piece, const ArrayContext& context, Centerl
   const std::vector<std::size_t> ends = readLineEnds(lines, cells, context);
   const pugi::xml_node connectivityArray = namedArray(lines, "connectivity");
   if (!connectivityArray) throw InputError(context.source, "<Lines> has no \"connectivity\" DataArray");
-  const std::vector<double> connectivity =
-      readDataArray(connectivityArray, ends.back(), 1, context);
+  const std::vector<double> connectivity = readDataArray(connectivityArray, ends.back(), 1, context);
 
   std::size_t begin = 0;
   for (std::size_t cell = 0; cell < cells; ++cell) {
@@ -504,9 +501,9 @@ void readPiece(const pugi::xml_node& piece, const ArrayContext& context, Centerl
     for (std::size_t n = begin; n < ends[cell]; ++n) {
       const double index = connectivity[n];
       if (!(index >= 0 && index < double(pointCount)) || index != std::floor(index)) {
-        throw InputError(context.source, "Lines connectivity: point index " +
-                                             formatNumber(index) + " out of range (" +
-                                             std::to_string(pointCount) + " points)");
+        throw InputError(context.source, "Lines connectivity: point index " + formatNumber(index) +
+                                             " out of range (" + std::to_string(pointCount) +
+                                             " points)");
       }
       path.points.push_back({points[std::size_t(index)], radii[std::size_t(index)]});
     }

@@ -58,12 +58,9 @@ std::vector<std::uint16_t> toRgb16(const Image& image) {
 
 EncodedPixels encode(const Image& image, ExportFormat format) {
   switch (format) {
-    case ExportFormat::png8:
-      return {3, OIIO::TypeDesc::UINT8, toRgb8(image)};
-    case ExportFormat::tiff16:
-      return {3, OIIO::TypeDesc::UINT16, asBytes(toRgb16(image))};
-    case ExportFormat::exrFloat:
-      break;
+    case ExportFormat::png8: return {3, OIIO::TypeDesc::UINT8, toRgb8(image)};
+    case ExportFormat::tiff16: return {3, OIIO::TypeDesc::UINT16, asBytes(toRgb16(image))};
+    case ExportFormat::exrFloat: break;
   }
   // Linear C and A as rendered (C is already premultiplied by A, as EXR expects).
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
@@ -110,8 +107,7 @@ void checkWritable(const Image& image, const fs::path& path) {
 void writeWithOiio(const fs::path& file, const fs::path& target, const OIIO::ImageSpec& spec,
                    const EncodedPixels& pixels) {
   auto output = OIIO::ImageOutput::create(file.string());
-  if (!output)
-    throw InputError(target, "cannot create an image writer: " + oneLine(OIIO::geterror()));
+  if (!output) throw InputError(target, "cannot create an image writer: " + oneLine(OIIO::geterror()));
   if (!output->open(file.string(), spec))
     throw InputError(target, "cannot write: " + oneLine(output->geterror()));
   const bool written = output->write_image(pixels.type, pixels.bytes.data());

@@ -49,8 +49,8 @@ double requireInRange(const Json& value, double lo, double hi, const fs::path& s
                       const std::string& what) {
   const double number = requireNumber(value, source, what);
   if (number < lo || number > hi) {
-    throw InputError(source, what + " " + formatNumber(number) + " outside [" + formatNumber(lo) +
-                                 ", " + formatNumber(hi) + "]");
+    throw InputError(source, what + " " + formatNumber(number) + " outside [" + formatNumber(lo) + ", " +
+                                 formatNumber(hi) + "]");
   }
   return number;
 }
@@ -67,8 +67,8 @@ ControlPoint parsePoint(const Json& point, int number, const fs::path& source) {
   const std::string where = "point " + std::to_string(number);
   if (!point.is_object()) throw InputError(source, where + " is not an object");
   ControlPoint parsed;
-  parsed.hu = requireInRange(requireKey(point, "hu", source, where), kMinHu, kMaxHu, source,
-                             where + ": hu");
+  parsed.hu =
+      requireInRange(requireKey(point, "hu", source, where), kMinHu, kMaxHu, source, where + ": hu");
   const Json& color = requireKey(point, "color", source, where);
   if (!color.is_array() || color.size() != 3)
     throw InputError(source, where + ": color is not an array of 3 numbers");
@@ -76,8 +76,8 @@ ControlPoint parsePoint(const Json& point, int number, const fs::path& source) {
     parsed.color[c] =
         float(requireInRange(color[c], 0, 1, source, where + ": color[" + std::to_string(c) + "]"));
   }
-  parsed.opacity = requireInRange(requireKey(point, "opacity", source, where), 0, 1, source,
-                                  where + ": opacity");
+  parsed.opacity =
+      requireInRange(requireKey(point, "opacity", source, where), 0, 1, source, where + ": opacity");
   return parsed;
 }
 
@@ -111,8 +111,7 @@ Json parseJsonText(const std::string& text, const fs::path& source) {
     const auto reasonStart = message.find(": ");
     const std::string reason =
         reasonStart == std::string::npos ? message : message.substr(reasonStart + 2);
-    throw InputError(source,
-                     "not valid JSON at byte " + std::to_string(error.byte) + ": " + reason);
+    throw InputError(source, "not valid JSON at byte " + std::to_string(error.byte) + ": " + reason);
   } catch (const Json::exception& error) {
     // E.g. out_of_range 406 "number overflow parsing '1e999'", which carries no position.
     const std::string message = error.what();
@@ -152,8 +151,7 @@ fs::path presetDirectory() {
     return fromEnvironment;
   }
   std::error_code error;
-  const fs::path besideExecutable =
-      fs::read_symlink("/proc/self/exe", error).parent_path() / "presets";
+  const fs::path besideExecutable = fs::read_symlink("/proc/self/exe", error).parent_path() / "presets";
   if (!error && fs::is_directory(besideExecutable, error)) return besideExecutable;
   return ANGIORAY_PRESET_DIR;
 }
@@ -168,8 +166,7 @@ std::string presetIdList(const std::vector<Preset>& presets) {
 
 TransferFunction parseTransferFunction(const std::string& text, const fs::path& source) {
   const Json json = parseJsonText(text, source);
-  if (!json.is_object())
-    throw InputError(source, "not a transfer function (expected a JSON object)");
+  if (!json.is_object()) throw InputError(source, "not a transfer function (expected a JSON object)");
 
   TransferFunction tf;
   tf.name = source.stem().string();

@@ -9,12 +9,16 @@ using Json = nlohmann::ordered_json;
 namespace {
 
 Json radiusJson(const TubeRadius& radius) {
-  return {{"radius_mode", radiusModeName(radius.mode)}, {"radius", radius.value}, {"margin_mm", radius.marginMm}};
+  return {{"radius_mode", radiusModeName(radius.mode)},
+          {"radius", radius.value},
+          {"margin_mm", radius.marginMm}};
 }
 
 }  // namespace
 
-const char* radiusModeName(RadiusMode mode) { return mode == RadiusMode::vesselFactor ? "factor" : "mm"; }
+const char* radiusModeName(RadiusMode mode) {
+  return mode == RadiusMode::vesselFactor ? "factor" : "mm";
+}
 
 std::optional<RadiusMode> parseRadiusMode(const std::string& name) {
   if (name == "factor") return RadiusMode::vesselFactor;
@@ -39,7 +43,8 @@ std::optional<ContextShape> parseContextShape(const std::string& name) {
 }
 
 Json vesselGlyphSettingsJson(const VesselGlyphSettings& s) {
-  Json context = {{"shape", contextShapeName(s.context)}, {"front_mm", s.slab.frontMm}, {"back_mm", s.slab.backMm}};
+  Json context = {
+      {"shape", contextShapeName(s.context)}, {"front_mm", s.slab.frontMm}, {"back_mm", s.slab.backMm}};
   if (std::isinf(s.slab.halfWidthMm)) context["half_width_mm"] = "inf";
   else context["half_width_mm"] = s.slab.halfWidthMm;
   context["tube"] = radiusJson(s.contextTube);

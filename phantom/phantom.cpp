@@ -204,8 +204,8 @@ std::uint64_t mix64(std::uint64_t z) {  // splitmix64 finaliser
 // Approximately standard normal: the sum of four 16-bit uniforms (variance 4/12) rescaled.
 float gaussianNoise(std::uint64_t seedKey, std::uint64_t voxelIndex) {
   const std::uint64_t h = mix64(seedKey ^ (voxelIndex * 0x9e3779b97f4a7c15ull));
-  const double sum = double(h & 0xffff) + double((h >> 16) & 0xffff) + double((h >> 32) & 0xffff) +
-                     double(h >> 48);
+  const double sum =
+      double(h & 0xffff) + double((h >> 16) & 0xffff) + double((h >> 32) & 0xffff) + double(h >> 48);
   return float((sum / 65535.0 - 2.0) * 1.7320508075688772);
 }
 
@@ -237,8 +237,8 @@ struct PhantomRasteriser {
   }
 
   // Skin, fat, muscle (and in the torso, muscle wall then viscera) by depth below the outline.
-  float tissueHu(const std::vector<BodySection>& sections,
-                 const std::vector<const FootPart*>& feetHere, glm::dvec3 p) const {
+  float tissueHu(const std::vector<BodySection>& sections, const std::vector<const FootPart*>& feetHere,
+                 glm::dvec3 p) const {
     double sd = 1e30, fat = 0, wall = 0;
     for (const BodySection& s : sections) {
       const double d = ellipseSignedDistance(glm::dvec2(p) - s.centre, s.radii);
@@ -331,8 +331,7 @@ Volume makePhantomVolume(glm::ivec3 dims) {
   volume.dims = dims;
   volume.spacing = spacing;
   // Voxel centres sit in the middle of their cells; x, y centred on the table axis like a scanner.
-  volume.origin =
-      glm::dvec3(-kBoxSizeMm.x / 2, -kBoxSizeMm.y / 2, kPhysicalZOffsetMm) + spacing / 2.0;
+  volume.origin = glm::dvec3(-kBoxSizeMm.x / 2, -kBoxSizeMm.y / 2, kPhysicalZOffsetMm) + spacing / 2.0;
   volume.direction = glm::dmat3(1.0);
   volume.voxels.resize(volume.voxelCount());
   return volume;
@@ -347,8 +346,7 @@ std::vector<CenterlinePath> toPhysical(std::vector<CenterlinePath> paths) {
 
 }  // namespace
 
-Phantom generatePhantom(const PhantomOptions& options,
-                        const std::function<void(double)>& progress) {
+Phantom generatePhantom(const PhantomOptions& options, const std::function<void(double)>& progress) {
   const glm::ivec3 dims = options.dims;
   if (dims.x < 1 || dims.y < 1 || dims.z < 1) {
     throw std::invalid_argument("phantom dimensions must be positive");

@@ -30,7 +30,6 @@ struct Phantom {
 };
 
 // progress(fraction in [0, 1]) is called from the generating thread now and then; may be empty.
-Phantom generatePhantom(const PhantomOptions& options,
-                        const std::function<void(double)>& progress = {});
+Phantom generatePhantom(const PhantomOptions& options, const std::function<void(double)>& progress = {});
 
 }  // namespace angio

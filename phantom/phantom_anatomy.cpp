@@ -87,9 +87,7 @@ constexpr ShellMaterial kKidney{7.0, 190, 110};
 constexpr double kDiscHu = 90;
 
 Capsule capsule(glm::dvec3 a, glm::dvec3 b, double ra, double rb) { return {a, b, ra, rb}; }
-Ellipsoid ellipsoid(glm::dvec3 centre, glm::dvec3 radii) {
-  return {centre, glm::dmat3(1.0), radii};
-}
+Ellipsoid ellipsoid(glm::dvec3 centre, glm::dvec3 radii) { return {centre, glm::dmat3(1.0), radii}; }
 
 void addShelled(std::vector<ShelledPart>& bones, Solid solid, const ShellMaterial& material) {
   bones.push_back({std::move(solid), material.shellMm, material.shellHu, material.coreHu});
@@ -199,15 +197,14 @@ void addArteries(Anatomy& anatomy) {
     for (std::size_t n = 0; n + 1 < branch.points.size(); ++n) {
       const CurvePoint& a = branch.points[n];
       const CurvePoint& c = branch.points[n + 1];
-      anatomy.lumen.push_back({capsule(a.position, c.position, a.radius, c.radius),
-                               lumenHu(startDistance[b] + lengths[n])});
+      anatomy.lumen.push_back(
+          {capsule(a.position, c.position, a.radius, c.radius), lumenHu(startDistance[b] + lengths[n])});
     }
   }
   // The aorta goes on above the box, so it does not end in a visible cap at the top slice.
   const CurvePoint& top = tree.branches.front().points.front();
   anatomy.lumen.push_back(
-      {capsule(top.position, top.position + glm::dvec3(0, 0, 60), top.radius, top.radius),
-       lumenHu(0)});
+      {capsule(top.position, top.position + glm::dvec3(0, 0, 60), top.radius, top.radius), lumenHu(0)});
   for (const Plaque& plaque : tree.plaques) {
     anatomy.plaques.push_back(
         {capsule(plaque.centre, plaque.centre, plaque.radiusMm, plaque.radiusMm), plaque.hu});

@@ -59,7 +59,7 @@ struct Anatomy {
   std::vector<ShelledPart> shelled;   // bones and kidneys, over the soft parts
   std::vector<FilledPart> lumen;      // contrast-filled arteries, over the bones
   std::vector<FilledPart> plaques;    // calcium, over the lumen
-  std::vector<CenterlinePath> paths;     // ground-truth centerlines in the anatomy frame
+  std::vector<CenterlinePath> paths;  // ground-truth centerlines in the anatomy frame
 };
 
 Anatomy buildAnatomy();

@@ -67,8 +67,8 @@ std::vector<CurvePoint> mirrored(std::vector<CurvePoint> knots, double side) {
 BranchSpec aorta() {
   // Anterior-left of the lumbar spine, bifurcating at L4.
   BranchSpec spec = branch("aorta", -1,
-                           {knot(14, 6, 1195, 10.5), knot(14, 5, 1150, 10.0),
-                            knot(13, 3, 1100, 9.3), knot(12, 4, 1058, 8.6)});
+                           {knot(14, 6, 1195, 10.5), knot(14, 5, 1150, 10.0), knot(13, 3, 1100, 9.3),
+                            knot(12, 4, 1058, 8.6)});
   spec.plaques = {{0.25, 40, 3.0, 1300}, {0.6, 200, 2.5, 1450}, {0.9, 300, 3.5, 1200}};
   return spec;
 }
@@ -76,22 +76,19 @@ BranchSpec aorta() {
 // Common iliac -> external iliac (tortuous) -> common and superficial femoral -> popliteal. The
 // femoral passes behind the femur (adductor hiatus) into the popliteal fossa.
 BranchSpec iliacToPopliteal(double side, int parent) {
-  std::vector<CurvePoint> knots =
-      mirrored({knot(12, 4, 1058, 5.6), knot(32, 8, 1025, 5.4), knot(47, 14, 993, 5.1),
-                knot(60, 6, 962, 4.9), knot(74, -14, 932, 4.7), knot(85, -34, 906, 4.6),
-                knot(88, -38, 880, 4.5), knot(85, -27, 800, 4.3), knot(81, -8, 700, 4.0),
-                knot(74, 12, 630, 3.8), knot(76, 64, 585, 3.7), knot(89, 82, 540, 3.6),
-                knot(92, 89, 490, 3.4), knot(93, 86, 432, 3.2)},
-               side);
+  std::vector<CurvePoint> knots = mirrored(
+      {knot(12, 4, 1058, 5.6), knot(32, 8, 1025, 5.4), knot(47, 14, 993, 5.1), knot(60, 6, 962, 4.9),
+       knot(74, -14, 932, 4.7), knot(85, -34, 906, 4.6), knot(88, -38, 880, 4.5),
+       knot(85, -27, 800, 4.3), knot(81, -8, 700, 4.0), knot(74, 12, 630, 3.8), knot(76, 64, 585, 3.7),
+       knot(89, 82, 540, 3.6), knot(92, 89, 490, 3.4), knot(93, 86, 432, 3.2)},
+      side);
   const bool left = side > 0;
   BranchSpec spec = branch(sideName(side) + "-iliac-femoral-popliteal", parent, knots);
   spec.wiggles.push_back({985, 915, left ? 3.0 : 5.0, 40});  // external iliac
   if (left) {
     spec.stenoses.push_back({700, 18, 4, 0.4});  // superficial femoral, mid-thigh
-    spec.plaques = {{0.04, 90, 2.0, 1350},
-                    {0.15, 250, 1.8, 1250},
-                    {0.55, 45, 1.6, 1400},
-                    {0.8, 160, 1.4, 1300}};
+    spec.plaques = {
+        {0.04, 90, 2.0, 1350}, {0.15, 250, 1.8, 1250}, {0.55, 45, 1.6, 1400}, {0.8, 160, 1.4, 1300}};
   } else {
     spec.wiggles.push_back({830, 730, 4.0, 30});  // a tortuous superficial femoral too
     spec.plaques = {{0.06, 270, 2.0, 1300}, {0.3, 120, 1.8, 1450}, {0.65, 300, 1.5, 1250}};

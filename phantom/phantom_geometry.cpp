@@ -107,8 +107,7 @@ std::vector<CurvePoint> catmullRom(const std::vector<CurvePoint>& knots, int sam
     const glm::dvec3 p[4] = {knot(span - 1), knot(span), knot(span + 1), knot(span + 2)};
     for (int s = 0; s < samplesPerSpan; ++s) {
       const double u = double(s) / samplesPerSpan;
-      curve.push_back(
-          {catmullRomPoint(p, u), glm::mix(knots[span].radius, knots[span + 1].radius, u)});
+      curve.push_back({catmullRomPoint(p, u), glm::mix(knots[span].radius, knots[span + 1].radius, u)});
     }
   }
   curve.push_back(knots.back());

@@ -23,8 +23,9 @@ double FrameRenderer::structureMiB() const {
   return (tiles_->minDensity.size() * 4 * sizeof(std::uint16_t) + visible) / 1048576.0;
 }
 
-Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene, const RenderParams& params,
-                            const RenderControl& control, FastRenderStats* stats) {
+Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
+                            const RenderParams& params, const RenderControl& control,
+                            FastRenderStats* stats) {
   const ViewGeometry view = makeViewGeometry(volume_, params);
   if (scene->hasRegions()) scene->buildRegions(view, regions_);
   const RegionTables tables = scene->tables(scene->hasRegions() ? &regions_ : nullptr);

@@ -30,12 +30,11 @@ CprDisplay hybridCprDisplay(const VesselGlyphRecipe& vesselGlyph, const HybridCp
 }
 
 HybridCprStep::HybridCprStep(const Volume& volume, const Centerlines& centerlines,
-                             const VesselGlyphRecipe& vesselGlyph, const HybridCprRecipe& hybrid, Warn warn)
-    : volume_(volume),
-      selected_(hybridPaths(centerlines, hybrid.path)),
+                             const VesselGlyphRecipe& vesselGlyph, const HybridCprRecipe& hybrid,
+                             Warn warn)
+    : volume_(volume), selected_(hybridPaths(centerlines, hybrid.path)),
       allPaths_(selected_.paths.size() == centerlines.paths.size()),
-      display_(hybridCprDisplay(vesselGlyph, hybrid)),
-      transitionMm_(hybrid.transitionMm),
+      display_(hybridCprDisplay(vesselGlyph, hybrid)), transitionMm_(hybrid.transitionMm),
       warn_(std::move(warn)) {
   if (!allPaths_) selectedRegions_ = std::make_unique<RayRegionBuilder>(selected_, vesselGlyph.settings);
 }

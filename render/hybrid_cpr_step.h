@@ -28,8 +28,8 @@ class HybridCprStep {
   using Warn = std::function<void(const std::string&)>;
   // `volume` must outlive the step; `centerlines` are in its volume frame (all the VesselGlyph
   // paths). Throws InputError naming centerlines.source for a path selection that names no path.
-  HybridCprStep(const Volume& volume, const Centerlines& centerlines, const VesselGlyphRecipe& vesselGlyph,
-                const HybridCprRecipe& hybrid, Warn warn = {});
+  HybridCprStep(const Volume& volume, const Centerlines& centerlines,
+                const VesselGlyphRecipe& vesselGlyph, const HybridCprRecipe& hybrid, Warn warn = {});
 
   // `dvr`: the VesselGlyph DVR of `view`, rendered with `regions` (those of all paths). Safe to
   // call from one thread at a time or several (they take turns). Throws InputError as layoutCpr
@@ -41,7 +41,7 @@ class HybridCprStep {
   Centerlines selected_;
   bool allPaths_ = true;
   std::unique_ptr<RayRegionBuilder> selectedRegions_;  // set when only some paths are selected
-  RayRegions scratch_;                                  // their regions (buffers reused)
+  RayRegions scratch_;                                 // their regions (buffers reused)
   CprDisplay display_;
   double transitionMm_ = 0;
   Warn warn_;

@@ -2,7 +2,8 @@
 
 namespace angio {
 
-std::shared_ptr<const PreparedScene> PreparedScene::prepare(const Volume& volume, const Centerlines& centerlines,
+std::shared_ptr<const PreparedScene> PreparedScene::prepare(const Volume& volume,
+                                                            const Centerlines& centerlines,
                                                             const RenderRecipe& recipe,
                                                             const PreparedScene* previous, Warn warn) {
   std::shared_ptr<PreparedScene> scene(new PreparedScene(volume, recipe));
@@ -20,17 +21,20 @@ void PreparedScene::prepareVesselGlyph(const Centerlines& centerlines, const Pre
   if (outsideRendered_) outside_ = buildTable(*vg.outsideTf);
 
   const auto& lent = previous ? previous->regions_ : nullptr;
-  if (lent && lent->builder.settings() == vg.settings && lent->centerlines == centerlines) regions_ = lent;
+  if (lent && lent->builder.settings() == vg.settings && lent->centerlines == centerlines)
+    regions_ = lent;
   else regions_ = std::make_shared<GuardedRegions>(centerlines, vg.settings);
 
   if (!recipe_.hybrid) return;
   const auto& hybrid = previous ? previous->hybrid_ : nullptr;
-  if (hybrid && hybrid->vesselGlyph == vg && hybrid->hybrid == *recipe_.hybrid && hybrid->centerlines == centerlines) {
+  if (hybrid && hybrid->vesselGlyph == vg && hybrid->hybrid == *recipe_.hybrid &&
+      hybrid->centerlines == centerlines) {
     hybrid_ = hybrid;
     return;
   }
-  hybrid_ = std::shared_ptr<Hybrid>(new Hybrid{centerlines, vg, *recipe_.hybrid,
-                                               HybridCprStep(volume_, centerlines, vg, *recipe_.hybrid, std::move(warn))});
+  hybrid_ = std::shared_ptr<Hybrid>(
+      new Hybrid{centerlines, vg, *recipe_.hybrid,
+                 HybridCprStep(volume_, centerlines, vg, *recipe_.hybrid, std::move(warn))});
 }
 
 RegionTables PreparedScene::tables(const RayRegions* regions) const {

@@ -33,7 +33,8 @@ class PreparedScene {
   // hybrid step where the centerlines and the settings they were made from are the same, so a TF
   // edit does not rebuild the tubes. Throws InputError for a hybrid path selection that names no
   // path, and what RayRegionBuilder throws for unusable settings.
-  static std::shared_ptr<const PreparedScene> prepare(const Volume& volume, const Centerlines& centerlines,
+  static std::shared_ptr<const PreparedScene> prepare(const Volume& volume,
+                                                      const Centerlines& centerlines,
                                                       const RenderRecipe& recipe,
                                                       const PreparedScene* previous = nullptr,
                                                       Warn warn = {});

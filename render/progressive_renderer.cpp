@@ -40,10 +40,7 @@ double ProgressiveStatus::estimatedProgress() const {
 
 ProgressiveRenderer::ProgressiveRenderer(const Volume& volume, RenderThreads& threads,
                                          ProgressiveCallbacks callbacks)
-    : volume_(volume),
-      threads_(threads),
-      callbacks_(std::move(callbacks)),
-      frames_(volume),
+    : volume_(volume), threads_(threads), callbacks_(std::move(callbacks)), frames_(volume),
       worker_([this] { workerLoop(); }) {}
 
 ProgressiveRenderer::~ProgressiveRenderer() {
@@ -117,9 +114,8 @@ bool ProgressiveRenderer::waitForLevel(std::uint64_t id, Quality level,
   const auto reached = [&] {
     return latest_ && latest_->request == id && int(latest_->level) >= int(level);
   };
-  published_.wait_for(lock, timeout, [&] {
-    return reached() || status_.request != id || !status_.busy;
-  });
+  published_.wait_for(lock, timeout,
+                      [&] { return reached() || status_.request != id || !status_.busy; });
   return reached();
 }
 
@@ -170,8 +166,7 @@ int ProgressiveRenderer::firstLevelToRender(const Job& job) {
   if (!latest_ || latest_->request >= job.id) return 0;
   const ProgressiveRequest& r = job.request;
   const int shown = int(latest_->level);
-  const bool same = sameView(latest_->params, r.params) &&
-                    latest_->params.sampling == r.levels[shown] &&
+  const bool same = sameView(latest_->params, r.params) && latest_->params.sampling == r.levels[shown] &&
                     latest_->scene == r.scene;
   if (!same) return 0;
   auto relabelled = std::make_shared<ProgressiveFrame>(*latest_);

@@ -46,8 +46,8 @@ struct ProgressiveRequest {
   // What to render. A different scene object = a TF, region or hybrid change (scenes are
   // immutable: a change makes a new one).
   std::shared_ptr<const PreparedScene> scene;
-  RenderParams params;                   // the view; sampling is replaced by each level's
-  bool interactive = false;              // dragging or spinning: fast only
+  RenderParams params;       // the view; sampling is replaced by each level's
+  bool interactive = false;  // dragging or spinning: fast only
   LevelSamplings levels = defaultLevelSamplings();
 
   // The scene compares as an object, the rest by value.
@@ -69,7 +69,7 @@ struct RequestTimeline {
   TimePoint pickedUp;    // the worker took it
   TimePoint cancelSeen;  // the render this request interrupted returned (none interrupted: unset)
   TimePoint renderStart, renderEnd;  // this frame's level, in renderFast (with regions, finish)
-  TimePoint published;   // 8-bit image and mipmaps made, latestFrame() returns the frame
+  TimePoint published;               // 8-bit image and mipmaps made, latestFrame() returns the frame
 };
 
 // One finished level of one request.
@@ -77,9 +77,9 @@ struct ProgressiveFrame {
   std::uint64_t request = 0;  // the id request() returned
   std::uint64_t serial = 0;   // grows with every published frame
   Quality level = Quality::fast;
-  RenderParams params;                 // as rendered, with the level's sampling
-  std::shared_ptr<const PreparedScene> scene;  // the request's
-  std::shared_ptr<const Image> image;  // linear RGBA
+  RenderParams params;                          // as rendered, with the level's sampling
+  std::shared_ptr<const PreparedScene> scene;   // the request's
+  std::shared_ptr<const Image> image;           // linear RGBA
   std::shared_ptr<const DisplayImage> display;  // ProgressiveCallbacks::makeDisplay's (null: none)
   double renderMs = 0;
   std::uint64_t samples = 0;
@@ -94,15 +94,15 @@ struct LevelTiming {
 };
 
 struct ProgressiveStatus {
-  std::uint64_t request = 0;          // the newest request's id
-  bool busy = false;                  // the worker has something to do for it
-  std::optional<Quality> rendering;   // the level being rendered right now
-  double renderingMs = 0;             // how long that level has been running
-  double expectedMs = 0;              // that level's last duration (0 = not known yet)
-  int rowsDone = 0, rows = 0;         // image rows of the running level finished / in all
+  std::uint64_t request = 0;                       // the newest request's id
+  bool busy = false;                               // the worker has something to do for it
+  std::optional<Quality> rendering;                // the level being rendered right now
+  double renderingMs = 0;                          // how long that level has been running
+  double expectedMs = 0;                           // that level's last duration (0 = not known yet)
+  int rowsDone = 0, rows = 0;                      // image rows of the running level finished / in all
   std::array<LevelTiming, kQualityLevels> levels;  // of the newest request
-  double lastInterruptMs = -1;        // request() -> interrupted render returned, last time
-  std::string error;                  // a render that threw (e.g. out of memory), else empty
+  double lastInterruptMs = -1;                     // request() -> interrupted render returned, last time
+  std::string error;  // a render that threw (e.g. out of memory), else empty
 
   // Progress of the running level: its finished rows (rows render in parallel, in any order).
   double estimatedProgress() const;
@@ -166,10 +166,10 @@ class ProgressiveRenderer {
   ProgressiveCallbacks callbacks_;
 
   mutable std::mutex mutex_;
-  std::condition_variable wake_;                // worker: a request or quit
-  mutable std::condition_variable published_;   // waiters: a frame, or the worker went idle
+  std::condition_variable wake_;               // worker: a request or quit
+  mutable std::condition_variable published_;  // waiters: a frame, or the worker went idle
   std::optional<Job> pending_;
-  std::optional<Job> current_;                  // the job the worker is running
+  std::optional<Job> current_;  // the job the worker is running
   std::uint64_t nextId_ = 0;
   std::uint64_t nextSerial_ = 0;
   bool quit_ = false;

@@ -38,7 +38,8 @@ Json vesselGlyphJson(const VesselGlyphRecipe& vg) {
 }
 
 Json hybridJson(const HybridCprRecipe& hybrid) {
-  Json json = {{"path", hybrid.path}, {"transition_mm", hybrid.transitionMm},
+  Json json = {{"path", hybrid.path},
+               {"transition_mm", hybrid.transitionMm},
                {"display", hybrid.grey ? "grey" : "tf"}};
   if (hybrid.grey) json["window"] = hybrid.grey->window, json["level"] = hybrid.grey->level;
   return json;
@@ -72,7 +73,8 @@ struct Reader {
     return value.get<std::string>();
   }
   template <class Parse>
-  auto choice(const Json& object, const std::string& key, Parse parse, const std::string& where = "") const {
+  auto choice(const Json& object, const std::string& key, Parse parse,
+              const std::string& where = "") const {
     const std::string value = text(object, key, where);
     const auto parsed = parse(value);
     if (!parsed) throw InputError(source, "\"" + where + key + "\" has unknown value '" + value + "'");
@@ -103,8 +105,8 @@ void readContext(const Reader& r, const Json& json, VesselGlyphSettings& s) {
   s.slab.frontMm = r.number(json, "front_mm", where);
   s.slab.backMm = r.number(json, "back_mm", where);
   const Json& width = r.at(json, "half_width_mm", where);
-  s.slab.halfWidthMm = width == "inf" ? std::numeric_limits<double>::infinity()
-                                      : r.number(json, "half_width_mm", where);
+  s.slab.halfWidthMm =
+      width == "inf" ? std::numeric_limits<double>::infinity() : r.number(json, "half_width_mm", where);
   s.contextTube = readRadius(r, r.at(json, "tube", where), where + "tube.");
 }
 
@@ -133,8 +135,10 @@ HybridCprRecipe readHybrid(const Reader& r, const Json& json) {
   hybrid.transitionMm = r.number(json, "transition_mm", where);
   if (hybrid.transitionMm < 0) throw InputError(r.source, "\"hybrid_cpr.transition_mm\" is negative");
   const std::string display = r.text(json, "display", where);
-  if (display == "grey") hybrid.grey = WindowLevel{r.number(json, "window", where), r.number(json, "level", where)};
-  else if (display != "tf") throw InputError(r.source, "\"hybrid_cpr.display\" has unknown value '" + display + "'");
+  if (display == "grey")
+    hybrid.grey = WindowLevel{r.number(json, "window", where), r.number(json, "level", where)};
+  else if (display != "tf")
+    throw InputError(r.source, "\"hybrid_cpr.display\" has unknown value '" + display + "'");
   return hybrid;
 }
 
@@ -219,8 +223,11 @@ std::string renderSidecarJson(const RenderRecipe& s) {
       {"quality", s.quality ? Json(toString(*s.quality)) : Json(nullptr)},
       {"raycaster", s.raycaster == Raycaster::reference ? "reference" : "fast"},
       {"view", {{"axis", toString(p.axis)}, {"angle_deg", p.angleDeg}}},
-      {"sampling", {{"isd", p.sampling.isd}, {"osd", p.sampling.osd},
-                    {"filter", toString(p.sampling.filter)}, {"ert", p.sampling.ert}}},
+      {"sampling",
+       {{"isd", p.sampling.isd},
+        {"osd", p.sampling.osd},
+        {"filter", toString(p.sampling.filter)},
+        {"ert", p.sampling.ert}}},
       {"shading", {{"enabled", p.shading.enabled}, {"ka", p.shading.ka}, {"kd", p.shading.kd}}},
       {"compositing", p.compositing == Compositing::mip ? "mip" : "dvr"},
       {"mip", {{"window", p.mip.window}, {"level", p.mip.level}}},
@@ -259,7 +266,8 @@ RenderRecipe parseRenderSidecar(const std::string& text, const fs::path& source)
   s.raycaster = raycaster == "reference" ? Raycaster::reference : Raycaster::fast;
   s.params = readParams(r, json);
   s.tf = r.tf(json, "tf");
-  if (!r.at(json, "vessel_glyph", "").is_null()) s.vesselGlyph = readVesselGlyph(r, json["vessel_glyph"]);
+  if (!r.at(json, "vessel_glyph", "").is_null())
+    s.vesselGlyph = readVesselGlyph(r, json["vessel_glyph"]);
   if (!r.at(json, "hybrid_cpr", "").is_null()) {
     if (!s.vesselGlyph) throw InputError(source, "\"hybrid_cpr\" needs \"vessel_glyph\"");
     s.hybrid = readHybrid(r, json["hybrid_cpr"]);
@@ -269,7 +277,9 @@ RenderRecipe parseRenderSidecar(const std::string& text, const fs::path& source)
 
 RenderRecipe loadRenderSidecar(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, fs::exists(file) ? "cannot read the render sidecar" : "no such render sidecar");
+  if (!in)
+    throw InputError(file,
+                     fs::exists(file) ? "cannot read the render sidecar" : "no such render sidecar");
   std::ostringstream text;
   text << in.rdbuf();
   return parseRenderSidecar(text.str(), file);

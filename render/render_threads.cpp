@@ -46,7 +46,8 @@ RenderThreads::RenderThreads() {
   std::thread([&] {  // a throw-away thread: lowering it is harmless if raising fails
     restorable = setpriority(PRIO_PROCESS, thisThread(), lowered) == 0 &&
                  setpriority(PRIO_PROCESS, thisThread(), fastNice_) == 0;
-  }).join();
+  })
+      .join();
   if (restorable) backgroundNice_ = lowered;
   foreground_ = std::make_unique<PriorityArena>(fastNice_);
   background_ = std::make_unique<PriorityArena>(backgroundNice_);

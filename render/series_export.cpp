@@ -28,7 +28,11 @@ class MovieWriter {
  public:
   MovieWriter(const fs::path& folder, const std::string& prefix, double fps, int width, int height)
       : size_(width, height) {
-    struct Choice { const char* extension; int fourcc; const char* note; };
+    struct Choice {
+      const char* extension;
+      int fourcc;
+      const char* note;
+    };
     const Choice choices[] = {{".mp4", cv::VideoWriter::fourcc('m', 'p', '4', 'v'), "MP4 (mp4v)"},
                               {".avi", cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), "AVI (MJPG)"}};
     for (const Choice& choice : choices) {
@@ -76,7 +80,8 @@ std::string numbered(const SeriesSpec& spec, int index) {
 }
 
 void checkSpec(const SeriesSpec& spec, const fs::path& folder) {
-  if (spec.count < 1 || spec.count > 100000) throw InputError(folder, "the number of views must be 1 .. 100000");
+  if (spec.count < 1 || spec.count > 100000)
+    throw InputError(folder, "the number of views must be 1 .. 100000");
   if (!std::isfinite(spec.startDeg) || !std::isfinite(spec.arcDeg) || std::abs(spec.arcDeg) > 360)
     throw InputError(folder, "the arc must be within -360 .. 360 degrees");
   if (spec.format != "png" && spec.format != "tif")
@@ -103,7 +108,8 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
   checkSpec(spec, folder);
   std::error_code error;
   fs::create_directories(folder, error);
-  if (error || !fs::is_directory(folder)) throw InputError(folder, "cannot create the folder" + (error ? ": " + error.message() : ""));
+  if (error || !fs::is_directory(folder))
+    throw InputError(folder, "cannot create the folder" + (error ? ": " + error.message() : ""));
   const auto cancelled = [&] { return callbacks.cancel && callbacks.cancel->load(); };
 
   // One scene and one frame renderer for every view: the tables, tubes and slice tiles are shared.
@@ -126,7 +132,9 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
     const fs::path file = folder / numbered(spec, n);
     writeImageAndSidecar(image, file, sidecar);
     result.images.push_back(file);
-    if (spec.movie && !movie) movie = std::make_unique<MovieWriter>(folder, spec.prefix, spec.movieFps, image.width, image.height);
+    if (spec.movie && !movie)
+      movie =
+          std::make_unique<MovieWriter>(folder, spec.prefix, spec.movieFps, image.width, image.height);
     if (movie && movie->open()) movie->add(image);
     if (callbacks.progress) callbacks.progress(n + 1, spec.count);
   }
@@ -138,8 +146,9 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
     result.movieNote = "no movie: no views were rendered";
   }
   char summary[512];
-  std::snprintf(summary, sizeof summary, "%s %zu of %d views to %s%s%s", result.cancelled ? "cancelled after" : "exported",
-                result.images.size(), spec.count, folder.string().c_str(), result.movie.empty() ? "" : " + ",
+  std::snprintf(summary, sizeof summary, "%s %zu of %d views to %s%s%s",
+                result.cancelled ? "cancelled after" : "exported", result.images.size(), spec.count,
+                folder.string().c_str(), result.movie.empty() ? "" : " + ",
                 result.movie.empty() ? "" : result.movie.filename().string().c_str());
   result.summary = summary;
   return result;

@@ -17,9 +17,9 @@ namespace angio {
 
 struct SeriesSpec {
   double startDeg = 0;
-  double arcDeg = 360;   // a full turn leaves out the end (it is the start again)
-  int count = 36;        // views, >= 1
-  std::string format = "png";  // "png" (8-bit) or "tif" (16-bit)
+  double arcDeg = 360;          // a full turn leaves out the end (it is the start again)
+  int count = 36;               // views, >= 1
+  std::string format = "png";   // "png" (8-bit) or "tif" (16-bit)
   std::string prefix = "view";  // files prefix-000.png, prefix-001.png, ...
   bool movie = false;
   double movieFps = 12;
@@ -31,7 +31,7 @@ std::vector<double> seriesAngles(double startDeg, double arcDeg, int count);
 
 struct SeriesCallbacks {
   std::function<void(int done, int total)> progress;  // after each view
-  const std::atomic<bool>* cancel = nullptr;           // set: stops within one image row
+  const std::atomic<bool>* cancel = nullptr;          // set: stops within one image row
 };
 
 struct SeriesResult {
@@ -39,7 +39,7 @@ struct SeriesResult {
   std::filesystem::path movie;                // empty if none was written
   std::string movieNote;                      // codec used, or why there is no movie
   bool cancelled = false;
-  std::string summary;                        // one line for the status bar
+  std::string summary;  // one line for the status bar
 };
 
 // Writes into `folder` (created if missing). `base` gives everything but the angle (its sampling

@@ -102,8 +102,8 @@ DepthSpan RoundConeIntersector::intersect(glm::dvec3 origin) const {
                                           : ball(cone_.centre1, cone_.radius1);
   }
   const glm::dvec3 w = origin - cone_.centre0;
-  const DepthSpan frustum = frustum_.span(glm::dot(w, frustum_.axis), glm::dot(w, direction_),
-                                          glm::dot(w, w), dz_, quadA_);
+  const DepthSpan frustum =
+      frustum_.span(glm::dot(w, frustum_.axis), glm::dot(w, direction_), glm::dot(w, w), dz_, quadA_);
   return hull(hull(ball(cone_.centre0, cone_.radius0), ball(cone_.centre1, cone_.radius1)), frustum);
 }
 
@@ -154,8 +154,8 @@ DepthRayRoundCone::Row DepthRayRoundCone::row(double v) const {
     }
   };
   constexpr double kSlack = 1e-9;  // keep grazing rows in: the bounds only limit the work
-  requireAtMost(axis.y + tan * upDown, dv0 + k0 * upDown + kSlack);   // disc bottom <= v
-  requireAtMost(-axis.y + tan * upDown, -dv0 + k0 * upDown + kSlack); // disc top >= v
+  requireAtMost(axis.y + tan * upDown, dv0 + k0 * upDown + kSlack);    // disc bottom <= v
+  requireAtMost(-axis.y + tan * upDown, -dv0 + k0 * upDown + kSlack);  // disc top >= v
   if (zLo > zHi) return row;
   const auto hExtent = [&](double z, double sign) {
     return cone_.centre0.x + z * axis.x + sign * (k0 - z * tan) * sideways;

@@ -18,7 +18,7 @@ namespace angio {
 struct RoundCone {
   glm::dvec3 centre0{0.0};  // mm
   glm::dvec3 centre1{0.0};
-  double radius0 = 0;       // mm, >= 0
+  double radius0 = 0;  // mm, >= 0
   double radius1 = 0;
 };
 
@@ -92,8 +92,7 @@ class DepthRayRoundCone {
 
  private:
   DepthSpan frustumSpan(const Row& row, double h) const;
-  void addFrustumSpansOpeningUp(const Row& row, double h0, double dh, int count,
-                                DepthSpan* out) const;
+  void addFrustumSpansOpeningUp(const Row& row, double h0, double dh, int count, DepthSpan* out) const;
 
   RoundCone cone_;
   bool withEndBall_ = true;

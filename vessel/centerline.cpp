@@ -15,14 +15,12 @@ std::string countOf(std::size_t count, const char* singular, const char* plural)
   return std::to_string(count) + " " + (count == 1 ? singular : plural);
 }
 
-bool isFinite(glm::dvec3 v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool isFinite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Continuous voxel index of a point given in `frame`.
 glm::dvec3 voxelIndexOf(const Volume& volume, CenterlineFrame frame, glm::dvec3 positionMm) {
   return frame == CenterlineFrame::physical ? physicalToIndex(volume, positionMm)
-                                             : positionMm / volume.spacing;
+                                            : positionMm / volume.spacing;
 }
 
 bool insideVolume(const Volume& volume, glm::dvec3 index) {
@@ -33,8 +31,8 @@ bool insideVolume(const Volume& volume, glm::dvec3 index) {
 
 // The point at arc length s (0 <= s <= total), given the path's cumulative arc lengths.
 // `segment` is a cursor that only moves forward, so a sweep over increasing s is linear.
-CenterlinePoint pointAtArcLength(const CenterlinePath& path, const std::vector<double>& arc,
-                                 double s, std::size_t& segment) {
+CenterlinePoint pointAtArcLength(const CenterlinePath& path, const std::vector<double>& arc, double s,
+                                 std::size_t& segment) {
   const std::size_t last = path.points.size() - 1;
   while (segment + 1 < last && arc[segment + 1] < s) ++segment;
   const CenterlinePoint& a = path.points[segment];
@@ -155,12 +153,10 @@ std::vector<BoxMm> pathBounds(const Centerlines& centerlines) {
   return boxes;
 }
 
-std::size_t sharedPrefixLength(const CenterlinePath& a, const CenterlinePath& b,
-                               double toleranceMm) {
+std::size_t sharedPrefixLength(const CenterlinePath& a, const CenterlinePath& b, double toleranceMm) {
   const std::size_t count = std::min(a.points.size(), b.points.size());
   std::size_t n = 0;
-  while (n < count &&
-         glm::distance(a.points[n].positionMm, b.points[n].positionMm) <= toleranceMm) {
+  while (n < count && glm::distance(a.points[n].positionMm, b.points[n].positionMm) <= toleranceMm) {
     ++n;
   }
   return n;
@@ -175,8 +171,7 @@ std::vector<CenterlineIssue> validateCenterlines(const Centerlines& centerlines)
   return issues;
 }
 
-std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines,
-                                               const Volume& volume) {
+std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines, const Volume& volume) {
   std::vector<CenterlineIssue> issues;
   for (const CenterlinePath& path : centerlines.paths) {
     std::size_t outside = 0;
@@ -184,10 +179,10 @@ std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines,
       outside += !insideVolume(volume, voxelIndexOf(volume, centerlines.frame, point.positionMm));
     }
     if (outside == 0) continue;
-    issues.push_back({IssueSeverity::warning,
-                      quoted(path) + ": " + std::to_string(outside) + " of " +
-                          countOf(path.points.size(), "point lies", "points lie") +
-                          " outside the volume"});
+    issues.push_back(
+        {IssueSeverity::warning, quoted(path) + ": " + std::to_string(outside) + " of " +
+                                     countOf(path.points.size(), "point lies", "points lie") +
+                                     " outside the volume"});
   }
   return issues;
 }

@@ -99,8 +99,7 @@ std::vector<CenterlineIssue> validateCenterlines(const Centerlines& centerlines)
 
 // Warnings for paths with points whose nearest voxel lies outside the volume, naming the path and
 // how many points. Works in either frame.
-std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines,
-                                               const Volume& volume);
+std::vector<CenterlineIssue> checkInsideVolume(const Centerlines& centerlines, const Volume& volume);
 
 bool hasError(const std::vector<CenterlineIssue>& issues);
 

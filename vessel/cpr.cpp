@@ -17,8 +17,7 @@ std::string rowMeaning(CprMode mode) {
     case CprMode::stretched:
       return "centerline length orthogonal to the image's horizontal, (row + 0.5) * mm_per_pixel "
              "from the path start (isometric: lengths along the drawn centerline are true)";
-    case CprMode::straightened:
-      return "arc length from the path start: s = (row + 0.5) * mm_per_pixel";
+    case CprMode::straightened: return "arc length from the path start: s = (row + 0.5) * mm_per_pixel";
   }
   return "";
 }
@@ -54,8 +53,8 @@ ViewGeometry cprView(const Volume& volume, Axis axis, double angleDeg, double pi
   return makeViewGeometry(volume, params);
 }
 
-Cpr computeCpr(const Volume& volume, const std::vector<CenterlinePath>& paths,
-               const ViewGeometry& view, const CprSettings& settings, CprResampler resampler) {
+Cpr computeCpr(const Volume& volume, const std::vector<CenterlinePath>& paths, const ViewGeometry& view,
+               const CprSettings& settings, CprResampler resampler) {
   Cpr cpr;
   cpr.layout = layoutCpr(paths, view, settings);
   cpr.hu = resampleCpr(volume, cpr.layout, resampler);

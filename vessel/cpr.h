@@ -47,9 +47,8 @@ std::optional<CprPick> pickCpr(const Cpr& cpr, int x, int y);
 ViewGeometry cprView(const Volume& volume, Axis axis, double angleDeg, double pixelMm);
 
 // paths in the volume frame. Throws std::invalid_argument as layoutCpr does.
-Cpr computeCpr(const Volume& volume, const std::vector<CenterlinePath>& paths,
-               const ViewGeometry& view, const CprSettings& settings,
-               CprResampler resampler = CprResampler::trilinear);
+Cpr computeCpr(const Volume& volume, const std::vector<CenterlinePath>& paths, const ViewGeometry& view,
+               const CprSettings& settings, CprResampler resampler = CprResampler::trilinear);
 
 struct CprDescription {
   std::string dataset;

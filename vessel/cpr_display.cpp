@@ -114,8 +114,7 @@ Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const Cp
   Image image = makeImage(layout.width, layout.height);
   fillPixels(image, hu, display);
   if (display.centerlineMarker) drawMarker(image, layout.curves);
-  if (display.ruler && display.rulerStepMm > 0)
-    drawRuler(image, layout.curves, display.rulerStepMm);
+  if (display.ruler && display.rulerStepMm > 0) drawRuler(image, layout.curves, display.rulerStepMm);
   return image;
 }
 

@@ -81,9 +81,9 @@ void compositeCprInPlace(Image& dvr, const Volume& volume, const CprLayout& layo
   checkSizes(dvr, layout.width, layout.height, footprint, settings);
   if (volume.voxelCount() == 0) return;  // nothing sampled
   // A hard cut's weights are the footprint itself (no full-size copy).
-  const std::vector<float> weights =
-      settings.transitionMm > 0 ? cprWeights(footprint, dvr.width, dvr.height, settings)
-                                : std::vector<float>{};
+  const std::vector<float> weights = settings.transitionMm > 0
+                                         ? cprWeights(footprint, dvr.width, dvr.height, settings)
+                                         : std::vector<float>{};
   const auto weightAt = [&](std::size_t n) {
     return weights.empty() ? (footprint[n] ? 1.f : 0.f) : weights[n];
   };

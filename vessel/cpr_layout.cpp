@@ -14,9 +14,7 @@ constexpr double kTiny = 1e-9;
 
 std::string quoted(const CenterlinePath& path) { return "path '" + path.name + "'"; }
 
-bool isFinite(glm::dvec3 v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
+bool isFinite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 bool insideDomain(glm::dvec3 p, glm::dvec3 extent) {
   constexpr double kTolerance = 1e-6;  // mm; the closed box of voxel centres
@@ -38,8 +36,8 @@ void checkPath(const CenterlinePath& path) {
 }
 
 // Validates the paths and the settings; returns the warnings for paths partly outside the volume.
-std::vector<std::string> checkInput(const std::vector<CenterlinePath>& paths,
-                                    const ViewGeometry& view, double widthMm) {
+std::vector<std::string> checkInput(const std::vector<CenterlinePath>& paths, const ViewGeometry& view,
+                                    double widthMm) {
   if (paths.empty()) throw CprPathError("no centerline paths to reformat");
   if (!std::isfinite(widthMm) || widthMm <= 0) {
     throw std::invalid_argument("CPR width must be a finite length > 0 mm");
@@ -69,8 +67,8 @@ std::vector<std::string> checkInput(const std::vector<CenterlinePath>& paths,
 void checkPixelCount(double width, double height) {
   if (!(width * height <= double(kMaxCprPixels))) {
     char message[160];
-    std::snprintf(message, sizeof message,
-                  "CPR would be %.0f x %.0f pixels; choose a larger pixel size", width, height);
+    std::snprintf(message, sizeof message, "CPR would be %.0f x %.0f pixels; choose a larger pixel size",
+                  width, height);
     throw std::invalid_argument(message);
   }
 }
@@ -85,8 +83,7 @@ double sharedArcMm(const CenterlinePath& a, const CenterlinePath& b) {
 // minus one (the junction), so that each piece of the tree is drawn once.
 std::size_t firstOwnVertex(const std::vector<CenterlinePath>& paths, std::size_t p) {
   std::size_t shared = 0;
-  for (std::size_t q = 0; q < p; ++q)
-    shared = std::max(shared, sharedPrefixLength(paths[p], paths[q]));
+  for (std::size_t q = 0; q < p; ++q) shared = std::max(shared, sharedPrefixLength(paths[p], paths[q]));
   return shared == 0 ? 0 : shared - 1;
 }
 
@@ -182,8 +179,7 @@ StraightenedPath straightenPath(const CenterlinePath& path, const ViewGeometry& 
     out.centreMm.push_back(sampler.at(s));
     const glm::dvec3 chord = sampler.at(s + halfChord) - sampler.at(s - halfChord);
     const double length = glm::length(chord);
-    tangents.push_back(length > kTiny ? chord / length
-                                      : (tangents.empty() ? view.up : tangents.back()));
+    tangents.push_back(length > kTiny ? chord / length : (tangents.empty() ? view.up : tangents.back()));
   }
   const std::vector<glm::dvec3> normals =
       rotationMinimizingNormals(out.centreMm, tangents, initialNormal(view, tangents.front()));
@@ -301,10 +297,9 @@ ImagePath projectPath(const CenterlinePath& path, const ViewGeometry& view, CprM
       sigma += glm::length(step - glm::dot(step, view.right) * view.right);
     }
     const double x = dvrColumn(view, p) - columnOffset;
-    const double y =
-        mode == CprMode::projected
-            ? 0.5 * view.height - 0.5 - glm::dot(p - view.centre, view.up) / view.pixelMm
-            : sigma / view.pixelMm - 0.5;
+    const double y = mode == CprMode::projected
+                         ? 0.5 * view.height - 0.5 - glm::dot(p - view.centre, view.up) / view.pixelMm
+                         : sigma / view.pixelMm - 0.5;
     image.pixels.push_back({x, y});
   }
   return image;
@@ -497,9 +492,8 @@ CprLayout layoutCpr(const std::vector<CenterlinePath>& paths, const ViewGeometry
   if (settings.mode == CprMode::straightened) {
     layout.widthMm = layout.width / double(paths.size()) * view.pixelMm;
   } else {
-    layout.widthMm = settings.mode == CprMode::projected && !settings.widthMm
-                         ? layout.width * view.pixelMm
-                         : widthMm;
+    layout.widthMm =
+        settings.mode == CprMode::projected && !settings.widthMm ? layout.width * view.pixelMm : widthMm;
   }
   layout.warnings = std::move(warnings);
   return layout;
@@ -519,8 +513,7 @@ std::vector<CenterlinePath> selectPaths(const Centerlines& centerlines, const st
     used = 0;
   }
   if (used != which.size() || which.empty()) {
-    throw CprPathError("path selection '" + which + "' is neither 'all' nor a path number; " +
-                       range);
+    throw CprPathError("path selection '" + which + "' is neither 'all' nor a path number; " + range);
   }
   if (index < 0 || std::size_t(index) >= count) {
     throw CprPathError("there is no path " + which + "; " + range);

@@ -97,9 +97,9 @@ struct CprLayout {
   CprMode mode = CprMode::straightened;
   int width = 0;
   int height = 0;
-  double pixelMm = 0;    // D, along rows and columns
-  int columnOffset = 0;  // stretched: image column 0 is this column of the DVR image
-  double widthMm = 0;    // the lateral extent used (straightened: a panel's width, odd pixels)
+  double pixelMm = 0;          // D, along rows and columns
+  int columnOffset = 0;        // stretched: image column 0 is this column of the DVR image
+  double widthMm = 0;          // the lateral extent used (straightened: a panel's width, odd pixels)
   std::vector<CprSpan> spans;  // row by row
   std::vector<CprCurve> curves;
   std::vector<std::string> warnings;  // one line each, naming the path

@@ -58,8 +58,8 @@ void remapBetweenSlices(const Volume& volume, const std::vector<Cell>& cells,
   const int width = i1 - i0 + 1, height = j1 - j0 + 1;
   cv::remap(sliceDensities(volume, i0, j0, width, height, k), below, mapX, mapY, cv::INTER_LINEAR,
             cv::BORDER_REPLICATE);
-  cv::remap(sliceDensities(volume, i0, j0, width, height, kNext), above, mapX, mapY,
-            cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  cv::remap(sliceDensities(volume, i0, j0, width, height, kNext), above, mapX, mapY, cv::INTER_LINEAR,
+            cv::BORDER_REPLICATE);
   for (int n = 0; n < count; ++n) {
     const float a = below.at<float>(n), b = above.at<float>(n);
     out[n] = a + (b - a) * cells[first + n].frac.z - float(kHuOffset);
@@ -99,8 +99,7 @@ std::optional<CprResampler> parseCprResampler(const std::string& text) {
   return std::nullopt;
 }
 
-std::vector<float> resampleCpr(const Volume& volume, const CprLayout& layout,
-                               CprResampler resampler) {
+std::vector<float> resampleCpr(const Volume& volume, const CprLayout& layout, CprResampler resampler) {
   std::vector<float> hu(std::size_t(layout.width) * layout.height,
                         std::numeric_limits<float>::quiet_NaN());
   if (volume.voxelCount() == 0) return hu;

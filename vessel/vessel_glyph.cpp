@@ -59,8 +59,8 @@ GlyphTubes::Vertex tubeVertex(const CenterlinePoint& point, const VesselGlyphSet
 }
 
 // The path's points from `first` on as chains of finite vertices (split at non-finite points).
-void appendChains(const CenterlinePath& path, std::size_t first,
-                  const VesselGlyphSettings& settings, GlyphTubes& tubes) {
+void appendChains(const CenterlinePath& path, std::size_t first, const VesselGlyphSettings& settings,
+                  GlyphTubes& tubes) {
   std::vector<GlyphTubes::Vertex> chain;
   for (std::size_t n = first; n < path.points.size(); ++n) {
     const CenterlinePoint& point = path.points[n];
@@ -86,8 +86,10 @@ double deviation(const std::vector<GlyphTubes::Vertex>& chain, const std::vector
   const GlyphTubes::Vertex& vb = chain[b];
   const GlyphTubes::Vertex& vn = chain[n];
   const double offset = glm::distance(vn.positionMm, glm::mix(va.positionMm, vb.positionMm, s));
-  const double focus = std::abs(vn.focusRadiusMm - (va.focusRadiusMm + s * (vb.focusRadiusMm - va.focusRadiusMm)));
-  const double context = std::abs(vn.contextRadiusMm - (va.contextRadiusMm + s * (vb.contextRadiusMm - va.contextRadiusMm)));
+  const double focus =
+      std::abs(vn.focusRadiusMm - (va.focusRadiusMm + s * (vb.focusRadiusMm - va.focusRadiusMm)));
+  const double context = std::abs(vn.contextRadiusMm -
+                                  (va.contextRadiusMm + s * (vb.contextRadiusMm - va.contextRadiusMm)));
   return offset + std::max(focus, context);
 }
 
@@ -195,8 +197,8 @@ std::vector<ViewSegment> viewSegments(const ViewGeometry& view, const GlyphTubes
       const GlyphTubes::Vertex& v1 = chain[std::min(n + 1, chain.size() - 1)];
       const glm::dvec3 a = toView(view, v0.positionMm), b = toView(view, v1.positionMm);
       const bool last = n + 1 == count;  // the inner balls come with the following segment
-      ViewSegment segment{a, b, makeTube(a, b, v0.focusRadiusMm, v1.focusRadiusMm, last),
-                          std::nullopt, c};
+      ViewSegment segment{a, b, makeTube(a, b, v0.focusRadiusMm, v1.focusRadiusMm, last), std::nullopt,
+                          c};
       if (withTube) {
         segment.contextTube = makeTube(a, b, v0.contextRadiusMm, v1.contextRadiusMm, last);
       }
@@ -228,8 +230,8 @@ struct RowGeometry {
 };
 
 // The heights v a segment's regions reach.
-std::pair<double, double> verticalReach(const ViewSegment& segment,
-                                        const VesselGlyphSettings& settings, double pixelMm) {
+std::pair<double, double> verticalReach(const ViewSegment& segment, const VesselGlyphSettings& settings,
+                                        double pixelMm) {
   double lo = segment.focus.vLo, hi = segment.focus.vHi;
   if (segment.contextTube) {
     lo = std::min(lo, segment.contextTube->vLo);
@@ -277,8 +279,7 @@ BandBins binByBand(const std::vector<ViewSegment>& segments, const RowGeometry& 
 double axisDepthUnder(const ViewSegment& segment, double h, double v) {
   const glm::dvec2 a(segment.a), along = glm::dvec2(segment.b) - a;
   const double lengthSquared = glm::dot(along, along);
-  const double s =
-      lengthSquared > 1e-12 ? glm::dot(glm::dvec2(h, v) - a, along) / lengthSquared : 0.5;
+  const double s = lengthSquared > 1e-12 ? glm::dot(glm::dvec2(h, v) - a, along) / lengthSquared : 0.5;
   return segment.at(s).z;
 }
 
@@ -365,7 +366,8 @@ class SpanList {
 class ColumnSpans {
  public:
   explicit ColumnSpans(int width)
-      : focus_(std::size_t(width)), context_(std::size_t(width)), used_((std::size_t(width) + 63) / 64, 0) {}
+      : focus_(std::size_t(width)), context_(std::size_t(width)),
+        used_((std::size_t(width) + 63) / 64, 0) {}
 
   void add(Region region, int x, const DepthSpan& span) {
     const std::size_t word = std::size_t(x) / 64;
@@ -449,8 +451,8 @@ class ChainAccumulator {
 };
 
 // `context` minus the (merged) `focus` spans, and not before `notBefore`, into `out`.
-void subtract(std::span<const DepthSpan> context, const std::vector<DepthSpan>& focus,
-              double notBefore, std::vector<DepthSpan>& out) {
+void subtract(std::span<const DepthSpan> context, const std::vector<DepthSpan>& focus, double notBefore,
+              std::vector<DepthSpan>& out) {
   out.clear();
   std::size_t f = 0;
   for (DepthSpan piece : context) {
@@ -469,8 +471,8 @@ bool emptyInFloat(const DepthSpan& span) { return !(float(span.end) > float(span
 // Appends a span to a pixel's intervals [first, end) as float, returning the new end. Spans come
 // sorted and disjoint, and rounding is monotone, so they stay so; rounding can only close a gap,
 // and then two intervals of one region are joined.
-inline RegionInterval* appendInterval(RegionInterval* first, RegionInterval* end,
-                                      const DepthSpan& span, Region region) {
+inline RegionInterval* appendInterval(RegionInterval* first, RegionInterval* end, const DepthSpan& span,
+                                      Region region) {
   const float begin = float(span.begin), stop = float(span.end);
   if (!(stop > begin)) return end;
   if (end > first && end[-1].region == region && end[-1].end >= begin) {
@@ -547,15 +549,14 @@ class RowBuilder {
   ChainAccumulator focusChain_, contextChain_;
   std::vector<RunSpan> runs_, activeRuns_;
   std::size_t nextRun_ = 0;
-  int nextRunChange_ = 0;  // the first column where the active runs change
+  int nextRunChange_ = 0;                     // the first column where the active runs change
   std::vector<DepthSpan> runUnion_;           // the active runs' merged spans
   std::vector<RegionInterval> runIntervals_;  // the same as output
   std::vector<DepthSpan> focus_, context_, contextLeft_, spans_;
 };
 
-void RowBuilder::build(int y, const std::vector<ViewSegment>& segments,
-                       const std::uint32_t* candidates, std::size_t candidateCount,
-                       IntervalBuffer& out, std::uint32_t* rowStarts) {
+void RowBuilder::build(int y, const std::vector<ViewSegment>& segments, const std::uint32_t* candidates,
+                       std::size_t candidateCount, IntervalBuffer& out, std::uint32_t* rowStarts) {
   const double v = rows_.rowV(y);
   runs_.clear();
   for (std::size_t n = 0; n < candidateCount; ++n) {
@@ -584,8 +585,8 @@ void RowBuilder::build(int y, const std::vector<ViewSegment>& segments,
 
 // Rays against the segment's piece of the tube, part by part, each only for the columns it can
 // reach in this row; `cut`: the half-vessel cut, spans start at the axis depth.
-void RowBuilder::addTube(const ViewSegment& segment, const Tube& tube, double v,
-                         ChainAccumulator& chain, bool cut) {
+void RowBuilder::addTube(const ViewSegment& segment, const Tube& tube, double v, ChainAccumulator& chain,
+                         bool cut) {
   if (v < tube.vLo || v > tube.vHi) return;  // the band's other rows
   const DepthRayRoundCone::Row row = tube.cone.row(v);
   if (row.partCount == 0) return;
@@ -654,8 +655,9 @@ void RowBuilder::advanceRuns(int x) {
   std::erase_if(activeRuns_, [x](const RunSpan& run) { return run.x1 < x; });
   for (; nextRun_ < runs_.size() && runs_[nextRun_].x0 <= x; ++nextRun_) {
     const RunSpan& run = runs_[nextRun_];
-    const auto at = std::upper_bound(activeRuns_.begin(), activeRuns_.end(), run.begin,
-                                     [](double begin, const RunSpan& other) { return begin < other.begin; });
+    const auto at =
+        std::upper_bound(activeRuns_.begin(), activeRuns_.end(), run.begin,
+                         [](double begin, const RunSpan& other) { return begin < other.begin; });
     activeRuns_.insert(at, run);
   }
   nextRunChange_ = nextRun_ < runs_.size() ? runs_[nextRun_].x0 : std::numeric_limits<int>::max();
@@ -670,7 +672,8 @@ void RowBuilder::advanceRuns(int x) {
   }
   runIntervals_.resize(runUnion_.size());
   RegionInterval* end = runIntervals_.data();
-  for (const DepthSpan& span : runUnion_) end = appendInterval(runIntervals_.data(), end, span, Region::context);
+  for (const DepthSpan& span : runUnion_)
+    end = appendInterval(runIntervals_.data(), end, span, Region::context);
   runIntervals_.resize(std::size_t(end - runIntervals_.data()));
 }
 
@@ -721,8 +724,8 @@ void RowBuilder::emitMixed(int x, IntervalBuffer& out) {
   }
   const SpanList& columnContext = columns_.context(x);
   // At most: every focus span, plus every context span split once by each focus span.
-  RegionInterval* const first = out.room(
-      2 * focus_.size() + runUnion_.size() + std::size_t(columnContext.end() - columnContext.begin()) + 1);
+  RegionInterval* const first = out.room(2 * focus_.size() + runUnion_.size() +
+                                         std::size_t(columnContext.end() - columnContext.begin()) + 1);
   RegionInterval* end = first;
   if (columnContext.empty() && runUnion_.empty()) {
     for (const DepthSpan& span : focus_) end = appendInterval(first, end, span, Region::focus);
@@ -758,7 +761,8 @@ void appendBand(const RowGeometry& rows, int band, const IntervalBuffer& buffer,
   const std::size_t pixels = std::size_t(rows.width) * rows.height;
   const std::size_t pixelsPerBand = std::size_t(rows.width) * kRowsPerBand;
   std::uint32_t* begin = regions.rayBegin.data() + std::size_t(band) * pixelsPerBand;
-  std::uint32_t* end = regions.rayBegin.data() + std::min(pixels, (std::size_t(band) + 1) * pixelsPerBand);
+  std::uint32_t* end =
+      regions.rayBegin.data() + std::min(pixels, (std::size_t(band) + 1) * pixelsPerBand);
   for (std::uint32_t* start = begin; start != end; ++start) *start += base;
   regions.intervals.insert(regions.intervals.end(), buffer.data(), buffer.data() + buffer.size());
 }
@@ -773,8 +777,8 @@ double TubeRadius::at(double vesselRadiusMm) const {
 }
 
 std::optional<std::string> settingsProblem(const VesselGlyphSettings& settings) {
-  const auto tubeProblem = [](const TubeRadius& tube, const std::string& name)
-      -> std::optional<std::string> {
+  const auto tubeProblem = [](const TubeRadius& tube,
+                              const std::string& name) -> std::optional<std::string> {
     if (!finiteAndNonNegative(tube.value)) return name + " radius must be finite and >= 0";
     if (!std::isfinite(tube.marginMm)) return name + " margin must be finite";
     return std::nullopt;
@@ -860,22 +864,17 @@ void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGl
   int nextBand = 0;
   tbb::parallel_pipeline(
       std::size_t(tokens),
-      tbb::make_filter<void, int>(tbb::filter_mode::serial_in_order,
-                                  [&](tbb::flow_control& control) {
-                                    if (nextBand == bandCount) control.stop();
-                                    return nextBand++;
-                                  }) &
-          tbb::make_filter<int, int>(tbb::filter_mode::parallel,
-                                     [&](int band) {
-                                       RowBuilder& builder = scratch.builders.local();
-                                       builder.startView(rows, settings);
-                                       buildBand(band, rows, segments, bins, builder,
-                                                 bands[std::size_t(band % tokens)], out.rayBegin);
-                                       return band;
-                                     }) &
-          tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int band) {
-            appendBand(rows, band, bands[std::size_t(band % tokens)], out);
-          }));
+      tbb::make_filter<void, int>(tbb::filter_mode::serial_in_order, [&](tbb::flow_control& control) {
+        if (nextBand == bandCount) control.stop();
+        return nextBand++;
+      }) & tbb::make_filter<int, int>(tbb::filter_mode::parallel, [&](int band) {
+        RowBuilder& builder = scratch.builders.local();
+        builder.startView(rows, settings);
+        buildBand(band, rows, segments, bins, builder, bands[std::size_t(band % tokens)], out.rayBegin);
+        return band;
+      }) & tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int band) {
+        appendBand(rows, band, bands[std::size_t(band % tokens)], out);
+      }));
   out.rayBegin.back() = std::uint32_t(out.intervals.size());
 }
 
@@ -891,10 +890,8 @@ RayRegions buildRayRegions(const ViewGeometry& view, const GlyphTubes& tubes,
 
 struct RayRegionBuilder::Scratch : BuildScratch {};
 
-RayRegionBuilder::RayRegionBuilder(const Centerlines& inVolumeFrame,
-                                   const VesselGlyphSettings& settings)
-    : settings_(settings),
-      tubes_(prepareGlyphTubes(inVolumeFrame, settings)),
+RayRegionBuilder::RayRegionBuilder(const Centerlines& inVolumeFrame, const VesselGlyphSettings& settings)
+    : settings_(settings), tubes_(prepareGlyphTubes(inVolumeFrame, settings)),
       scratch_(std::make_unique<Scratch>()) {}
 
 RayRegionBuilder::~RayRegionBuilder() = default;
@@ -908,7 +905,8 @@ void RayRegionBuilder::build(const ViewGeometry& view, RayRegions& out) {
 RayRegions buildRayRegions(const Volume& volume, const ViewGeometry& view,
                            const Centerlines& inVolumeFrame, const VesselGlyphSettings& settings) {
   const glm::dvec3 extent = domainExtent(volume);
-  if (glm::any(glm::greaterThan(glm::abs(extent - view.extent), glm::dvec3(1e-9 * (1 + glm::length(extent)))))) {
+  if (glm::any(glm::greaterThan(glm::abs(extent - view.extent),
+                                glm::dvec3(1e-9 * (1 + glm::length(extent)))))) {
     throw std::invalid_argument("VesselGlyph: the view was made for another volume");
   }
   return buildRayRegions(view, prepareGlyphTubes(inVolumeFrame, settings), settings);

@@ -13,8 +13,9 @@ namespace angio {
 
 namespace {
 
-constexpr const char* kFocusForm = "circle:radius=R (R in mm, e.g. 3 or 3mm, or a factor of the "
-                                   "vessel radius, e.g. 2.0x)";
+constexpr const char* kFocusForm =
+    "circle:radius=R (R in mm, e.g. 3 or 3mm, or a factor of the "
+    "vessel radius, e.g. 2.0x)";
 constexpr const char* kContextForm = "slab:front=MM,back=MM[,width=MM|inf], tube:radius=R or none";
 
 // A spec split into its shape and key=value parameters.
@@ -45,7 +46,8 @@ SpecParts splitSpec(const std::string& option, const std::string& spec, const ch
     const std::size_t comma = std::min(spec.find(',', start), spec.size());
     const std::string item = spec.substr(start, comma - start);
     const std::size_t equals = item.find('=');
-    if (equals == std::string::npos || equals == 0) fail(option, spec, quoted(item) + " is not key=value", form);
+    if (equals == std::string::npos || equals == 0)
+      fail(option, spec, quoted(item) + " is not key=value", form);
     if (!parts.values.emplace(item.substr(0, equals), item.substr(equals + 1)).second)
       fail(option, spec, quoted(item.substr(0, equals)) + " given twice", form);
     start = comma + 1;
@@ -84,8 +86,8 @@ TubeRadius parseRadius(const std::string& option, const std::string& spec, const
   TubeRadius radius;
   const bool factor = !text.empty() && text.back() == 'x';
   radius.mode = factor ? RadiusMode::vesselFactor : RadiusMode::constant;
-  radius.value = parseMm(option, spec, "radius", factor ? text.substr(0, text.size() - 1) : text,
-                         false, form);
+  radius.value =
+      parseMm(option, spec, "radius", factor ? text.substr(0, text.size() - 1) : text, false, form);
   if (radius.value <= 0) fail(option, spec, "radius must be > 0", form);
   return radius;
 }

@@ -25,8 +25,9 @@ int lineCount(const std::string& text) {
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("angioray-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir =
+        fs::temp_directory_path() /
+        ("angioray-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir);
     fs::create_directories(dir);
   }
@@ -43,8 +44,8 @@ TEST_F(Cli, HelpWorksEverywhere) {
 }
 
 TEST_F(Cli, MissingVolumeIsOneLineNamingTheFile) {
-  const CliRun run = runAngioray("render " + (dir / "nothing.mha").string() + " --out " +
-                              (dir / "x.png").string());
+  const CliRun run =
+      runAngioray("render " + (dir / "nothing.mha").string() + " --out " + (dir / "x.png").string());
   EXPECT_NE(run.exitCode, 0);
   EXPECT_EQ(lineCount(run.output), 1) << run.output;
   EXPECT_NE(run.output.find("nothing.mha"), std::string::npos) << run.output;
@@ -61,7 +62,7 @@ TEST_F(Cli, BadOptionValuesAreRejected) {
 TEST_F(Cli, PhantomThenInfoThenRenderEveryQuality) {
   const fs::path volume = dir / "phantom.mha", centerlines = dir / "phantom.csv";
   const CliRun phantom = runAngioray("phantom " + volume.string() + " --size 64x64x150 --centerlines " +
-                                  centerlines.string());
+                                     centerlines.string());
   ASSERT_EQ(phantom.exitCode, 0) << phantom.output;
   EXPECT_TRUE(fs::exists(volume));
   EXPECT_GT(fs::file_size(centerlines), 100u);
@@ -73,12 +74,12 @@ TEST_F(Cli, PhantomThenInfoThenRenderEveryQuality) {
   for (std::string quality : {"fast", "medium", "high"}) {
     const fs::path out = dir / (quality + ".png");
     const CliRun render = runAngioray("render " + volume.string() + " --quality " + quality +
-                                   " --angle 30 --out " + out.string());
+                                      " --angle 30 --out " + out.string());
     ASSERT_EQ(render.exitCode, 0) << render.output;
     EXPECT_GT(fs::file_size(out), 100u);
   }
   const CliRun mip = runAngioray("render " + volume.string() + " --mip --quality fast --out " +
-                              (dir / "mip.exr").string());
+                                 (dir / "mip.exr").string());
   EXPECT_EQ(mip.exitCode, 0) << mip.output;
   EXPECT_TRUE(fs::exists(dir / "mip.exr"));
 }
@@ -86,8 +87,8 @@ TEST_F(Cli, PhantomThenInfoThenRenderEveryQuality) {
 TEST_F(Cli, UnknownTransferFunctionNamesIt) {
   const fs::path volume = dir / "v.nrrd";
   ASSERT_EQ(runAngioray("phantom " + volume.string() + " --size 32x32x64").exitCode, 0);
-  const CliRun run = runAngioray("render " + volume.string() + " --tf no-such-tf --out " +
-                              (dir / "x.png").string());
+  const CliRun run =
+      runAngioray("render " + volume.string() + " --tf no-such-tf --out " + (dir / "x.png").string());
   EXPECT_NE(run.exitCode, 0);
   EXPECT_EQ(lineCount(run.output), 1) << run.output;
   EXPECT_NE(run.output.find("no-such-tf"), std::string::npos) << run.output;

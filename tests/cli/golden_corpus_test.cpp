@@ -43,7 +43,8 @@ std::string pixelHash(const fs::path& exr) {
   input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
   std::uint64_t hash = 1469598103934665603ull;
   const auto* bytes = reinterpret_cast<const unsigned char*>(pixels.data());
-  for (std::size_t i = 0; i < pixels.size() * sizeof(float); ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  for (std::size_t i = 0; i < pixels.size() * sizeof(float); ++i)
+    hash = (hash ^ bytes[i]) * 1099511628211ull;
   char text[32];
   std::snprintf(text, sizeof text, "%dx%d:%016llx", spec.width, spec.height, (unsigned long long)hash);
   return text;

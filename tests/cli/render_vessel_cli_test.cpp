@@ -29,7 +29,9 @@ struct Rgb8 {
   std::vector<unsigned char> bytes;  // RGB
   const unsigned char* at(int x, int y) const { return &bytes[3 * (std::size_t(y) * width + x)]; }
   bool colored(int x, int y) const { return at(x, y)[0] || at(x, y)[1] || at(x, y)[2]; }
-  bool same(const Rgb8& other, int x, int y) const { return std::equal(at(x, y), at(x, y) + 3, other.at(x, y)); }
+  bool same(const Rgb8& other, int x, int y) const {
+    return std::equal(at(x, y), at(x, y) + 3, other.at(x, y));
+  }
 };
 
 Rgb8 readPng(const fs::path& file) {
@@ -66,8 +68,8 @@ class RenderVesselCli : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = fs::temp_directory_path() / ("angioray-render-vessel-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    const ProgramRun run = runAngioray("phantom " + volume().string() + " --size 128x128x300 --centerlines " +
-                                       centerlines().string());
+    const ProgramRun run = runAngioray("phantom " + volume().string() +
+                                       " --size 128x128x300 --centerlines " + centerlines().string());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     writeTf(dir_ / "opaque.json", "opaque white", 1.0);
     writeTf(dir_ / "clear.json", "transparent", 0.0);
@@ -75,14 +77,16 @@ class RenderVesselCli : public ::testing::Test {
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   static void writeTf(const fs::path& file, const std::string& name, double opacity) {
-    std::ofstream(file) << R"({"name": ")" << name << R"(", "points": [{"hu": -1024, "color": [1, 1, 1], "opacity": )"
-                        << opacity << R"(}, {"hu": 3071, "color": [1, 1, 1], "opacity": )" << opacity << "}]}";
+    std::ofstream(file) << R"({"name": ")" << name
+                        << R"(", "points": [{"hu": -1024, "color": [1, 1, 1], "opacity": )" << opacity
+                        << R"(}, {"hu": 3071, "color": [1, 1, 1], "opacity": )" << opacity << "}]}";
   }
   static fs::path volume() { return dir_ / "phantom.mha"; }
   static fs::path centerlines() { return dir_ / "phantom.csv"; }
   static fs::path file(const std::string& name) { return dir_ / name; }
   static std::string vgBase(const std::string& quality = "medium") {
-    return "render " + volume().string() + " --quality " + quality + " --centerlines " + centerlines().string();
+    return "render " + volume().string() + " --quality " + quality + " --centerlines " +
+           centerlines().string();
   }
 
   // The centerline points projected into the view of the rendering model at `angleDeg` (axis k).
@@ -126,9 +130,11 @@ double segmentDistance(double x, double y, const ProjectedPoint& a, const Projec
 TEST_F(RenderVesselCli, OpaqueFocusStaysWithinItsRadiusOfTheProjectedCenterline) {
   const double angle = 30;
   const fs::path out = file("vg-opaque.png");
-  const ProgramRun run = runAngioray(vgBase() + " --angle 30 --vg-focus circle:radius=2.0x --vg-context "
-                                     "slab:front=20,back=20 --focus-tf " + file("opaque.json").string() +
-                                     " --context-tf " + file("clear.json").string() + " --out " + out.string());
+  const ProgramRun run = runAngioray(vgBase() +
+                                     " --angle 30 --vg-focus circle:radius=2.0x --vg-context "
+                                     "slab:front=20,back=20 --focus-tf " +
+                                     file("opaque.json").string() + " --context-tf " +
+                                     file("clear.json").string() + " --out " + out.string());
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Rgb8 image = readPng(out);
   angio::ViewGeometry view;
@@ -146,7 +152,8 @@ TEST_F(RenderVesselCli, OpaqueFocusStaysWithinItsRadiusOfTheProjectedCenterline)
       ++colored;
       bool near = false;
       for (std::size_t n = 0; n + 1 < points.size() && !near; ++n) {
-        const double radiusPx = 2.0 * std::max(points[n].radiusMm, points[n + 1].radiusMm) / view.pixelMm;
+        const double radiusPx =
+            2.0 * std::max(points[n].radiusMm, points[n + 1].radiusMm) / view.pixelMm;
         const double gapPx = std::hypot(points[n + 1].x - points[n].x, points[n + 1].y - points[n].y);
         if (gapPx > 4) continue;  // the jump from one path's end to the next path's start
         near = segmentDistance(x, y, points[n], points[n + 1]) <= radiusPx + 1.0;
@@ -170,8 +177,10 @@ TEST_F(RenderVesselCli, OpaqueFocusStaysWithinItsRadiusOfTheProjectedCenterline)
 
 TEST_F(RenderVesselCli, ImageMetadataRecordsTheVesselGlyphSettings) {
   const fs::path out = file("vg-metadata.png");
-  const ProgramRun run = runAngioray(vgBase("fast") + " --vg-focus circle:radius=4mm --vg-context "
-                                     "tube:radius=2.5x --vg-outside bone --half-vessel --out " + out.string());
+  const ProgramRun run = runAngioray(vgBase("fast") +
+                                     " --vg-focus circle:radius=4mm --vg-context "
+                                     "tube:radius=2.5x --vg-outside bone --half-vessel --out " +
+                                     out.string());
   ASSERT_EQ(run.exitCode, 0) << run.output;
   auto input = OIIO::ImageInput::open(out.string());
   ASSERT_TRUE(input);
@@ -184,7 +193,8 @@ TEST_F(RenderVesselCli, ImageMetadataRecordsTheVesselGlyphSettings) {
 }
 
 TEST_F(RenderVesselCli, ReferenceRaycasterGivesTheSameVesselGlyphImage) {
-  const std::string common = vgBase("fast") + " --angle 75 --vg-focus circle:radius=3mm "
+  const std::string common = vgBase("fast") +
+                             " --angle 75 --vg-focus circle:radius=3mm "
                              "--vg-context tube:radius=15 --context-tf soft-tissue-context --cleft";
   const ProgramRun fast = runAngioray(common + " --out " + file("vg-fast.png").string());
   const ProgramRun reference = runAngioray(common + " --reference --out " + file("vg-ref.png").string());
@@ -213,7 +223,8 @@ TEST_F(RenderVesselCli, BadSpecsAndMissingCenterlinesAreOneLineErrors) {
   EXPECT_NE(noFile.exitCode, 0);
   EXPECT_EQ(lineCount(noFile.output), 1) << noFile.output;
   EXPECT_NE(noFile.output.find("missing.csv"), std::string::npos) << noFile.output;
-  const ProgramRun needsCenterlines = runAngioray("render " + volume().string() + " --cleft --out " + out);
+  const ProgramRun needsCenterlines =
+      runAngioray("render " + volume().string() + " --cleft --out " + out);
   EXPECT_NE(needsCenterlines.exitCode, 0);
   EXPECT_EQ(lineCount(needsCenterlines.output), 1) << needsCenterlines.output;
   EXPECT_FALSE(fs::exists(out));
@@ -223,10 +234,12 @@ TEST_F(RenderVesselCli, SidecarReproducesEveryKindOfRenderByteForByte) {
   const std::vector<std::string> renders = {
       "render " + volume().string() + " --quality fast --angle 20 --tf cta-vessels-bone --ka 0.4",
       "render " + volume().string() + " --quality fast --mip --window 700 --level 200 --axis j",
-      vgBase("fast") + " --angle 40 --vg-context slab:front=10,back=30,width=inf "
-                 "--focus-tf cta-vessels --context-tf soft-tissue-context --vg-outside bone --half-vessel",
-      vgBase("fast") + " --angle 110 --hybrid-cpr --hybrid-path 1 --transition 5 "
-                 "--cpr-window 800 --cpr-level 250 --context-tf soft-tissue-context",
+      vgBase("fast") +
+          " --angle 40 --vg-context slab:front=10,back=30,width=inf "
+          "--focus-tf cta-vessels --context-tf soft-tissue-context --vg-outside bone --half-vessel",
+      vgBase("fast") +
+          " --angle 110 --hybrid-cpr --hybrid-path 1 --transition 5 "
+          "--cpr-window 800 --cpr-level 250 --context-tf soft-tissue-context",
   };
   for (std::size_t n = 0; n < renders.size(); ++n) {
     const fs::path first = file("first-" + std::to_string(n) + ".png");
@@ -238,7 +251,8 @@ TEST_F(RenderVesselCli, SidecarReproducesEveryKindOfRenderByteForByte) {
     // The TF's whole content is in the sidecar, not only its name.
     EXPECT_NE(fileBytes(sidecar).find("\"points\""), std::string::npos);
     // From another working directory, to another file.
-    const ProgramRun rerun = runAngioray("render --params " + sidecar.string() + " --out " + again.string());
+    const ProgramRun rerun =
+        runAngioray("render --params " + sidecar.string() + " --out " + again.string());
     ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
     EXPECT_EQ(fileBytes(first), fileBytes(again)) << renders[n];
     EXPECT_GT(fileBytes(first).size(), 100u);
@@ -262,18 +276,21 @@ TEST_F(RenderVesselCli, SidecarErrorsAreOneLine) {
 TEST_F(RenderVesselCli, HybridShowsTheCprOnTheCenterlineAndTheContextDvrFarFromIt) {
   const double angle = 50;
   const std::string focusTf = "cta-vessels", contextTf = "soft-tissue-context", transitionMm = "6";
-  const ProgramRun hybrid = runAngioray(vgBase() + " --angle 50 --vg-focus circle:radius=2.0x --vg-context none"
-                                        " --vg-outside " + contextTf + " --focus-tf " + focusTf +
-                                        " --hybrid-cpr --transition " + transitionMm + " --out " +
-                                        file("hybrid.png").string());
+  const ProgramRun hybrid =
+      runAngioray(vgBase() +
+                  " --angle 50 --vg-focus circle:radius=2.0x --vg-context none"
+                  " --vg-outside " +
+                  contextTf + " --focus-tf " + focusTf + " --hybrid-cpr --transition " + transitionMm +
+                  " --out " + file("hybrid.png").string());
   ASSERT_EQ(hybrid.exitCode, 0) << hybrid.output;
   // Independent paths: the projected CPR through the focus TF, and plain DVR with the context TF.
-  const ProgramRun cpr = runAngioray("cpr " + volume().string() + " --centerlines " + centerlines().string() +
-                                     " --mode projected --angle 50 --tf " + focusTf + " --no-overlay --out " +
-                                     file("cpr.png").string());
+  const ProgramRun cpr = runAngioray("cpr " + volume().string() + " --centerlines " +
+                                     centerlines().string() + " --mode projected --angle 50 --tf " +
+                                     focusTf + " --no-overlay --out " + file("cpr.png").string());
   ASSERT_EQ(cpr.exitCode, 0) << cpr.output;
-  const ProgramRun dvr = runAngioray("render " + volume().string() + " --quality medium --angle 50 --tf " +
-                                     contextTf + " --out " + file("dvr.png").string());
+  const ProgramRun dvr =
+      runAngioray("render " + volume().string() + " --quality medium --angle 50 --tf " + contextTf +
+                  " --out " + file("dvr.png").string());
   ASSERT_EQ(dvr.exitCode, 0) << dvr.output;
   const Rgb8 h = readPng(file("hybrid.png")), c = readPng(file("cpr.png")), d = readPng(file("dvr.png"));
   ASSERT_EQ(h.width, c.width);

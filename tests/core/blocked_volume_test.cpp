@@ -19,8 +19,7 @@ namespace {
 
 // Sizes that are not multiples of 32 along some axis, single-voxel axes, exact multiples, and
 // one wide enough (> 96 along i) to have blocks whose window needs no clamping along i.
-const std::vector<glm::ivec3> kSizes = {
-    {33, 70, 5}, {1, 1, 1}, {64, 32, 65}, {2, 40, 1}, {100, 33, 34}};
+const std::vector<glm::ivec3> kSizes = {{33, 70, 5}, {1, 1, 1}, {64, 32, 65}, {2, 40, 1}, {100, 33, 34}};
 
 Volume randomVolume(glm::ivec3 dims, unsigned seed) {
   Volume volume = makeVolume(dims, {0.7, 0.8, 1.25});
@@ -85,8 +84,8 @@ TEST(BlockedVolume, StoredWindowsEqualClampedFlatVoxels) {
         const std::size_t n = (std::size_t(local.z) * 34 + local.y) * 34 + local.x;
         mismatches += stored[n] != clampedVoxel(volume, global);
       });
-      EXPECT_EQ(mismatches, 0) << "dims " << dims.x << "x" << dims.y << "x" << dims.z << " block "
-                               << b.x << "," << b.y << "," << b.z;
+      EXPECT_EQ(mismatches, 0) << "dims " << dims.x << "x" << dims.y << "x" << dims.z << " block " << b.x
+                               << "," << b.y << "," << b.z;
     }
   }
 }
@@ -119,10 +118,10 @@ struct PlantedAir {
   Volume volume = noisyAir({96, 64, 40}, 3);
   PlantedAir() {
     auto set = [&](int i, int j, int k, Voxel v) { volume.voxels[volume.indexOf(i, j, k)] = v; };
-    set(32, 5, 5, encodeVoxel(300));     // core of (1,0,0), overlap of (0,0,0)
+    set(32, 5, 5, encodeVoxel(300));         // core of (1,0,0), overlap of (0,0,0)
     set(80, 40, 35, encodeVoxel(-1000, 3));  // labelled air in (2,1,1)
-    set(10, 40, 10, encodeVoxel(-900));  // exactly at the threshold: (0,1,0)
-    set(80, 40, 10, encodeVoxel(-901));  // just below it: (2,1,0) stays background
+    set(10, 40, 10, encodeVoxel(-900));      // exactly at the threshold: (0,1,0)
+    set(80, 40, 10, encodeVoxel(-901));      // just below it: (2,1,0) stays background
   }
 };
 
@@ -180,8 +179,7 @@ TEST(BlockedVolume, AllBackgroundBlocksShareOneStoredDummy) {
     EXPECT_EQ(blocked.blockVoxels(block), dummy);
   }
   ASSERT_NE(dummy, nullptr);
-  EXPECT_TRUE(
-      std::all_of(dummy, dummy + kStoredBlockVoxels, [](Voxel v) { return v == kDummyVoxel; }));
+  EXPECT_TRUE(std::all_of(dummy, dummy + kStoredBlockVoxels, [](Voxel v) { return v == kDummyVoxel; }));
   EXPECT_EQ(blocked.storage.size(), (4 + 1) * kStoredBlockVoxels);  // 4 stored + the dummy
 }
 
@@ -197,8 +195,7 @@ TEST(BlockedVolume, SingleVoxelVolume) {
   EXPECT_EQ(blocked.minDensity[0], densityOfHu(250));
   EXPECT_EQ(blocked.maxDensity[0], densityOfHu(250));
 
-  const BlockedVolume air =
-      buildBlockedVolume(makeVolume({1, 1, 1}, {1, 1, 1}, encodeVoxel(-1000)));
+  const BlockedVolume air = buildBlockedVolume(makeVolume({1, 1, 1}, {1, 1, 1}, encodeVoxel(-1000)));
   EXPECT_TRUE(air.isBackground(0));
   EXPECT_EQ(air.storage.size(), kStoredBlockVoxels);
 }
@@ -267,8 +264,7 @@ TEST(BlockedVolume, BlockLocalReadsEqualClampedSampling) {
       EXPECT_EQ(atVoxel.gradient(v), voxelGradient(volume, v));
       EXPECT_EQ(atVoxel.mean(v), meanDensity(volume, v));
       const Cell cell = cellAt(volume, q);
-      EXPECT_EQ(BlockReader(blocked, cell.base).trilinearDensity(cell),
-                trilinearDensity(volume, cell));
+      EXPECT_EQ(BlockReader(blocked, cell.base).trilinearDensity(cell), trilinearDensity(volume, cell));
     }
   }
 }
@@ -400,13 +396,12 @@ TEST(BlockedVolume, DISABLED_PhantomBlockingReport) {
     report = blockingReport(volume, ctaLikeTable());
     buildMs.push_back(report.buildMs);
     classifyMs.push_back(report.classifyMs);
-    std::printf("run %d: build %.1f ms, classify %.4f ms\n", run, report.buildMs,
-                report.classifyMs);
+    std::printf("run %d: build %.1f ms, classify %.4f ms\n", run, report.buildMs, report.classifyMs);
   }
   std::sort(buildMs.begin(), buildMs.end());
   std::sort(classifyMs.begin(), classifyMs.end());
-  std::printf("%dx%dx%d: %d blocks, %d background (dummy), %d visible (CTA-like TF)\n",
-              volume.dims.x, volume.dims.y, volume.dims.z, report.blocks, report.backgroundBlocks,
+  std::printf("%dx%dx%d: %d blocks, %d background (dummy), %d visible (CTA-like TF)\n", volume.dims.x,
+              volume.dims.y, volume.dims.z, report.blocks, report.backgroundBlocks,
               report.visibleBlocks);
   std::printf(
       "median build %.1f ms, median classify %.4f ms, memory %.1f MiB, raw %.1f MiB, ratio %.3f\n",

@@ -33,7 +33,10 @@ struct Case {
 
 std::string describe(const Case& c) {
   return std::string("axis ") + toString(c.axis) + " " + toString(c.quality) +
-         (c.mip ? " mip" : c.shading ? " shaded" : " unshaded") + " angle " + std::to_string(c.angle);
+         (c.mip       ? " mip"
+          : c.shading ? " shaded"
+                      : " unshaded") +
+         " angle " + std::to_string(c.angle);
 }
 
 // Renders each case with both raycasters, ERT off, and compares.
@@ -90,10 +93,12 @@ TEST(FastRaycaster, MatchesReferenceOnPhantom) {
 
 TEST(FastRaycaster, MatchesReferenceOnRealAorta) {
   const std::filesystem::path aorta = std::filesystem::path(ANGIORAY_SHARED_DATA) / "aorta.mha";
-  ASSERT_TRUE(std::filesystem::exists(aorta)) << aorta << " (../shared/data is beside every checkout and CI)";
+  ASSERT_TRUE(std::filesystem::exists(aorta))
+      << aorta << " (../shared/data is beside every checkout and CI)";
   const Volume volume = readVolume(aorta).volume;
   // Fitted to this dataset's uncalibrated values (lumen ~1200-2400).
-  const TransferFunction tf = loadTransferFunction(std::string(ANGIORAY_TEST_DATA) + "/aorta-vmtk-tf.json");
+  const TransferFunction tf =
+      loadTransferFunction(std::string(ANGIORAY_TEST_DATA) + "/aorta-vmtk-tf.json");
   std::vector<Case> cases;
   for (int n = 0; n < 24; ++n) {
     const Axis axis = n % 3 == 0 ? Axis::k : n % 3 == 1 ? Axis::j : Axis::i;

@@ -14,8 +14,9 @@ namespace {
 
 struct Scene {
   Volume volume = generatePhantom({{48, 48, 96}, 3}).volume;
-  TfTable table = buildTable({"bone and vessels",
-                              {{-1024, {0, 0, 0}, 0}, {150, {1, 0.3f, 0.2f}, 0}, {400, {1, 1, 0.9f}, 0.5}}});
+  TfTable table =
+      buildTable({"bone and vessels",
+                  {{-1024, {0, 0, 0}, 0}, {150, {1, 0.3f, 0.2f}, 0}, {400, {1, 1, 0.9f}, 0.5}}});
   SliceTiles tiles = buildSliceTiles(volume, Axis::k);
   TileClassification visible{tiles, table};
 
@@ -95,7 +96,8 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
         const Image bundled = renderFast(scene.volume, visible, scene.table, p);
         ASSERT_TRUE(showsSomething(bundled));
         EXPECT_TRUE(renderFast(scene.volume, visible, scene.table, p, separate).pixels == bundled.pixels)
-            << toString(axis) << " " << toString(quality) << (mode == Compositing::mip ? " mip" : " dvr");
+            << toString(axis) << " " << toString(quality)
+            << (mode == Compositing::mip ? " mip" : " dvr");
       }
   }
 }

@@ -18,8 +18,8 @@ constexpr double kSlabHu = 300;
 TransferFunction stepTf(double opacity, double threshold = 100) {
   const glm::vec3 color(1.f, 0.5f, 0.25f);
   TransferFunction tf;
-  tf.points = {{-1024, color, 0}, {threshold - 1, color, 0}, {threshold, color, opacity},
-               {3071, color, opacity}};
+  tf.points = {
+      {-1024, color, 0}, {threshold - 1, color, 0}, {threshold, color, opacity}, {3071, color, opacity}};
   return tf;
 }
 
@@ -76,7 +76,8 @@ TEST(ReferenceRaycaster, GradientAcrossTheViewGivesAmbientOnly) {
   const TfTable table = buildTable(stepTf(0.05));
   RenderParams shaded = plainParams(1.0, 1.0, Filter::nearest);
   shaded.shading = {true, 0.3, 0.7};
-  const glm::vec4 plain = centrePixel(renderReference(volume, table, plainParams(1.0, 1.0, Filter::nearest)));
+  const glm::vec4 plain =
+      centrePixel(renderReference(volume, table, plainParams(1.0, 1.0, Filter::nearest)));
   const glm::vec4 dim = centrePixel(renderReference(volume, table, shaded));
   EXPECT_NEAR(dim.r, 0.3 * plain.r, 1e-5);
   EXPECT_NEAR(dim.a, plain.a, 1e-6);  // shading changes color, never opacity
@@ -118,7 +119,7 @@ TEST(ReferenceRaycaster, MipShowsKnownMaximumThroughWindow) {
   const int y = int(std::floor(view.height / 2.0 - 0.5 - (4.0 - view.centre.z) / view.pixelMm + 0.5));
   EXPECT_NEAR(image.at(x, y).r, 1.0, 1e-6);
   EXPECT_NEAR(image.at(2, y).r, 0.5, 1e-6);  // beside the patch the maximum is 0 HU
-  EXPECT_EQ(image.at(0, y).r, 0.f);           // a ray that misses the volume stays black
+  EXPECT_EQ(image.at(0, y).r, 0.f);          // a ray that misses the volume stays black
 }
 
 // Ball of radius r mm, opaque, in a 48^3 volume with anisotropic spacing.

@@ -84,7 +84,9 @@ TEST(RegionRendering, EachRegionUsesItsOwnTf) {
 TEST(RegionRendering, FastMatchesReferenceWithRegions) {
   const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
   TransferFunction vessels;
-  vessels.points = {{-1024, {0, 0, 0}, 0}, {150, {1, 0.2f, 0.1f}, 0}, {300, {1, 0.4f, 0.3f}, 0.6},
+  vessels.points = {{-1024, {0, 0, 0}, 0},
+                    {150, {1, 0.2f, 0.1f}, 0},
+                    {300, {1, 0.4f, 0.3f}, 0.6},
                     {3071, {1, 1, 1}, 0.8}};
   TransferFunction context = vessels;
   context.points[2].opacity = 0.05;
@@ -96,42 +98,43 @@ TEST(RegionRendering, FastMatchesReferenceWithRegions) {
                                                                          {nullptr, &contextTable}};
   for (Axis axis : {Axis::k, Axis::j})
     for (double angle : {20.0, 110.0})
-    for (Quality quality : {Quality::medium, Quality::high})
-    for (const auto& [contextTf, outsideTf] : contextAndOutside) {
-      RenderParams p;
-      p.axis = axis;
-      p.angleDeg = angle;
-      p.sampling = qualitySampling(quality);
-      p.sampling.ert = 1.0;
-      const ViewGeometry view = makeViewGeometry(volume, p);
-      // Per-pixel intervals that vary across the image: focus around depth 0 with a width that
-      // depends on x, a gap, context behind it.
-      RayRegions regions;
-      regions.width = view.width;
-      regions.height = view.height;
-      for (int y = 0; y < view.height; ++y)
-        for (int x = 0; x < view.width; ++x) {
+      for (Quality quality : {Quality::medium, Quality::high})
+        for (const auto& [contextTf, outsideTf] : contextAndOutside) {
+          RenderParams p;
+          p.axis = axis;
+          p.angleDeg = angle;
+          p.sampling = qualitySampling(quality);
+          p.sampling.ert = 1.0;
+          const ViewGeometry view = makeViewGeometry(volume, p);
+          // Per-pixel intervals that vary across the image: focus around depth 0 with a width that
+          // depends on x, a gap, context behind it.
+          RayRegions regions;
+          regions.width = view.width;
+          regions.height = view.height;
+          for (int y = 0; y < view.height; ++y)
+            for (int x = 0; x < view.width; ++x) {
+              regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+              const float half = 5.f + float((x * 7 + y * 3) % 40);
+              regions.intervals.push_back({-half, half, Region::focus});
+              regions.intervals.push_back({half + 7.3f, half + 60.f, Region::context});
+            }
           regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
-          const float half = 5.f + float((x * 7 + y * 3) % 40);
-          regions.intervals.push_back({-half, half, Region::focus});
-          regions.intervals.push_back({half + 7.3f, half + 60.f, Region::context});
+          const RegionTables tables{&regions, &focusTable, contextTf, outsideTf};
+          const SliceTiles tiles = buildSliceTiles(volume, axis);
+          const Image reference = renderReference(volume, tables, p);
+          const Image fast = renderFast(volume, TileClassification(tiles, tables), tables, p);
+          ASSERT_EQ(reference.pixels.size(), fast.pixels.size());
+          float worst = 0.f, brightest = 0.f;
+          for (std::size_t n = 0; n < fast.pixels.size(); ++n)
+            for (int c = 0; c < 4; ++c) {
+              worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
+              brightest = std::max(brightest, reference.pixels[n][c]);
+            }
+          EXPECT_LE(worst, 1.f / 255.f)
+              << "axis " << toString(axis) << " angle " << angle << " quality " << int(quality)
+              << (outsideTf ? " outside shown" : " outside clipped");
+          EXPECT_GT(brightest, 0.2f);  // the regions render something
         }
-      regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
-      const RegionTables tables{&regions, &focusTable, contextTf, outsideTf};
-      const SliceTiles tiles = buildSliceTiles(volume, axis);
-      const Image reference = renderReference(volume, tables, p);
-      const Image fast = renderFast(volume, TileClassification(tiles, tables), tables, p);
-      ASSERT_EQ(reference.pixels.size(), fast.pixels.size());
-      float worst = 0.f, brightest = 0.f;
-      for (std::size_t n = 0; n < fast.pixels.size(); ++n)
-        for (int c = 0; c < 4; ++c) {
-          worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
-          brightest = std::max(brightest, reference.pixels[n][c]);
-        }
-      EXPECT_LE(worst, 1.f / 255.f) << "axis " << toString(axis) << " angle " << angle << " quality "
-                                    << int(quality) << (outsideTf ? " outside shown" : " outside clipped");
-      EXPECT_GT(brightest, 0.2f);  // the regions render something
-    }
 }
 
 }  // namespace

@@ -28,8 +28,7 @@ TransferFunction randomTf(std::mt19937& rng, int count, double tinyOpacity) {
   for (int i = 0; i < count; ++i) {
     const int k = kind(rng);
     const double opacity = k == 0 ? 0.0 : k == 1 ? tinyOpacity : unit(rng);
-    tf.points.push_back(
-        point(hu(rng), {float(unit(rng)), float(unit(rng)), float(unit(rng))}, opacity));
+    tf.points.push_back(point(hu(rng), {float(unit(rng)), float(unit(rng)), float(unit(rng))}, opacity));
   }
   sortPoints(tf);
   return tf;

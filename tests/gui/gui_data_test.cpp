@@ -47,7 +47,8 @@ std::vector<std::uint8_t> rgb8Of(const fs::path& png) {
   EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::UINT8)) << png;
   const OIIO::ImageSpec& spec = image.spec();
   std::vector<std::uint8_t> pixels(std::size_t(spec.width) * spec.height * 3);
-  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, pixels.data());
+  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8,
+                   pixels.data());
   return pixels;
 }
 
@@ -66,8 +67,9 @@ class GuiData : public ::testing::Test {
 
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("angioray-gui-data-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-            "-" + std::to_string(::getpid()));
+           ("angioray-gui-data-" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
+            std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "config");
     if (const char* xdg = std::getenv("XDG_CONFIG_HOME")) savedXdg_ = xdg;
@@ -83,7 +85,8 @@ class GuiData : public ::testing::Test {
 
   GuiRun runScript(const std::string& steps, const std::string& extra = "") {
     std::ofstream(dir_ / "script.json") << steps;
-    return runAngioray(kGui + " --script " + file("script.json") + " --state-out " + file("end.json") + extra);
+    return runAngioray(kGui + " --script " + file("script.json") + " --state-out " + file("end.json") +
+                       extra);
   }
 
   // The start-up screen's state (its layout places the clicks).
@@ -103,9 +106,12 @@ fs::path GuiData::shared_, GuiData::volume_;
 TEST_F(GuiData, FileBrowserOpensAVolumeThatReplacesThePhantom) {
   const Json layout = startup()["runtime"]["layout"];
   const std::string steps = R"([
-    {"click": )" + centre(layout["data_open"]) + R"(}, {"wait_ms": 50},
-    {"key": "Ctrl+A"}, {"text": ")" + shared_.string() + R"("}, {"key": "Enter"}, {"wait_ms": 50},
-    {"screenshot": ")" + file("browser.png") + R"("},
+    {"click": )" + centre(layout["data_open"]) +
+                            R"(}, {"wait_ms": 50},
+    {"key": "Ctrl+A"}, {"text": ")" +
+                            shared_.string() + R"("}, {"key": "Enter"}, {"wait_ms": 50},
+    {"screenshot": ")" + file("browser.png") +
+                            R"("},
     {"key": "Ctrl+A"}, {"text": "small.mha"}, {"key": "Enter"},
     {"wait_level": "high"}])";
   const GuiRun run = runScript(steps);
@@ -129,7 +135,8 @@ TEST_F(GuiData, FileBrowserOpensAVolumeThatReplacesThePhantom) {
 TEST_F(GuiData, FileBrowserListsFoldersFirstThenVolumeFilesSortedByName) {
   const fs::path folder = dir_ / "listing";
   for (const char* sub : {"beta", "Alpha", "series", ".hidden"}) fs::create_directories(folder / sub);
-  for (const char* name : {"b.nii.gz", "A.MHA", "c.nrrd", "notes.txt", "d.nhdr", "e.mhd", "f.nii", ".x.mha"})
+  for (const char* name :
+       {"b.nii.gz", "A.MHA", "c.nrrd", "notes.txt", "d.nhdr", "e.mhd", "f.nii", ".x.mha"})
     std::ofstream(folder / name) << "x";
   std::ofstream slice(folder / "series" / "0001", std::ios::binary);  // DICOM: "DICM" at byte 128
   slice << std::string(128, '\0') << "DICM";
@@ -137,8 +144,8 @@ TEST_F(GuiData, FileBrowserListsFoldersFirstThenVolumeFilesSortedByName) {
   std::vector<std::string> names;
   for (const angio::BrowserEntry& entry : angio::listFolder(folder))
     names.push_back(entry.name + (entry.folder ? "/" : "") + (entry.dicomSeries ? " [DICOM]" : ""));
-  EXPECT_EQ(names, (std::vector<std::string>{"Alpha/", "beta/", "series/ [DICOM]", "A.MHA", "b.nii.gz", "c.nrrd",
-                                             "d.nhdr", "e.mhd", "f.nii"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"Alpha/", "beta/", "series/ [DICOM]", "A.MHA", "b.nii.gz",
+                                             "c.nrrd", "d.nhdr", "e.mhd", "f.nii"}));
   EXPECT_THROW(angio::listFolder(folder / "missing"), std::runtime_error);
 }
 
@@ -156,7 +163,8 @@ TEST_F(GuiData, ProgressCallbackCancelsALoad) {
 
 TEST_F(GuiData, CorruptFileKeepsThePreviousDatasetAndShowsTheError) {
   std::ofstream(dir_ / "corrupt.mha") << "ObjectType = Image\nNDims = banana\n";
-  const GuiRun run = runScript(R"([{"open": ")" + file("corrupt.mha") + R"("}, {"wait_level": "high"}])");
+  const GuiRun run =
+      runScript(R"([{"open": ")" + file("corrupt.mha") + R"("}, {"wait_level": "high"}])");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json end = readJson(dir_ / "end.json");
   const Json& data = end["runtime"]["data"];
@@ -174,10 +182,13 @@ TEST_F(GuiData, SavedSessionRestoresWithTheOptionAndTheLoadButton) {
   const std::string session = file("my-session.json");
   // Open the volume, turn 10 degrees, save the session.
   const std::string save = R"([
-    {"open": ")" + volume_.string() + R"("}, {"wait_level": "fast"},
+    {"open": ")" + volume_.string() +
+                           R"("}, {"wait_level": "fast"},
     {"key": "Shift+Left"},
-    {"click": )" + centre(layout["session_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" + session + R"("},
-    {"key": "Enter"}, {"click": )" + centre(layout["session_save"]) + R"(}, {"wait_level": "fast"}])";
+    {"click": )" + centre(layout["session_path"]) +
+                           R"(}, {"key": "Ctrl+A"}, {"text": ")" + session + R"("},
+    {"key": "Enter"}, {"click": )" +
+                           centre(layout["session_save"]) + R"(}, {"wait_level": "fast"}])";
   GuiRun run = runScript(save);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   ASSERT_TRUE(fs::exists(session));
@@ -195,8 +206,10 @@ TEST_F(GuiData, SavedSessionRestoresWithTheOptionAndTheLoadButton) {
 
   // The Load session button: the same, from the phantom.
   const std::string load = R"([
-    {"click": )" + centre(layout["session_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" + session + R"("},
-    {"key": "Enter"}, {"click": )" + centre(layout["session_load"]) + R"(}, {"wait_level": "high"}])";
+    {"click": )" + centre(layout["session_path"]) +
+                           R"(}, {"key": "Ctrl+A"}, {"text": ")" + session + R"("},
+    {"key": "Enter"}, {"click": )" +
+                           centre(layout["session_load"]) + R"(}, {"wait_level": "high"}])";
   run = runScript(load);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json loaded = readJson(dir_ / "end.json");
@@ -215,13 +228,16 @@ TEST_F(GuiData, CorruptSessionIsAOneLineError) {
 TEST_F(GuiData, LastSessionIsOfferedOnStartAndRestores) {
   fs::create_directories(dir_ / "config" / "angioray");
   std::ofstream(dir_ / "config" / "angioray" / "last-session.json")
-      << Json({{"dataset", volume_.string()}, {"view", {{"angle_deg", 45}, {"axis", "k"}}},
-               {"recent_files", {volume_.string()}}}).dump();
+      << Json({{"dataset", volume_.string()},
+               {"view", {{"angle_deg", 45}, {"axis", "k"}}},
+               {"recent_files", {volume_.string()}}})
+             .dump();
   const Json start = startup();
   EXPECT_EQ(start["runtime"]["data"]["session_offered"], volume_.string());
   EXPECT_EQ(start["runtime"]["data"]["recent_files"], Json({volume_.string()}));
-  const GuiRun run = runScript(R"([{"wait_ms": 200}, {"click": )" + centre(start["runtime"]["layout"]["session_restore"]) +
-                               R"(}, {"wait_level": "high"}])");
+  const GuiRun run =
+      runScript(R"([{"wait_ms": 200}, {"click": )" +
+                centre(start["runtime"]["layout"]["session_restore"]) + R"(}, {"wait_level": "high"}])");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json end = readJson(dir_ / "end.json");
   EXPECT_EQ(end["runtime"]["data"]["session_offered"], "");
@@ -236,14 +252,18 @@ TEST_F(GuiData, RotationSeriesFromTheExportSectionReproducesFromItsSidecars) {
   const Json layout = startup(" " + volume_.string())["runtime"]["layout"];
   const std::string folder = file("series");
   const std::string steps = R"([
-    {"click": )" + centre(layout["series_folder"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" + folder + R"("},
+    {"click": )" + centre(layout["series_folder"]) +
+                            R"(}, {"key": "Ctrl+A"}, {"text": ")" + folder + R"("},
     {"key": "Enter"},
-    {"click": )" + centre(layout["series_count"]) + R"(}, {"key": "Ctrl+A"}, {"text": "3"}, {"key": "Enter"},
-    {"click": )" + centre(layout["series_button"]) + R"(}, {"wait_level": "high"}])";
+    {"click": )" + centre(layout["series_count"]) +
+                            R"(}, {"key": "Ctrl+A"}, {"text": "3"}, {"key": "Enter"},
+    {"click": )" + centre(layout["series_button"]) +
+                            R"(}, {"wait_level": "high"}])";
   const GuiRun run = runScript(steps, " " + volume_.string());
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json end = readJson(dir_ / "end.json");
-  EXPECT_NE(end["runtime"]["message"].get<std::string>().find("exported 3 of 3 views"), std::string::npos)
+  EXPECT_NE(end["runtime"]["message"].get<std::string>().find("exported 3 of 3 views"),
+            std::string::npos)
       << end["runtime"]["message"];
   for (const char* name : {"view-000.png", "view-001.png", "view-002.png"}) {
     EXPECT_TRUE(fs::exists(fs::path(folder) / name)) << name;
@@ -253,8 +273,9 @@ TEST_F(GuiData, RotationSeriesFromTheExportSectionReproducesFromItsSidecars) {
   EXPECT_DOUBLE_EQ(last["view"]["angle_deg"].get<double>(), 240);  // 3 views over a full turn
   // `angioray render --params` renders the same pixels from the sidecar alone.
   const fs::path again = dir_ / "again.png";
-  const GuiRun render = runAngioray("render --params " + (fs::path(folder) / "view-002.png.json").string() +
-                                    " --out " + again.string());
+  const GuiRun render =
+      runAngioray("render --params " + (fs::path(folder) / "view-002.png.json").string() + " --out " +
+                  again.string());
   ASSERT_EQ(render.exitCode, 0) << render.output;
   EXPECT_EQ(rgb8Of(again), rgb8Of(fs::path(folder) / "view-002.png"));
 }

@@ -43,13 +43,16 @@ std::string at(const Json& rect, float dx = 8) {
                 (rect[1].get<float>() + rect[3].get<float>()) / 2);
   return text;
 }
-std::string middle(const Json& rect) { return at(rect, (rect[2].get<float>() - rect[0].get<float>()) / 2); }
+std::string middle(const Json& rect) {
+  return at(rect, (rect[2].get<float>() - rect[0].get<float>()) / 2);
+}
 
 struct Rgb8 {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgb;
   bool samePixel(const Rgb8& other, std::size_t n) const {
-    return rgb[3 * n] == other.rgb[3 * n] && rgb[3 * n + 1] == other.rgb[3 * n + 1] && rgb[3 * n + 2] == other.rgb[3 * n + 2];
+    return rgb[3 * n] == other.rgb[3 * n] && rgb[3 * n + 1] == other.rgb[3 * n + 1] &&
+           rgb[3 * n + 2] == other.rgb[3 * n + 2];
   }
 };
 
@@ -58,7 +61,8 @@ Rgb8 readRgb8(const fs::path& file) {
   EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::UINT8)) << file;
   Rgb8 out{image.spec().width, image.spec().height, {}};
   out.rgb.resize(std::size_t(out.width) * out.height * 3);
-  image.get_pixels(OIIO::ROI(0, out.width, 0, out.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, out.rgb.data());
+  image.get_pixels(OIIO::ROI(0, out.width, 0, out.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8,
+                   out.rgb.data());
   return out;
 }
 
@@ -70,7 +74,8 @@ std::string checksum(const Rgb8& image) {
 }
 
 // Pixels within `bandPx` (image-plane distance) of a footprint pixel.
-std::vector<std::uint8_t> dilated(const std::vector<std::uint8_t>& footprint, int width, int height, double bandPx) {
+std::vector<std::uint8_t> dilated(const std::vector<std::uint8_t>& footprint, int width, int height,
+                                  double bandPx) {
   std::vector<std::uint8_t> out(footprint.size(), 0);
   const int reach = int(std::ceil(bandPx));
   for (int y = 0; y < height; ++y)
@@ -103,7 +108,8 @@ Cut cutOf(const fs::path& sidecarFile) {
   cut.footprint = angio::focusFootprint(
       angio::buildRayRegions(volume, view, centerlines, sidecar.vesselGlyph->settings));
   // The band: pixel centres nearer than T to a footprint pixel centre (vessel/cpr_hybrid.h).
-  cut.reach = dilated(cut.footprint, view.width, view.height, sidecar.hybrid->transitionMm / view.pixelMm + 1e-6);
+  cut.reach = dilated(cut.footprint, view.width, view.height,
+                      sidecar.hybrid->transitionMm / view.pixelMm + 1e-6);
   return cut;
 }
 
@@ -126,7 +132,8 @@ class GuiHybrid : public angio::test_support::PhantomFolderTest {
  protected:
   const char* folderPrefix() const override { return "gui-hybrid"; }
   std::string gui(const std::string& extra) const {
-    return "gui " + file("phantom.nrrd") + " --headless" + kWindow + " --centerlines " + file("phantom.csv") + extra;
+    return "gui " + file("phantom.nrrd") + " --headless" + kWindow + " --centerlines " +
+           file("phantom.csv") + extra;
   }
   Json startLayout(const std::string& extra = "") {
     const auto run = runAngioray(gui(extra + " --state-out " + file("start.json")));
@@ -139,35 +146,43 @@ class GuiHybrid : public angio::test_support::PhantomFolderTest {
   }
   // Steps typing `path` into the export field and exporting, then waiting for the export.
   std::string exportSteps(const Json& layout, const std::string& name) const {
-    return R"({"click": )" + middle(layout["export_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" + file(name) +
-           R"("}, {"key": "Enter"}, {"click": )" + middle(layout["export_button"]) + R"(}, {"wait_level": "high"})";
+    return R"({"click": )" + middle(layout["export_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" +
+           file(name) + R"("}, {"key": "Enter"}, {"click": )" + middle(layout["export_button"]) +
+           R"(}, {"wait_level": "high"})";
   }
   std::string saveSessionSteps(const Json& layout, const std::string& name) const {
-    return R"({"click": )" + middle(layout["session_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" + file(name) +
-           R"("}, {"key": "Enter"}, {"click": )" + middle(layout["session_save"]) + R"(}, {"wait_ms": 50})";
+    return R"({"click": )" + middle(layout["session_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" +
+           file(name) + R"("}, {"key": "Enter"}, {"click": )" + middle(layout["session_save"]) +
+           R"(}, {"wait_ms": 50})";
   }
   // `render --params` of an export's sidecar, into another file; its pixels.
   Rgb8 rerender(const std::string& name) {
-    const auto run = runAngioray("render --params " + file(name + ".json") + " --out " + file("again-" + name));
+    const auto run =
+        runAngioray("render --params " + file(name + ".json") + " --out " + file("again-" + name));
     EXPECT_EQ(run.exitCode, 0) << run.output;
     return readRgb8(dir / ("again-" + name));
   }
-
 };
 
 TEST_F(GuiHybrid, CheckboxShowsTheCprInTheFootprintAndTheExportIsWhatRenderParamsRenders) {
   const Json layout = startLayout();
   ASSERT_TRUE(layout.contains("cpr_hybrid")) << layout;
   const std::string steps = R"([
-    {"click": )" + at(layout["vg_enable"]) + R"(}, {"move": [5, 5]}, {"wait_level": "high"},
-    )" + exportSteps(layout, "plain.png") + R"(, {"state": ")" + file("plain.json") + R"("},
-    {"click": )" + at(layout["cpr_hybrid"]) + R"(}, {"move": [5, 5]}, {"wait_level": "high"},
-    {"state": ")" + file("hybrid.json") + R"("},
-    )" + exportSteps(layout, "hybrid.png") + R"(, {"state": ")" + file("exported.json") + R"("}])";
+    {"click": )" + at(layout["vg_enable"]) +
+                            R"(}, {"move": [5, 5]}, {"wait_level": "high"},
+    )" + exportSteps(layout, "plain.png") +
+                            R"(, {"state": ")" + file("plain.json") + R"("},
+    {"click": )" + at(layout["cpr_hybrid"]) +
+                            R"(}, {"move": [5, 5]}, {"wait_level": "high"},
+    {"state": ")" + file("hybrid.json") +
+                            R"("},
+    )" + exportSteps(layout, "hybrid.png") +
+                            R"(, {"state": ")" + file("exported.json") + R"("}])";
   const auto run = runScript(steps);
   ASSERT_EQ(run.exitCode, 0) << run.output;
 
-  const Json plain = readJson("plain.json"), hybrid = readJson("hybrid.json"), exported = readJson("exported.json");
+  const Json plain = readJson("plain.json"), hybrid = readJson("hybrid.json"),
+             exported = readJson("exported.json");
   EXPECT_TRUE(plain["runtime"]["vessel_glyph"]["rendering"].get<bool>());
   EXPECT_FALSE(plain["runtime"]["vessel_glyph"]["hybrid"]["rendering"].get<bool>());
   const Json& state = hybrid["runtime"]["vessel_glyph"]["hybrid"];
@@ -198,8 +213,8 @@ TEST_F(GuiHybrid, CheckboxShowsTheCprInTheFootprintAndTheExportIsWhatRenderParam
 
   // Hard edge (transition 0): changed inside the footprint, untouched outside it.
   const Comparison c = compare(hybridPng, plainPng, cutOf(dir / "hybrid.png.json"));
-  std::printf("footprint %ld px, %ld changed; band %ld px, %ld changed; outside %ld changed\n", c.footprint,
-              c.changedInFootprint, c.band, c.changedInBand, c.changedOutside);
+  std::printf("footprint %ld px, %ld changed; band %ld px, %ld changed; outside %ld changed\n",
+              c.footprint, c.changedInFootprint, c.band, c.changedInBand, c.changedOutside);
   EXPECT_GT(c.footprint, 200);
   EXPECT_GT(c.changedInFootprint, c.footprint / 2);
   EXPECT_EQ(c.changedOutside, 0);
@@ -213,17 +228,20 @@ TEST_F(GuiHybrid, SessionCarriesPathBandAndColoringInAndOut) {
   Json session = readJson("base.json");
   ASSERT_TRUE(session["cpr"].is_object()) << session;
   EXPECT_FALSE(session["cpr"]["hybrid"].get<bool>());
-  session["cpr"].update(Json{{"hybrid", true}, {"path", 0}, {"transition_mm", 3}, {"colouring", "calcium"}});
+  session["cpr"].update(
+      Json{{"hybrid", true}, {"path", 0}, {"transition_mm", 3}, {"colouring", "calcium"}});
   std::ofstream(dir / "in.json") << session.dump();
 
   const Json layout = startLayout(" --session " + file("in.json"));
   const std::string steps = R"([{"wait_level": "high"}, {"state": ")" + file("hybrid.json") + R"("},
-    )" + exportSteps(layout, "hybrid.png") + ", " + saveSessionSteps(layout, "out.json") + "]";
+    )" + exportSteps(layout, "hybrid.png") +
+                            ", " + saveSessionSteps(layout, "out.json") + "]";
   const auto run = runScript(steps, " --session " + file("in.json"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
 
   const Json hybrid = readJson("hybrid.json");
-  EXPECT_TRUE(hybrid["runtime"]["vessel_glyph"]["enabled"].get<bool>());  // the hybrid implies VesselGlyph
+  EXPECT_TRUE(
+      hybrid["runtime"]["vessel_glyph"]["enabled"].get<bool>());  // the hybrid implies VesselGlyph
   const Json& state = hybrid["runtime"]["vessel_glyph"]["hybrid"];
   EXPECT_TRUE(state["rendering"].get<bool>()) << state;
   EXPECT_EQ(state["path"], 0);
@@ -245,8 +263,10 @@ TEST_F(GuiHybrid, SessionCarriesPathBandAndColoringInAndOut) {
   std::ofstream(dir / "vg.png.json") << plainSidecar.dump();
   const Rgb8 plain = rerender("vg.png");
   const Comparison c = compare(hybridPng, plain, cutOf(dir / "hybrid.png.json"));
-  std::printf("path 0, 3 mm band: footprint %ld px, %ld changed; band %ld px, %ld changed; outside %ld changed\n",
-              c.footprint, c.changedInFootprint, c.band, c.changedInBand, c.changedOutside);
+  std::printf(
+      "path 0, 3 mm band: footprint %ld px, %ld changed; band %ld px, %ld changed; outside %ld "
+      "changed\n",
+      c.footprint, c.changedInFootprint, c.band, c.changedInBand, c.changedOutside);
   EXPECT_GT(c.footprint, 100);
   EXPECT_GT(c.changedInFootprint, c.footprint / 2);
   EXPECT_GT(c.changedInBand, 0);  // the CPR fades out over the band
@@ -266,7 +286,8 @@ TEST_F(GuiHybrid, BadSessionHybridSettingIsOneLineNamingTheFile) {
   EXPECT_NE(run.output.find("bad.json"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("colouring"), std::string::npos) << run.output;
   std::ofstream(dir / "far.json") << R"({"cpr": {"transition_mm": -1}})";
-  EXPECT_NE(runAngioray(gui(" --session " + file("far.json") + " --screenshot " + file("x.png"))).exitCode, 0);
+  EXPECT_NE(
+      runAngioray(gui(" --session " + file("far.json") + " --screenshot " + file("x.png"))).exitCode, 0);
 }
 
 }  // namespace

@@ -61,9 +61,9 @@ class GuiSessionVessel : public angio::test_support::PhantomFolderTest {
     return readJson("start.json")["runtime"]["layout"];
   }
   std::string saveSessionSteps(const Json& layout, const std::string& name) const {
-    return R"({"click": )" + across(layout["session_path"], 0.5f) + R"(}, {"key": "Ctrl+A"}, {"text": ")" +
-           file(name) + R"("}, {"key": "Enter"}, {"click": )" + across(layout["session_save"], 0.5f) +
-           R"(}, {"wait_ms": 50})";
+    return R"({"click": )" + across(layout["session_path"], 0.5f) +
+           R"(}, {"key": "Ctrl+A"}, {"text": ")" + file(name) + R"("}, {"key": "Enter"}, {"click": )" +
+           across(layout["session_save"], 0.5f) + R"(}, {"wait_ms": 50})";
   }
 };
 
@@ -79,19 +79,24 @@ std::string vesselSteps(const Json& layout) {
   steps += R"({"click": )" + across(layout["vg_focus_radius"], 0.3f) + "}, ";
   steps += R"({"click": )" + leftEnd(layout["vg_edit_focus"]) + R"(}, {"wait_ms": 50}, )";
   steps += R"({"double_click": )" + across(layout["tf_plot"], 0.5f) + R"(}, {"move": [5, 5]}, )";
-  steps += R"({"click": )" + leftEnd(layout["vg_edit_main"]) + R"(}, {"move": [5, 5]}, {"wait_level": "high"})";
+  steps += R"({"click": )" + leftEnd(layout["vg_edit_main"]) +
+           R"(}, {"move": [5, 5]}, {"wait_level": "high"})";
   return steps;
 }
 
 TEST_F(GuiSessionVessel, SavedVesselGlyphSessionReopensWithTheSameSettingsAndImage) {
   const Json start = startLayout();
   // Where the Session section's widgets are once the panel has changed (one run to find out).
-  auto run = runScript("probe.json", "[" + vesselSteps(start) + R"(, {"state": ")" + file("probe-state.json") + "\"}]", "");
+  auto run =
+      runScript("probe.json",
+                "[" + vesselSteps(start) + R"(, {"state": ")" + file("probe-state.json") + "\"}]", "");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json changedLayout = readJson("probe-state.json")["runtime"]["layout"];
 
-  run = runScript("save.json", "[" + vesselSteps(start) + R"(, {"state": ")" + file("before.json") + "\"}, " +
-                                   saveSessionSteps(changedLayout, "vg-session.json") + "]", "");
+  run = runScript("save.json",
+                  "[" + vesselSteps(start) + R"(, {"state": ")" + file("before.json") + "\"}, " +
+                      saveSessionSteps(changedLayout, "vg-session.json") + "]",
+                  "");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json before = readJson("before.json");
   const Json& vg = before["runtime"]["vessel_glyph"];
@@ -106,7 +111,7 @@ TEST_F(GuiSessionVessel, SavedVesselGlyphSessionReopensWithTheSameSettingsAndIma
   EXPECT_EQ(vg["context"].get<std::string>().rfind("tube:", 0), 0u) << vg["context"];
   const std::string focus = vg["focus"];
   EXPECT_NE(focus.find("mm"), std::string::npos) << focus;
-  EXPECT_NE(focus, "circle:radius=5mm");  // the slider moved it off the mm button's default
+  EXPECT_NE(focus, "circle:radius=5mm");     // the slider moved it off the mm button's default
   EXPECT_NE(vg["focus_tf"], "cta-vessels");  // edited
   EXPECT_EQ(vg["tf_editing"], "main");
   EXPECT_EQ(before["runtime"]["shown"]["level"], "high");
@@ -115,18 +120,20 @@ TEST_F(GuiSessionVessel, SavedVesselGlyphSessionReopensWithTheSameSettingsAndIma
   const Json saved = readJson("vg-session.json");
   ASSERT_TRUE(saved["vessel_glyph"].is_object()) << saved;
   EXPECT_EQ(saved["vessel_glyph"]["centerlines"], file("phantom.csv"));
-  EXPECT_EQ(saved["vessel_glyph"]["centerlines_absolute"], fs::path(file("phantom.csv")).lexically_normal().string());
+  EXPECT_EQ(saved["vessel_glyph"]["centerlines_absolute"],
+            fs::path(file("phantom.csv")).lexically_normal().string());
   EXPECT_EQ(saved["vessel_glyph"]["focus_tf"], before["state"]["vessel_glyph"]["focus_tf"]);
   EXPECT_EQ(saved["vessel_glyph"]["context"]["shape"], "tube");
   EXPECT_TRUE(saved["cpr"]["hybrid"].get<bool>());
 
   // Another process from the session alone (no VOLUME, no --centerlines).
-  run = runAngioray(gui(" --session " + file("vg-session.json") + " --state-out " + file("reopened.json")));
+  run = runAngioray(
+      gui(" --session " + file("vg-session.json") + " --state-out " + file("reopened.json")));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json reopened = readJson("reopened.json");
   const Json& again = reopened["runtime"]["vessel_glyph"];
-  for (const char* key : {"enabled", "rendering", "overlay", "centerlines", "paths", "focus", "context", "outside",
-                          "cleft", "half_vessel", "focus_tf", "context_tf", "error"})
+  for (const char* key : {"enabled", "rendering", "overlay", "centerlines", "paths", "focus", "context",
+                          "outside", "cleft", "half_vessel", "focus_tf", "context_tf", "error"})
     EXPECT_EQ(again[key], vg[key]) << key;
   EXPECT_EQ(again["hybrid"], vg["hybrid"]);
   EXPECT_EQ(reopened["state"]["vessel_glyph"], before["state"]["vessel_glyph"]);
@@ -143,10 +150,13 @@ TEST_F(GuiSessionVessel, SessionWithAMissingOrBrokenCenterlineFileOpensWithTheEr
   for (const std::string name : {"gone.csv", "broken.csv"}) {
     Json session = readJson("base.json");
     session["view"]["angle_deg"] = 30;
-    session["vessel_glyph"].update(Json{{"centerlines", name}, {"centerlines_absolute", file(name)},
-                                        {"enabled", true}, {"cleft", true}});
+    session["vessel_glyph"].update(Json{{"centerlines", name},
+                                        {"centerlines_absolute", file(name)},
+                                        {"enabled", true},
+                                        {"cleft", true}});
     std::ofstream(dir / "in.json") << session.dump();
-    const auto run = runAngioray(gui(" --session " + file("in.json") + " --state-out " + file("open.json")));
+    const auto run =
+        runAngioray(gui(" --session " + file("in.json") + " --state-out " + file("open.json")));
     ASSERT_EQ(run.exitCode, 0) << name << ": " << run.output;
     const Json state = readJson("open.json");
     const Json& vg = state["runtime"]["vessel_glyph"];

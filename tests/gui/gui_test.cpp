@@ -43,7 +43,8 @@ struct Rect {
 };
 
 Rect rectOf(const Json& layout) {
-  return {layout[0].get<float>(), layout[1].get<float>(), layout[2].get<float>(), layout[3].get<float>()};
+  return {layout[0].get<float>(), layout[1].get<float>(), layout[2].get<float>(),
+          layout[3].get<float>()};
 }
 
 // Mean absolute RGB difference (0..255) over a rectangle of two same-size screenshots.
@@ -73,9 +74,10 @@ std::string point(float x, float y) {
 class Gui : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = fs::temp_directory_path() /
-          ("angioray-gui-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-           "-" + std::to_string(::getpid()));
+    dir =
+        fs::temp_directory_path() /
+        ("angioray-gui-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+         "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
   }
@@ -105,7 +107,7 @@ class Gui : public ::testing::Test {
 
 TEST_F(Gui, HeadlessWithoutScriptShowsTheHighImageWithOrientation) {
   const GuiRun run = runAngioray("gui --headless" + kSmall + " --screenshot " + file("start.png") +
-                              " --state-out " + file("state.json"));
+                                 " --state-out " + file("state.json"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   OIIO::ImageBuf shot(file("start.png"));
   ASSERT_TRUE(shot.read());
@@ -116,7 +118,8 @@ TEST_F(Gui, HeadlessWithoutScriptShowsTheHighImageWithOrientation) {
   const Json& runtime = state["runtime"];
   EXPECT_EQ(runtime["shown"]["level"], "high");
   EXPECT_EQ(runtime["shown"]["request"], runtime["newest_request"]);
-  for (const char* level : {"fast", "medium", "high"}) EXPECT_TRUE(runtime["levels"].contains(level)) << level;
+  for (const char* level : {"fast", "medium", "high"})
+    EXPECT_TRUE(runtime["levels"].contains(level)) << level;
   // Axis k, angle 0: the anterior view (rendering model).
   EXPECT_EQ(runtime["orientation"]["right"], "L");
   EXPECT_EQ(runtime["orientation"]["left"], "R");
@@ -136,13 +139,17 @@ TEST_F(Gui, HeadlessWithoutScriptShowsTheHighImageWithOrientation) {
 
 TEST_F(Gui, LeftDragRotatesAndChangesTheImage) {
   const std::string steps = R"([
-    {"wait_level": "high"}, {"state": ")" + file("before.json") + R"("},
-    {"screenshot": ")" + file("before.png") + R"("},
+    {"wait_level": "high"}, {"state": ")" +
+                            file("before.json") + R"("},
+    {"screenshot": ")" + file("before.png") +
+                            R"("},
     {"press": [300, 300]}, {"move": [320, 300]}, {"move": [340, 300]}, {"move": [360, 300]},
-    {"wait_ms": 400}, {"state": ")" + file("held.json") + R"("},
+    {"wait_ms": 400}, {"state": ")" +
+                            file("held.json") + R"("},
     {"release": [360, 300]},
     {"wait_level": "high"},
-    {"screenshot": ")" + file("after.png") + R"("}])";
+    {"screenshot": ")" + file("after.png") +
+                            R"("}])";
   const GuiRun run = runScript(steps);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json before = readJson(dir / "before.json"), held = readJson(dir / "held.json"),
@@ -183,12 +190,13 @@ TEST_F(Gui, LatencyBreakdownAccountsForEveryInputAndAddsUp) {
   ASSERT_GE(traced, 1);
   EXPECT_LE(traced + latency["superseded_requests"].get<int>(), inputs);
   int byLevel = 0;
-  for (const char* level : {"fast", "medium", "high"}) byLevel += latency["first_frame_levels"][level].get<int>();
+  for (const char* level : {"fast", "medium", "high"})
+    byLevel += latency["first_frame_levels"][level].get<int>();
   EXPECT_EQ(byLevel, traced);
   EXPECT_GE(latency["first_frame_levels"]["fast"].get<int>(), 1);  // the drag's images
   double sum = 0;
-  for (const char* name : {"input_to_request", "request_to_pickup", "pickup_to_render", "render", "publish",
-                           "publish_to_ui", "upload", "present"}) {
+  for (const char* name : {"input_to_request", "request_to_pickup", "pickup_to_render", "render",
+                           "publish", "publish_to_ui", "upload", "present"}) {
     SCOPED_TRACE(name);
     EXPECT_EQ(stage[name]["count"].get<int>(), traced);
     EXPECT_GE(stage[name]["min"].get<double>(), 0);
@@ -198,7 +206,8 @@ TEST_F(Gui, LatencyBreakdownAccountsForEveryInputAndAddsUp) {
   }
   EXPECT_NEAR(sum, stage["total"]["mean"].get<double>(), 1e-6 * stage["total"]["mean"].get<double>());
   EXPECT_NEAR(stage["worker_busy"]["mean"].get<double>() + stage["wake"]["mean"].get<double>(),
-              stage["request_to_pickup"]["mean"].get<double>(), 1e-6 * (1 + stage["total"]["mean"].get<double>()));
+              stage["request_to_pickup"]["mean"].get<double>(),
+              1e-6 * (1 + stage["total"]["mean"].get<double>()));
 }
 
 TEST_F(Gui, ArrowKeysTurnByOneAndShiftByTenDegrees) {
@@ -214,7 +223,8 @@ TEST_F(Gui, WheelZoomsRightDragPansDoubleClickResets) {
   const std::string steps = R"([
     {"wheel": {"at": [200, 200], "delta": 2}},
     {"drag": {"from": [300, 300], "to": [340, 320], "button": 1, "steps": 4}},
-    {"state": ")" + file("zoomed.json") + R"("},
+    {"state": ")" + file("zoomed.json") +
+                            R"("},
     {"double_click": [300, 300]}])";
   const GuiRun run = runScript(steps);
   ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -236,8 +246,10 @@ TEST_F(Gui, TfEditChangesTheImageAndUndoRestoresIt) {
   const float x = plot.x0 + (plot.x1 - plot.x0) * float((-400.0 + 1024) / 4095);
   const float y = plot.y0 + (plot.y1 - plot.y0) * 0.1f;
   const std::string steps = R"([
-    {"double_click": )" + point(x, y) + R"(},
-    {"wait_level": "high"}, {"state": ")" + file("edited.json") + R"("},
+    {"double_click": )" + point(x, y) +
+                            R"(},
+    {"wait_level": "high"}, {"state": ")" +
+                            file("edited.json") + R"("},
     {"key": "Ctrl+Z"},
     {"wait_level": "high"}])";
   const GuiRun run = runScript(steps);
@@ -260,7 +272,8 @@ TEST_F(Gui, RightClickDeletesAControlPoint) {
   const Json& third = tf["points"][2];
   const float x = plot.x0 + (plot.x1 - plot.x0) * float((third["hu"].get<double>() + 1024) / 4095);
   const float y = plot.y1 - (plot.y1 - plot.y0) * third["opacity"].get<float>();
-  const GuiRun run = runScript(R"([{"click": )" + point(x, y) + R"(, "button": 1}, {"wait_level": "fast"}])");
+  const GuiRun run =
+      runScript(R"([{"click": )" + point(x, y) + R"(, "button": 1}, {"wait_level": "fast"}])");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json end = readJson(dir / "end.json");
   EXPECT_EQ(end["state"]["transfer_function"]["points"].size(), points - 1);
@@ -280,7 +293,8 @@ std::string checksumOfRgb8(const fs::path& png) {
   EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::UINT8));
   const OIIO::ImageSpec& spec = image.spec();
   std::vector<std::uint8_t> pixels(std::size_t(spec.width) * spec.height * 3);
-  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, pixels.data());
+  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8,
+                   pixels.data());
   std::uint64_t hash = 1469598103934665603ull;
   for (std::uint8_t byte : pixels) hash = (hash ^ byte) * 1099511628211ull;
   return std::to_string(hash);
@@ -291,9 +305,12 @@ TEST_F(Gui, ExportWritesTheShownHighImageAndASidecar) {
   const Json& layout = startup["runtime"]["layout"];
   const Rect path = rectOf(layout["export_path"]), button = rectOf(layout["export_button"]);
   const std::string steps = R"([
-    {"click": )" + point(path.midX(), path.midY()) + R"(}, {"key": "Ctrl+A"},
-    {"text": ")" + file("view.png") + R"("}, {"key": "Enter"},
-    {"click": )" + point(button.midX(), button.midY()) + R"(},
+    {"click": )" + point(path.midX(), path.midY()) +
+                            R"(}, {"key": "Ctrl+A"},
+    {"text": ")" + file("view.png") +
+                            R"("}, {"key": "Enter"},
+    {"click": )" + point(button.midX(), button.midY()) +
+                            R"(},
     {"wait_level": "high"}])";
   const GuiRun run = runScript(steps);
   ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -328,9 +345,10 @@ TEST_F(Gui, WindowUnderXvfbRotatesWithARealMouseDrag) {
   if (!installed("xdotool")) GTEST_SKIP() << "xdotool not installed (apt package xdotool)";
   const fs::path session = dir / "session.sh";
   // XDG_CONFIG_HOME: the window writes its last session there when it closes.
-  std::ofstream(session) << "XDG_CONFIG_HOME=" + file("config") + " " + std::string(ANGIORAY_BINARY) +
-      " gui --phantom-size 96x96x200 --size 800x600 --quit-after 60 --state-out " + file("window.json") +
-      " --screenshot " + file("window.png") + R"( &
+  std::ofstream(session)
+      << "XDG_CONFIG_HOME=" + file("config") + " " + std::string(ANGIORAY_BINARY) +
+             " gui --phantom-size 96x96x200 --size 800x600 --quit-after 60 --state-out " +
+             file("window.json") + " --screenshot " + file("window.png") + R"( &
 app=$!
 window=$(xdotool search --sync --onlyvisible --name '^angioray$' | head -1)
 sleep 1.5
@@ -339,7 +357,8 @@ sleep 1.5
 kill -TERM $app
 wait $app
 )";
-  const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1024x768x24' sh " + session.string() + " 2>&1";
+  const std::string command =
+      "timeout 90 xvfb-run -a -s '-screen 0 1024x768x24' sh " + session.string() + " 2>&1";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "exit status " << status;
   const Json state = readJson(dir / "window.json");

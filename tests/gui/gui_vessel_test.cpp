@@ -28,7 +28,8 @@ const std::string kWindow = " --size 1000x1400 --timeout 120";
 struct Box {
   float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   explicit Box(const Json& rect)
-      : x0(rect[0].get<float>()), y0(rect[1].get<float>()), x1(rect[2].get<float>()), y1(rect[3].get<float>()) {}
+      : x0(rect[0].get<float>()), y0(rect[1].get<float>()), x1(rect[2].get<float>()),
+        y1(rect[3].get<float>()) {}
   // A point inside the widget's left end (the box of a checkbox, the start of a text field).
   std::string leftEnd() const { return at(x0 + 8, (y0 + y1) / 2); }
   std::string middle() const { return at((x0 + x1) / 2, (y0 + y1) / 2); }
@@ -55,7 +56,6 @@ class GuiVessel : public angio::test_support::PhantomFolderTest {
     return runAngioray("gui " + file("phantom.nrrd") + " --headless" + kWindow + extra + " --script " +
                        file("script.json"));
   }
-
 };
 
 bool isOverlayColor(const float* rgb) { return rgb[0] < 0.45f && rgb[1] > 0.7f && rgb[2] > 0.8f; }
@@ -69,11 +69,16 @@ TEST_F(GuiVessel, EnablingVesselGlyphRerendersWithRegionsAndTheOverlayLiesOnTheV
   EXPECT_TRUE(vgStart["error"].get<std::string>().empty());
   const Json& layout = start["runtime"]["layout"];
   const std::string steps = R"([
-    {"wait_level": "high"}, {"screenshot": ")" + file("plain-overlay.png") + R"("},
-    {"click": )" + Box(layout["vg_overlay"]).leftEnd() + R"(}, {"move": [5, 5]}, {"wait_ms": 100},
-    {"screenshot": ")" + file("plain.png") + R"("}, {"state": ")" + file("plain.json") + R"("},
-    {"click": )" + Box(layout["vg_enable"]).leftEnd() + R"(}, {"move": [5, 5]},
-    {"wait_level": "high"}, {"state": ")" + file("vg.json") + R"("}])";
+    {"wait_level": "high"}, {"screenshot": ")" +
+                            file("plain-overlay.png") + R"("},
+    {"click": )" + Box(layout["vg_overlay"]).leftEnd() +
+                            R"(}, {"move": [5, 5]}, {"wait_ms": 100},
+    {"screenshot": ")" + file("plain.png") +
+                            R"("}, {"state": ")" + file("plain.json") + R"("},
+    {"click": )" + Box(layout["vg_enable"]).leftEnd() +
+                            R"(}, {"move": [5, 5]},
+    {"wait_level": "high"}, {"state": ")" +
+                            file("vg.json") + R"("}])";
   const auto run = runScript(steps, centerlines);
   ASSERT_EQ(run.exitCode, 0) << run.output;
 
@@ -83,7 +88,8 @@ TEST_F(GuiVessel, EnablingVesselGlyphRerendersWithRegionsAndTheOverlayLiesOnTheV
   EXPECT_TRUE(vg["runtime"]["vessel_glyph"]["enabled"].get<bool>());
   EXPECT_TRUE(vg["runtime"]["vessel_glyph"]["rendering"].get<bool>());
   EXPECT_EQ(vg["runtime"]["shown"]["level"], "high");
-  EXPECT_GT(vg["runtime"]["shown"]["request"].get<int>(), plain["runtime"]["shown"]["request"].get<int>());
+  EXPECT_GT(vg["runtime"]["shown"]["request"].get<int>(),
+            plain["runtime"]["shown"]["request"].get<int>());
   EXPECT_NE(vg["runtime"]["shown"]["checksum"], plain["runtime"]["shown"]["checksum"]);
 
   // The overlay's pixels: the centerlines projected with the shown view lie on rendered vessels
@@ -122,16 +128,21 @@ TEST_F(GuiVessel, BrokenCenterlineFileIsReportedAndTheAppKeepsRunning) {
   // Then the good file through the panel's path field and button.
   const Json& layout = start["runtime"]["layout"];
   const std::string steps = R"([
-    {"click": )" + Box(layout["vg_path"]).middle() + R"(}, {"key": "Ctrl+A"},
-    {"text": ")" + file("phantom.csv") + R"("}, {"key": "Enter"},
-    {"click": )" + Box(layout["vg_load"]).middle() + R"(}, {"wait_level": "high"},
-    {"state": ")" + file("loaded.json") + R"("}])";
+    {"click": )" + Box(layout["vg_path"]).middle() +
+                            R"(}, {"key": "Ctrl+A"},
+    {"text": ")" + file("phantom.csv") +
+                            R"("}, {"key": "Enter"},
+    {"click": )" + Box(layout["vg_load"]).middle() +
+                            R"(}, {"wait_level": "high"},
+    {"state": ")" + file("loaded.json") +
+                            R"("}])";
   const auto run = runScript(steps, " --centerlines " + file("broken.csv"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json loaded = readJson("loaded.json");
   EXPECT_EQ(loaded["runtime"]["vessel_glyph"]["paths"], 4);
   EXPECT_TRUE(loaded["runtime"]["vessel_glyph"]["error"].get<std::string>().empty());
-  EXPECT_NE(loaded["runtime"]["message"].get<std::string>().find("loaded 4 centerline paths"), std::string::npos);
+  EXPECT_NE(loaded["runtime"]["message"].get<std::string>().find("loaded 4 centerline paths"),
+            std::string::npos);
 }
 
 TEST_F(GuiVessel, TfEditorSwitchesToTheFocusTf) {
@@ -139,11 +150,16 @@ TEST_F(GuiVessel, TfEditorSwitchesToTheFocusTf) {
   const Json start = startState(centerlines);
   const Json& layout = start["runtime"]["layout"];
   const std::string steps = R"([
-    {"click": )" + Box(layout["vg_enable"]).leftEnd() + R"(}, {"wait_level": "high"},
-    {"state": ")" + file("before.json") + R"("},
-    {"click": )" + Box(layout["vg_edit_focus"]).leftEnd() + R"(}, {"wait_ms": 100},
-    {"double_click": )" + Box(layout["tf_plot"]).middle() + R"(}, {"move": [5, 5]},
-    {"wait_level": "high"}, {"state": ")" + file("after.json") + R"("}])";
+    {"click": )" + Box(layout["vg_enable"]).leftEnd() +
+                            R"(}, {"wait_level": "high"},
+    {"state": ")" + file("before.json") +
+                            R"("},
+    {"click": )" + Box(layout["vg_edit_focus"]).leftEnd() +
+                            R"(}, {"wait_ms": 100},
+    {"double_click": )" + Box(layout["tf_plot"]).middle() +
+                            R"(}, {"move": [5, 5]},
+    {"wait_level": "high"}, {"state": ")" +
+                            file("after.json") + R"("}])";
   const auto run = runScript(steps, centerlines);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const Json before = readJson("before.json"), after = readJson("after.json");
@@ -159,8 +175,10 @@ TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCpr
   const Json start = startState(centerlines);
   const Json& layout = start["runtime"]["layout"];
   const std::string open = R"([
-    {"click": )" + Box(layout["cpr_shown"]).leftEnd() + R"(}, {"move": [5, 5]}, {"wait_level": "high"},
-    {"state": ")" + file("cpr.json") + R"("}])";
+    {"click": )" + Box(layout["cpr_shown"]).leftEnd() +
+                           R"(}, {"move": [5, 5]}, {"wait_level": "high"},
+    {"state": ")" + file("cpr.json") +
+                           R"("}])";
   ASSERT_EQ(runScript(open, centerlines).exitCode, 0);
   const Json shown = readJson("cpr.json");
   const Json& cpr = shown["runtime"]["vessel_glyph"]["cpr"];
@@ -173,11 +191,15 @@ TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCpr
   const int centreColumn = cpr["width"].get<int>() / 2, row = int(60 / pixelMm);
   const Box image(shown["runtime"]["layout"]["cpr_image"]);
   const float scale = (image.x1 - image.x0) / cpr["width"].get<float>();
-  const std::string hover = Box::at(image.x0 + (centreColumn + 0.5f) * scale, image.y0 + (row + 0.5f) * scale);
+  const std::string hover =
+      Box::at(image.x0 + (centreColumn + 0.5f) * scale, image.y0 + (row + 0.5f) * scale);
   const std::string steps = R"([
-    {"click": )" + Box(layout["cpr_shown"]).leftEnd() + R"(}, {"move": [5, 5]}, {"wait_level": "high"},
-    {"move": )" + hover + R"(}, {"wait_ms": 100}, {"screenshot": ")" + file("hover.png") + R"("},
-    {"state": ")" + file("hover.json") + R"("}])";
+    {"click": )" + Box(layout["cpr_shown"]).leftEnd() +
+                            R"(}, {"move": [5, 5]}, {"wait_level": "high"},
+    {"move": )" + hover + R"(}, {"wait_ms": 100}, {"screenshot": ")" +
+                            file("hover.png") + R"("},
+    {"state": ")" + file("hover.json") +
+                            R"("}])";
   ASSERT_EQ(runScript(steps, centerlines).exitCode, 0);
   const Json hovered = readJson("hover.json")["runtime"]["vessel_glyph"]["cpr"]["hovered"];
   ASSERT_TRUE(hovered.is_object()) << hovered;
@@ -187,7 +209,8 @@ TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCpr
   // The mark on the DVR image sits on the overlay's projected centerline (within 2 pixels).
   OIIO::ImageBuf shot(file("hover.png"));
   ASSERT_TRUE(shot.read());
-  const int markX = int(hovered["dvr_screen"][0].get<float>()), markY = int(hovered["dvr_screen"][1].get<float>());
+  const int markX = int(hovered["dvr_screen"][0].get<float>()),
+            markY = int(hovered["dvr_screen"][1].get<float>());
   bool onOverlay = false;
   for (int y = markY - 2; y <= markY + 2; ++y)
     for (int x = markX - 2; x <= markX + 2; ++x) {
@@ -199,9 +222,12 @@ TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCpr
 
   // Clicking the DVR image at that mark puts the CPR cursor back on the hovered centerline point.
   const std::string click = R"([
-    {"click": )" + Box(layout["cpr_shown"]).leftEnd() + R"(}, {"move": [5, 5]}, {"wait_level": "high"},
-    {"click": )" + Box::at(float(hovered["dvr_screen"][0]), float(hovered["dvr_screen"][1])) + R"(},
-    {"move": [5, 5]}, {"wait_ms": 100}, {"state": ")" + file("click.json") + R"("}])";
+    {"click": )" + Box(layout["cpr_shown"]).leftEnd() +
+                            R"(}, {"move": [5, 5]}, {"wait_level": "high"},
+    {"click": )" + Box::at(float(hovered["dvr_screen"][0]), float(hovered["dvr_screen"][1])) +
+                            R"(},
+    {"move": [5, 5]}, {"wait_ms": 100}, {"state": ")" +
+                            file("click.json") + R"("}])";
   ASSERT_EQ(runScript(click, centerlines).exitCode, 0);
   const Json cursor = readJson("click.json")["runtime"]["vessel_glyph"]["cpr"]["cursor"];
   ASSERT_TRUE(cursor.is_object()) << cursor;

@@ -92,8 +92,11 @@ TEST_F(GuiPanels, WithoutInputNoPanelReturnsAnEdit) {
   for (int n = 0; n < 3; ++n) {
     EXPECT_FALSE(frame([&] { return drawViewPanel(document.view); }));
     EXPECT_FALSE(frame([&] { return drawRenderingPanel(document); }));
-    EXPECT_FALSE(frame([&] { return drawCprPanel(document.cpr, {&centerlines, false, "", ""}, rects); }));
-    const VesselGlyphPanelResult result = frame([&] { return drawVesselGlyphPanel(document.vesselGlyph, ui, vg, rects); });
+    EXPECT_FALSE(frame([&] {
+      return drawCprPanel(document.cpr, {&centerlines, false, "", ""}, rects);
+    }));
+    const VesselGlyphPanelResult result =
+        frame([&] { return drawVesselGlyphPanel(document.vesselGlyph, ui, vg, rects); });
     EXPECT_FALSE(result.edit);
     EXPECT_FALSE(result.loadCenterlines);
   }
@@ -156,7 +159,9 @@ TEST_F(GuiPanels, TheVesselGlyphPanelAsksForItsFileAndTurnsVesselGlyphOn) {
   WidgetRects rects;
   VesselGlyphPanelUi ui;
   VesselGlyphPanelInfo info;
-  const auto draw = [&] { return drawVesselGlyphPanel(workstation.document().vesselGlyph, ui, info, rects); };
+  const auto draw = [&] {
+    return drawVesselGlyphPanel(workstation.document().vesselGlyph, ui, info, rects);
+  };
   frame(draw);
   EXPECT_FALSE(rects.count("vg_enable"));  // nothing loaded: only the file field and the button
   ASSERT_TRUE(rects.count("vg_load"));
@@ -187,7 +192,8 @@ TEST_F(GuiPanels, TheViewportZoomsWithTheWheelAndTurnsWithALeftDrag) {
 
   frame([&] { return drawViewport(nullptr, view, overlay); }, middle, true);
   const ImVec2 right(middle.x + 10, middle.y);
-  const ViewportInteraction turned = frame([&] { return drawViewport(nullptr, view, overlay); }, right, true);
+  const ViewportInteraction turned =
+      frame([&] { return drawViewport(nullptr, view, overlay); }, right, true);
   EXPECT_DOUBLE_EQ(turned.rotateDegrees, -10 * view.degreesPerPixel);  // grab: the front moves right
   EXPECT_FALSE(turned.zoomedOrPanned);
 }

@@ -83,8 +83,8 @@ Document unusualSession() {
   vg.focusTf.points = {{100, {1.0f, 0.1f, 0.05f}, 0.0}, {400, {1.0f, 0.9f, 0.8f}, 0.95}};
   vg.focusTf.modulators = {0.5, -20};
   vg.contextTf.name = "my context";
-  vg.contextTf.points = {{-300, {0.3f, 0.3f, 0.3f}, 0.0}, {50, {0.8f, 0.6f, 0.5f}, 0.02},
-                         {900, {1.0f, 1.0f, 1.0f}, 0.1}};
+  vg.contextTf.points = {
+      {-300, {0.3f, 0.3f, 0.3f}, 0.0}, {50, {0.8f, 0.6f, 0.5f}, 0.02}, {900, {1.0f, 1.0f, 1.0f}, 0.1}};
   vg.focusPreset = "";
   vg.contextPreset = "soft-tissue-context";
   return s;
@@ -176,7 +176,8 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
 }
 
 TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
-  const Document loaded = loadSession(write("partial.json", R"({"dataset": "x.mha", "view": {"angle_deg": 90}})"));
+  const Document loaded =
+      loadSession(write("partial.json", R"({"dataset": "x.mha", "view": {"angle_deg": 90}})"));
   const Document defaults;
   EXPECT_EQ(loaded.dataset, "x.mha");
   EXPECT_DOUBLE_EQ(loaded.view.angleDeg, 90);
@@ -218,10 +219,11 @@ TEST_F(SessionFileTest, VesselGlyphSettingsUseTheSidecarsKeys) {
   saveSession(unusualSession(), file);
   std::ifstream in(file);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const char* key : {"\"vessel_glyph\"", "\"radius_mode\": \"mm\"", "\"radius_mode\": \"factor\"",
-                          "\"shape\": \"tube\"", "\"half_width_mm\"", "\"unknown_vessel_radius_mm\"",
-                          "\"simplify_tolerance_mm\"", "\"focus_tf\"", "\"context_tf\"", "\"outside\": \"main-tf\"",
-                          "\"centerlines_absolute\": \"/data/cta/cl/aorta.vtp\""})
+  for (const char* key :
+       {"\"vessel_glyph\"", "\"radius_mode\": \"mm\"", "\"radius_mode\": \"factor\"",
+        "\"shape\": \"tube\"", "\"half_width_mm\"", "\"unknown_vessel_radius_mm\"",
+        "\"simplify_tolerance_mm\"", "\"focus_tf\"", "\"context_tf\"", "\"outside\": \"main-tf\"",
+        "\"centerlines_absolute\": \"/data/cta/cl/aorta.vtp\""})
     EXPECT_NE(text.find(key), std::string::npos) << key;
 }
 
@@ -255,23 +257,31 @@ TEST_F(SessionFileTest, BadVesselGlyphValuesAreOneLineErrorsNamingTheKey) {
   expectRejected(vg(R"({"focus": {"radius": "wide"}})"), "vessel_glyph.focus.radius is not a number");
   expectRejected(vg(R"({"focus": {"radius": "NaN"}})"), "vessel_glyph.focus.radius is not a number");
   expectRejected(vg(R"({"focus": {"radius": NaN}})"), "not valid JSON");
-  expectRejected(vg(R"({"focus": {"radius_mode": "percent"}})"), "vessel_glyph.focus.radius_mode is not factor or mm");
+  expectRejected(vg(R"({"focus": {"radius_mode": "percent"}})"),
+                 "vessel_glyph.focus.radius_mode is not factor or mm");
   expectRejected(vg(R"({"focus": {"margin_mm": -1}})"), "vessel_glyph.focus.margin_mm");
   expectRejected(vg(R"({"focus": 2})"), "vessel_glyph.focus is not an object");
-  expectRejected(vg(R"({"context": {"shape": "cone"}})"), "vessel_glyph.context.shape is not none, slab or tube");
-  expectRejected(vg(R"({"context": {"front_mm": -5}})"), "vessel_glyph.context.front_mm -5 is out of range");
-  expectRejected(vg(R"({"context": {"back_mm": null}})"), "vessel_glyph.context.back_mm is not a number");
+  expectRejected(vg(R"({"context": {"shape": "cone"}})"),
+                 "vessel_glyph.context.shape is not none, slab or tube");
+  expectRejected(vg(R"({"context": {"front_mm": -5}})"),
+                 "vessel_glyph.context.front_mm -5 is out of range");
+  expectRejected(vg(R"({"context": {"back_mm": null}})"),
+                 "vessel_glyph.context.back_mm is not a number");
   expectRejected(vg(R"({"context": {"half_width_mm": "wide"}})"), "vessel_glyph.context.half_width_mm");
   expectRejected(vg(R"({"context": {"half_width_mm": -1}})"), "vessel_glyph.context.half_width_mm");
-  expectRejected(vg(R"({"context": {"tube": {"radius": -20}}})"), "vessel_glyph.context.tube.radius -20 is out of range");
+  expectRejected(vg(R"({"context": {"tube": {"radius": -20}}})"),
+                 "vessel_glyph.context.tube.radius -20 is out of range");
   expectRejected(vg(R"({"cleft": "yes"})"), "vessel_glyph.cleft is not true or false");
   expectRejected(vg(R"({"half_vessel": 0})"), "vessel_glyph.half_vessel is not true or false");
   expectRejected(vg(R"({"unknown_vessel_radius_mm": -1})"), "vessel_glyph.unknown_vessel_radius_mm");
-  expectRejected(vg(R"({"simplify_tolerance_mm": "x"})"), "vessel_glyph.simplify_tolerance_mm is not a number");
+  expectRejected(vg(R"({"simplify_tolerance_mm": "x"})"),
+                 "vessel_glyph.simplify_tolerance_mm is not a number");
   expectRejected(vg(R"({"outside": "dim"})"), "vessel_glyph.outside is not clip or main-tf");
   expectRejected(vg(R"({"focus_tf": 7})"), "vessel_glyph.focus_tf is not a transfer function");
-  expectRejected(vg(R"({"context_tf": {"name": "t", "points": [{"hu": 0}]}})"), "vessel_glyph.context_tf: ");
-  expectRejected(vg(R"({"focus_tf": null, "focus_preset": ""})"), "vessel_glyph.focus_tf is null and focus_preset empty");
+  expectRejected(vg(R"({"context_tf": {"name": "t", "points": [{"hu": 0}]}})"),
+                 "vessel_glyph.context_tf: ");
+  expectRejected(vg(R"({"focus_tf": null, "focus_preset": ""})"),
+                 "vessel_glyph.focus_tf is null and focus_preset empty");
 }
 
 TEST_F(SessionFileTest, MissingFileIsAnInputError) {

@@ -150,7 +150,8 @@ TEST(GuiWorkstation, ALoadedCenterlineFileIsRecordedAndNothingElseChanges) {
   expected.vesselGlyph.centerlines = "c.csv";
   expected.vesselGlyph.centerlinesAbsolute = "/data/c.csv";
   EXPECT_EQ(workstation.document(), expected);
-  workstation.apply(CenterlineFileEdit{});  // `gui --centerlines`: the session's file is not the one shown
+  workstation.apply(
+      CenterlineFileEdit{});  // `gui --centerlines`: the session's file is not the one shown
   EXPECT_EQ(workstation.document(), start);
 }
 

@@ -28,9 +28,8 @@ class CenterlineCsvTest : public test_support::TempFolderTest {
 
 TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
   Centerlines centerlines;
-  centerlines.paths = {
-      {"a", {{{1.0, -2.5, 3.25}, 10.0}, {{1.0, -2.5, 2.25}, 9.5}}},
-      {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
+  centerlines.paths = {{"a", {{{1.0, -2.5, 3.25}, 10.0}, {{1.0, -2.5, 2.25}, 9.5}}},
+                       {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
   const fs::path file = dir_ / "centerlines.csv";
   writeCenterlinesCsv(centerlines, file);
   EXPECT_EQ(fileContents(file),

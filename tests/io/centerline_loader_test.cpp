@@ -36,13 +36,13 @@ namespace fs = std::filesystem;
 // checks the reader against the real thing.
 
 struct VtpStyle {
-  std::string name;                  // for test output
-  std::string format = "binary";     // ascii | binary | appended
-  bool base64Appended = false;       // appended data as base64 instead of raw bytes
+  std::string name;               // for test output
+  std::string format = "binary";  // ascii | binary | appended
+  bool base64Appended = false;    // appended data as base64 instead of raw bytes
   bool zlib = false;
   bool uint64Header = false;
   bool bigEndian = false;
-  std::size_t blockBytes = 32768;    // uncompressed zlib block size (VTK's default)
+  std::size_t blockBytes = 32768;  // uncompressed zlib block size (VTK's default)
   std::string pointType = "Float32";
   std::string indexType = "Int64";
   std::string radiusName = "MaximumInscribedSphereRadius";  // "" = no radius array
@@ -138,8 +138,8 @@ std::string encodedStreams(const std::vector<std::string>& streams, bool asBase6
 // One <DataArray>, adding its bytes to `appended` when the style says so.
 std::string dataArrayXml(const Array& array, const VtpStyle& style, std::string& appended) {
   std::string xml = "<DataArray type=\"" + array.type + "\" Name=\"" + array.name +
-                    "\" NumberOfComponents=\"" + std::to_string(array.components) +
-                    "\" format=\"" + style.format + "\"";
+                    "\" NumberOfComponents=\"" + std::to_string(array.components) + "\" format=\"" +
+                    style.format + "\"";
   if (style.format == "ascii") return xml + ">\n" + asciiText(array) + "\n</DataArray>\n";
   const std::vector<std::string> streams = binaryStreams(valueBytes(array, style.bigEndian), style);
   if (style.format == "binary") {
@@ -166,15 +166,15 @@ std::string writeVtp(const Polylines& data, const VtpStyle& style) {
   }
   std::string appended;
   std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"" +
-                    std::string(style.bigEndian ? "BigEndian" : "LittleEndian") +
-                    "\" header_type=\"" + (style.uint64Header ? "UInt64" : "UInt32") + "\"" +
+                    std::string(style.bigEndian ? "BigEndian" : "LittleEndian") + "\" header_type=\"" +
+                    (style.uint64Header ? "UInt64" : "UInt32") + "\"" +
                     (style.zlib ? " compressor=\"vtkZLibDataCompressor\"" : "") + ">\n";
   xml += "  <PolyData>\n    <Piece NumberOfPoints=\"" + std::to_string(data.points.size()) +
          "\" NumberOfVerts=\"0\" NumberOfLines=\"" + std::to_string(data.lines.size()) +
          "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n      <PointData>\n";
   if (!style.radiusName.empty()) {
-    xml += dataArrayXml({"EdgeArray", "Float64", 1, std::vector<double>(data.points.size(), 7)},
-                        style, appended);
+    xml += dataArrayXml({"EdgeArray", "Float64", 1, std::vector<double>(data.points.size(), 7)}, style,
+                        appended);
     xml += dataArrayXml({style.radiusName, "Float64", 1, data.radii}, style, appended);
   }
   xml += "      </PointData>\n      <CellData>\n      </CellData>\n      <Points>\n";
@@ -278,19 +278,33 @@ std::vector<VtpStyle> allStyles() {
       {.name = "BinaryUInt64Header", .format = "binary", .uint64Header = true},
       {.name = "BinaryZlib", .format = "binary", .zlib = true},
       // Points and radii fill whole blocks, connectivity does not.
-      {.name = "BinaryZlibUInt64ManyBlocks", .format = "binary", .zlib = true, .uint64Header = true,
+      {.name = "BinaryZlibUInt64ManyBlocks",
+       .format = "binary",
+       .zlib = true,
+       .uint64Header = true,
        .blockBytes = 520},
-      {.name = "BinaryZlibBigEndian", .format = "binary", .zlib = true, .bigEndian = true,
+      {.name = "BinaryZlibBigEndian",
+       .format = "binary",
+       .zlib = true,
+       .bigEndian = true,
        .blockBytes = 300},
-      {.name = "BinaryFloat64Radius", .format = "binary", .pointType = "Float64",
+      {.name = "BinaryFloat64Radius",
+       .format = "binary",
+       .pointType = "Float64",
        .radiusName = "Radius"},
       {.name = "AppendedRaw", .format = "appended"},
       {.name = "AppendedRawZlib", .format = "appended", .zlib = true, .blockBytes = 256},
-      {.name = "AppendedRawBigEndianUInt64", .format = "appended", .uint64Header = true,
+      {.name = "AppendedRawBigEndianUInt64",
+       .format = "appended",
+       .uint64Header = true,
        .bigEndian = true},
       {.name = "AppendedBase64", .format = "appended", .base64Appended = true},
-      {.name = "AppendedBase64ZlibUInt64", .format = "appended", .base64Appended = true,
-       .zlib = true, .uint64Header = true, .blockBytes = 1000},
+      {.name = "AppendedBase64ZlibUInt64",
+       .format = "appended",
+       .base64Appended = true,
+       .zlib = true,
+       .uint64Header = true,
+       .blockBytes = 1000},
   };
 }
 
@@ -318,9 +332,9 @@ TEST_F(CenterlineVtp, PrefersMaximumInscribedSphereRadiusOverRadius) {
   std::string xml = writeVtp(data, style("", "ascii"));
   std::string ninetyNines;
   for (int n = 0; n < 130; ++n) ninetyNines += "99 ";
-  xml.insert(xml.find("<PointData>") + 11,
-             "<DataArray type=\"Float64\" Name=\"Radius\" format=\"ascii\">" + ninetyNines +
-                 "</DataArray>");
+  xml.insert(
+      xml.find("<PointData>") + 11,
+      "<DataArray type=\"Float64\" Name=\"Radius\" format=\"ascii\">" + ninetyNines + "</DataArray>");
   const Centerlines loaded = loadCenterlines(write("both.vtp", xml));
   expectMatches(loaded, data, 1e-9);
 }
@@ -373,35 +387,48 @@ std::vector<Broken> brokenVtps() {
       {"NotPolyData", replaced(ascii, "type=\"PolyData\"", "type=\"ImageData\""), "not PolyData"},
       {"ConnectivityOutOfRange", writeVtp(outOfRange, style("", "binary")),
        "point index 130 out of range (130 points)"},
-      {"RadiusCountWrongAscii", replaced(ascii, "Name=\"MaximumInscribedSphereRadius\" NumberOfComponents=\"1\" format=\"ascii\">\n2 ",
-                                         "Name=\"MaximumInscribedSphereRadius\" NumberOfComponents=\"1\" format=\"ascii\">\n"),
+      {"RadiusCountWrongAscii",
+       replaced(ascii,
+                "Name=\"MaximumInscribedSphereRadius\" NumberOfComponents=\"1\" format=\"ascii\">\n2 ",
+                "Name=\"MaximumInscribedSphereRadius\" NumberOfComponents=\"1\" format=\"ascii\">\n"),
        "DataArray 'MaximumInscribedSphereRadius': has 129 values, expected 130"},
-      {"PointCountWrongBinary", replaced(writeVtp(good, style("", "binary")), "NumberOfPoints=\"130\"", "NumberOfPoints=\"131\""),
+      {"PointCountWrongBinary",
+       replaced(writeVtp(good, style("", "binary")), "NumberOfPoints=\"130\"", "NumberOfPoints=\"131\""),
        "DataArray 'Points': holds 1560 bytes, expected 1572"},
       {"PointCountWrongZlib", replaced(zlibFile, "NumberOfPoints=\"130\"", "NumberOfPoints=\"129\""),
        "DataArray 'Points': holds 1560 bytes, expected 1548"},
-      {"TwoComponentPoints", replaced(ascii, "Name=\"Points\" NumberOfComponents=\"3\"", "Name=\"Points\" NumberOfComponents=\"2\""),
+      {"TwoComponentPoints",
+       replaced(ascii, "Name=\"Points\" NumberOfComponents=\"3\"",
+                "Name=\"Points\" NumberOfComponents=\"2\""),
        "has 2 components, expected 3"},
-      {"NanPointAscii", writeVtp(nanPoint, style("", "ascii")), "path '1': point 50: coordinate is not finite"},
+      {"NanPointAscii", writeVtp(nanPoint, style("", "ascii")),
+       "path '1': point 50: coordinate is not finite"},
       {"NanPointBinary", writeVtp(nanPoint, zlibStyle), "path '1': point 50: coordinate is not finite"},
       {"NegativeRadius", writeVtp(negativeRadius, style("", "appended")), "point 5: negative radius"},
       {"EmptyLine", writeVtp(emptyLine, style("", "binary")), "path '2': has no points"},
       {"NoLines", writeVtp(noLines, style("", "binary")), "contains no centerline paths"},
-      {"NotANumber", replaced(ascii, "format=\"ascii\">\n2 ", "format=\"ascii\">\ntwo "), "'two' is not a number"},
+      {"NotANumber", replaced(ascii, "format=\"ascii\">\n2 ", "format=\"ascii\">\ntwo "),
+       "'two' is not a number"},
       {"CorruptZlib", corruptZlib, "DataArray 'Points': corrupt zlib block"},
       {"TruncatedBase64", truncated, "DataArray 'Points': data ends early"},
-      {"InvalidBase64", replaced(writeVtp(good, style("", "binary")), "\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n",
-                                  "\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n*"),
+      {"InvalidBase64",
+       replaced(writeVtp(good, style("", "binary")),
+                "\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n",
+                "\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n*"),
        "DataArray 'Points': invalid base64 character '*'"},
       {"UnsupportedCompressor", replaced(zlibFile, "vtkZLibDataCompressor", "vtkLZ4DataCompressor"),
        "unsupported compressor 'vtkLZ4DataCompressor'"},
-      {"UnsupportedType", replaced(ascii, "type=\"Float32\"", "type=\"Float16\""), "unsupported type 'Float16'"},
-      {"DecreasingOffsets", replaced(ascii, "Name=\"offsets\" NumberOfComponents=\"1\" format=\"ascii\">\n80 160",
-                                     "Name=\"offsets\" NumberOfComponents=\"1\" format=\"ascii\">\n80 70"),
+      {"UnsupportedType", replaced(ascii, "type=\"Float32\"", "type=\"Float16\""),
+       "unsupported type 'Float16'"},
+      {"DecreasingOffsets",
+       replaced(ascii, "Name=\"offsets\" NumberOfComponents=\"1\" format=\"ascii\">\n80 160",
+                "Name=\"offsets\" NumberOfComponents=\"1\" format=\"ascii\">\n80 70"),
        "Lines offsets: bad offset"},
       // Appended raw: EdgeArray and the radius take 4 + 130 * 8 bytes each, then come the points.
-      {"AppendedOffsetBeyondData", replaced(writeVtp(good, style("", "appended")), "\"Points\" NumberOfComponents=\"3\" format=\"appended\" offset=\"2088\"",
-                                            "\"Points\" NumberOfComponents=\"3\" format=\"appended\" offset=\"99999\""),
+      {"AppendedOffsetBeyondData",
+       replaced(writeVtp(good, style("", "appended")),
+                "\"Points\" NumberOfComponents=\"3\" format=\"appended\" offset=\"2088\"",
+                "\"Points\" NumberOfComponents=\"3\" format=\"appended\" offset=\"99999\""),
        "offset beyond the appended data"},
       {"AppendedWithoutUnderscore", replaced(writeVtp(good, style("", "appended")), "   _", "   #"),
        "appended data does not start with '_'"},
@@ -432,8 +459,8 @@ using CenterlineMarkups = CenterlineFiles;
 
 std::string curveJson(const std::string& extra, const std::string& points) {
   return R"({"@schema": "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/Resources/Schema/markups-schema-v1.0.3.json#",
-  "markups": [{"type": "Curve", "name": "LeftIliac", )" + extra + R"("controlPoints": [)" + points +
-         "]}]}";
+  "markups": [{"type": "Curve", "name": "LeftIliac", )" +
+         extra + R"("controlPoints": [)" + points + "]}]}";
 }
 
 const char* kThreePoints =
@@ -442,11 +469,12 @@ const char* kThreePoints =
        {"id": "3", "label": "C-3", "position": [3.5, -4.0, 32.0], "positionStatus": "defined"})";
 
 TEST_F(CenterlineMarkups, LpsCurveWithRadiusMeasurement) {
-  const fs::path file = write("curve.mrk.json", curveJson(
-      R"("coordinateSystem": "LPS", "coordinateUnits": "mm",
+  const fs::path file =
+      write("curve.mrk.json", curveJson(
+                                  R"("coordinateSystem": "LPS", "coordinateUnits": "mm",
          "measurements": [{"name": "length", "value": 2.8, "units": "mm"},
                           {"name": "Radius", "units": "mm", "controlPointValues": [4.0, 3.5, 3.0]}], )",
-      kThreePoints));
+                                  kThreePoints));
   std::vector<std::string> warnings;
   const Centerlines loaded = loadWarned(file, warnings);
   ASSERT_EQ(loaded.paths.size(), 1u);
@@ -458,16 +486,19 @@ TEST_F(CenterlineMarkups, LpsCurveWithRadiusMeasurement) {
 }
 
 TEST_F(CenterlineMarkups, RasBecomesLpsAndMicrometresBecomeMillimetres) {
-  const Centerlines ras = loadCenterlines(write("ras.mrk.json", curveJson(
-      R"("coordinateSystem": "RAS", "measurements": [{"name": "radius", "controlPointValues": [1, 1, 1]}], )",
-      kThreePoints)));
+  const Centerlines ras = loadCenterlines(write(
+      "ras.mrk.json",
+      curveJson(
+          R"("coordinateSystem": "RAS", "measurements": [{"name": "radius", "controlPointValues": [1, 1, 1]}], )",
+          kThreePoints)));
   EXPECT_EQ(ras.paths[0].points[0].positionMm, glm::dvec3(-1.5, 2.0, 30.0));
-  const Centerlines um = loadCenterlines(write("um.mrk.json", curveJson(
-      R"("coordinateUnits": ["um", "UCUM", "micrometer"],
+  const Centerlines um =
+      loadCenterlines(write("um.mrk.json", curveJson(
+                                               R"("coordinateUnits": ["um", "UCUM", "micrometer"],
          "measurements": [{"name": "Radius", "controlPointValues": [1, 1, 1]}], )",
-      kThreePoints)));
-  EXPECT_NEAR(glm::distance(um.paths[0].points[2].positionMm, glm::dvec3(0.0035, -0.004, 0.032)),
-              0.0, 1e-15);
+                                               kThreePoints)));
+  EXPECT_NEAR(glm::distance(um.paths[0].points[2].positionMm, glm::dvec3(0.0035, -0.004, 0.032)), 0.0,
+              1e-15);
 }
 
 TEST_F(CenterlineMarkups, WithoutRadiusRadiiAreZeroWithAWarning) {
@@ -502,13 +533,20 @@ TEST_F(CenterlineMarkups, BrokenFilesGiveAnInputErrorNamingFileAndProblem) {
       {"NoMarkups", "{\"points\": []}", "no \"markups\" array"},
       {"PositionOfTwo", curveJson("", R"({"position": [1, 2]})"),
        "markup 'LeftIliac' control point 0: position is not an array of 3 numbers"},
-      {"PositionText", curveJson("", R"({"position": [1, "2", 3]})"), "control point 0: y is not a number"},
-      {"RadiusCount", curveJson(R"("measurements": [{"name": "Radius", "controlPointValues": [1, 2]}], )", kThreePoints),
+      {"PositionText", curveJson("", R"({"position": [1, "2", 3]})"),
+       "control point 0: y is not a number"},
+      {"RadiusCount",
+       curveJson(R"("measurements": [{"name": "Radius", "controlPointValues": [1, 2]}], )",
+                 kThreePoints),
        "Radius measurement has 2 values for 3 control points"},
-      {"NegativeRadius", curveJson(R"("measurements": [{"name": "Radius", "controlPointValues": [1, -2, 1]}], )", kThreePoints),
+      {"NegativeRadius",
+       curveJson(R"("measurements": [{"name": "Radius", "controlPointValues": [1, -2, 1]}], )",
+                 kThreePoints),
        "path 'LeftIliac': point 1: negative radius"},
-      {"UnknownSystem", curveJson(R"("coordinateSystem": "XYZ", )", kThreePoints), "unknown coordinateSystem 'XYZ'"},
-      {"UnknownUnits", curveJson(R"("coordinateUnits": "inch", )", kThreePoints), "unknown coordinateUnits 'inch'"},
+      {"UnknownSystem", curveJson(R"("coordinateSystem": "XYZ", )", kThreePoints),
+       "unknown coordinateSystem 'XYZ'"},
+      {"UnknownUnits", curveJson(R"("coordinateUnits": "inch", )", kThreePoints),
+       "unknown coordinateUnits 'inch'"},
       {"EmptyCurve", curveJson("", ""), "path 'LeftIliac': has no points"},
       {"NoCurves", R"({"markups": [{"type": "Plane"}]})", "contains no centerline paths"},
   };
@@ -526,8 +564,9 @@ using CenterlineCsv = CenterlineFiles;
 
 TEST_F(CenterlineCsv, WrittenCentrelinesReadBackToMicrometres) {
   Centerlines written;
-  written.paths = {{"trunk-left", {{{-218.4904, -316.4061, 24.3194}, 10.3651}, {{-218.5, -315.5, 24.4}, 10.0}}},
-                   {"trunk-right", {{{1, 2, 3}, 0.5}}}};
+  written.paths = {
+      {"trunk-left", {{{-218.4904, -316.4061, 24.3194}, 10.3651}, {{-218.5, -315.5, 24.4}, 10.0}}},
+      {"trunk-right", {{{1, 2, 3}, 0.5}}}};
   const fs::path file = dir_ / "round.csv";
   writeCenterlinesCsv(written, file);
   const Centerlines read = readCenterlinesCsv(file);
@@ -601,8 +640,8 @@ TEST_F(CenterlineFiles, PointsOutsideAVolumeAreAWarningNamingFileAndPath) {
   CenterlineLoadOptions options;
   options.warn = [&](const std::string& warning) { warnings.push_back(warning); };
   checkCenterlinesInside(centerlines, volume, options);
-  EXPECT_EQ(warnings, std::vector<std::string>{
-                          file.string() + ": path '1': 2 of 3 points lie outside the volume"});
+  EXPECT_EQ(warnings, std::vector<std::string>{file.string() +
+                                               ": path '1': 2 of 3 points lie outside the volume"});
 }
 
 // --- Choice by extension ------------------------------------------------------------------------
@@ -611,7 +650,8 @@ TEST_F(CenterlineFiles, FormatIsChosenByExtension) {
   const Polylines data = branchingFixture();
   EXPECT_EQ(loadCenterlines(write("upper.VTP", writeVtp(data, style("", "binary")))).paths.size(), 2u);
   EXPECT_EQ(loadCenterlines(write("a.mrk.json", curveJson("", kThreePoints))).paths.size(), 1u);
-  EXPECT_EQ(loadCenterlines(write("a.csv", "path,x_mm,y_mm,z_mm,radius_mm\n0,1,2,3,4\n")).paths.size(), 1u);
+  EXPECT_EQ(loadCenterlines(write("a.csv", "path,x_mm,y_mm,z_mm,radius_mm\n0,1,2,3,4\n")).paths.size(),
+            1u);
   // A .vtp that holds CSV fails as XML, not silently.
   EXPECT_NE(loadError(write("csv.vtp", "path,x_mm,y_mm,z_mm,radius_mm\n")).find("bad XML"),
             std::string::npos);

@@ -133,8 +133,7 @@ TEST_F(ImageExportTest, ExrIsFloatRgbaKeptExactly) {
   const ReadBack read = exportAndReadBack(image, "out.exr");
   EXPECT_EQ(read.spec.nchannels, 4);
   EXPECT_EQ(read.spec.format, OIIO::TypeDesc::FLOAT);
-  ASSERT_NO_FATAL_FAILURE(
-      expectEveryChannel(read.floats, image, 4, [](float value) { return value; }));
+  ASSERT_NO_FATAL_FAILURE(expectEveryChannel(read.floats, image, 4, [](float value) { return value; }));
   EXPECT_LT(read.floats[0], 0.f);  // unclamped
   EXPECT_EQ(read.spec.channelnames, (std::vector<std::string>{"R", "G", "B", "A"}));
 }
@@ -145,8 +144,7 @@ TEST_F(ImageExportTest, PngAndExrCarryTheMetadata) {
     const OIIO::ImageSpec spec = exportAndReadBack(gradientImage(), name).spec;
     EXPECT_EQ(spec.get_string_attribute("angioray:angle"), "30");
     EXPECT_EQ(spec.get_string_attribute("angioray:tf"), "cta-vessels");
-    EXPECT_EQ(spec.get_string_attribute("ImageDescription"),
-              "angle=30; quality=high; tf=cta-vessels");
+    EXPECT_EQ(spec.get_string_attribute("ImageDescription"), "angle=30; quality=high; tf=cta-vessels");
     EXPECT_EQ(spec.get_string_attribute("Software").substr(0, 9), "angioray ");
   }
 }

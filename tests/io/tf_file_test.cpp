@@ -143,8 +143,7 @@ TEST_F(TfFileTest, RoundTripsThroughSave) {
   TransferFunction tf;
   tf.name = "Round \"trip\" \xC3\xA9";  // quotes and UTF-8 survive
   for (int i = 0; i < 9; ++i) {
-    tf.points.push_back(
-        {hu(rng), {float(unit(rng)), float(unit(rng)), float(unit(rng))}, unit(rng)});
+    tf.points.push_back({hu(rng), {float(unit(rng)), float(unit(rng)), float(unit(rng))}, unit(rng)});
   }
   tf.points.push_back({-1024, {0.6f, 0.1f, 0.05f}, 0});
   tf.points.push_back({3071, {1.f, 1.f, 1.f}, 1});
@@ -201,9 +200,7 @@ TEST_F(TfFileTest, MissingFileIsAnInputError) {
   }
 }
 
-TEST_F(TfFileTest, DirectoryIsAnInputError) {
-  EXPECT_THROW(loadTransferFunction(dir_), InputError);
-}
+TEST_F(TfFileTest, DirectoryIsAnInputError) { EXPECT_THROW(loadTransferFunction(dir_), InputError); }
 
 TEST_F(TfFileTest, InvalidJsonReportsTheBytePosition) {
   // nlohmann counts bytes from 1 up to the offending character.
@@ -230,14 +227,10 @@ TEST_F(TfFileTest, RejectsPointsWithMissingKeys) {
 
 TEST_F(TfFileTest, RejectsBadColors) {
   for (const char* color : {"[0, 0]", "[0, 0, 0, 0]", R"("red")"})
-    expectRejected(pointsJson(json({.color = color})),
-                   "point 1: color is not an array of 3 numbers");
-  expectRejected(pointsJson(json({.color = R"([0, "NaN", 0])"})),
-                 "point 1: color[1] is not a number");
-  expectRejected(pointsJson(json({.color = "[0, 0, 1.2]"})),
-                 "point 1: color[2] 1.2 outside [0, 1]");
-  expectRejected(pointsJson(json({.color = "[-0.1, 0, 0]"})),
-                 "point 1: color[0] -0.1 outside [0, 1]");
+    expectRejected(pointsJson(json({.color = color})), "point 1: color is not an array of 3 numbers");
+  expectRejected(pointsJson(json({.color = R"([0, "NaN", 0])"})), "point 1: color[1] is not a number");
+  expectRejected(pointsJson(json({.color = "[0, 0, 1.2]"})), "point 1: color[2] 1.2 outside [0, 1]");
+  expectRejected(pointsJson(json({.color = "[-0.1, 0, 0]"})), "point 1: color[0] -0.1 outside [0, 1]");
 }
 
 TEST_F(TfFileTest, RejectsNonNumbersAndNonFiniteValues) {
@@ -245,8 +238,7 @@ TEST_F(TfFileTest, RejectsNonNumbersAndNonFiniteValues) {
     expectRejected(pointsJson(json({.hu = hu})), "point 1: hu is not a number");
   expectRejected(pointsJson(json({.opacity = "true"})), "point 1: opacity is not a number");
   // JSON has no infinity; the parser refuses overflowing numbers rather than returning inf.
-  expectRejected(pointsJson(json({.hu = "1e999"})),
-                 "not valid JSON: number overflow parsing '1e999'");
+  expectRejected(pointsJson(json({.hu = "1e999"})), "not valid JSON: number overflow parsing '1e999'");
   expectRejected(pointsJson(kGood0 + ", " + json({.opacity = "-1e999"})),
                  "not valid JSON: number overflow");
 }

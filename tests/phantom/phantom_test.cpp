@@ -42,8 +42,8 @@ bool inside(const Volume& volume, glm::ivec3 index) {
 double maxHuNear(const Volume& volume, glm::dvec3 physical, double radiusMm) {
   const glm::ivec3 lo =
       glm::max(glm::ivec3(glm::floor(physicalToIndex(volume, physical - radiusMm))), glm::ivec3(0));
-  const glm::ivec3 hi = glm::min(
-      glm::ivec3(glm::ceil(physicalToIndex(volume, physical + radiusMm))), volume.dims - 1);
+  const glm::ivec3 hi =
+      glm::min(glm::ivec3(glm::ceil(physicalToIndex(volume, physical + radiusMm))), volume.dims - 1);
   double best = -2000;
   for (int k = lo.z; k <= hi.z; ++k)
     for (int j = lo.y; j <= hi.y; ++j)
@@ -119,9 +119,9 @@ TEST(Phantom, HasFourRootToLeafPathsSharingTheAorta) {
   std::vector<std::string> names;
   for (const CenterlinePath& path : phantom.centerlines.paths) names.push_back(path.name);
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{
-                       "aorta-left-anterior-tibial", "aorta-left-posterior-tibial",
-                       "aorta-right-anterior-tibial", "aorta-right-posterior-tibial"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"aorta-left-anterior-tibial", "aorta-left-posterior-tibial",
+                                      "aorta-right-anterior-tibial", "aorta-right-posterior-tibial"}));
   for (const CenterlinePath& path : phantom.centerlines.paths) {
     ASSERT_GT(path.points.size(), 1000u) << path.name;
     // Starts in the aorta at the top (radius ~10 mm), ends in a ~1.5 mm tibial branch at the foot.
@@ -134,7 +134,8 @@ TEST(Phantom, HasFourRootToLeafPathsSharingTheAorta) {
       EXPECT_LT(step, 1.5) << path.name << " point " << n;
     }
     // The shared trunk is repeated: all paths begin at the same point.
-    EXPECT_EQ(path.points.front().positionMm, phantom.centerlines.paths.front().points.front().positionMm);
+    EXPECT_EQ(path.points.front().positionMm,
+              phantom.centerlines.paths.front().points.front().positionMm);
   }
 }
 
@@ -229,8 +230,8 @@ TEST(Phantom, AirSurroundsTheBody) {
   const Volume& volume = phantom.volume;
   const glm::ivec3 last = volume.dims - 1;
   for (int k = 0; k < volume.dims.z; k += 10) {
-    for (glm::ivec3 corner : {glm::ivec3(0, 0, k), glm::ivec3(last.x, 0, k),
-                              glm::ivec3(0, last.y, k), glm::ivec3(last.x, last.y, k)}) {
+    for (glm::ivec3 corner : {glm::ivec3(0, 0, k), glm::ivec3(last.x, 0, k), glm::ivec3(0, last.y, k),
+                              glm::ivec3(last.x, last.y, k)}) {
       EXPECT_LT(huAt(volume, corner), -900) << k;
     }
   }

@@ -35,8 +35,11 @@ RenderRecipe vesselGlyphRecipe() {
   recipe.tf = loadPresetOrFile("cta-vessels-bone");
   recipe.params.angleDeg = 40;
   recipe.params.sampling = qualitySampling(Quality::medium);
-  recipe.vesselGlyph = VesselGlyphRecipe{"phantom", {}, loadPresetOrFile("cta-vessels"),
-                                         loadPresetOrFile("soft-tissue-context"), std::nullopt};
+  recipe.vesselGlyph = VesselGlyphRecipe{"phantom",
+                                         {},
+                                         loadPresetOrFile("cta-vessels"),
+                                         loadPresetOrFile("soft-tissue-context"),
+                                         std::nullopt};
   return recipe;
 }
 
@@ -103,7 +106,8 @@ TEST(FrameRenderer, TheRecipesRaycasterChoiceGivesTheSameImage) {
   ASSERT_EQ(fast.pixels.size(), reference.pixels.size());
   float worst = 0;
   for (std::size_t n = 0; n < fast.pixels.size(); ++n)
-    for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
+    for (int c = 0; c < 4; ++c)
+      worst = std::max(worst, std::abs(fast.pixels[n][c] - reference.pixels[n][c]));
   EXPECT_LE(worst, 1.f / 255.f);
 }
 

@@ -66,13 +66,14 @@ std::shared_ptr<const PreparedScene> sceneFor(const std::string& preset, double 
 RenderRecipe vesselGlyphRecipe(std::optional<TransferFunction> outside) {
   RenderRecipe recipe;
   recipe.tf = tfFor("cta-vessels-bone");
-  recipe.vesselGlyph = VesselGlyphRecipe{"phantom", {}, tfFor("cta-vessels-bone"),
-                                         tfFor("soft-tissue-context"), std::move(outside)};
+  recipe.vesselGlyph = VesselGlyphRecipe{
+      "phantom", {}, tfFor("cta-vessels-bone"), tfFor("soft-tissue-context"), std::move(outside)};
   return recipe;
 }
 
 std::shared_ptr<const PreparedScene> vesselGlyphScene(std::optional<TransferFunction> outside) {
-  return PreparedScene::prepare(testVolume(), testData().centerlines, vesselGlyphRecipe(std::move(outside)));
+  return PreparedScene::prepare(testVolume(), testData().centerlines,
+                                vesselGlyphRecipe(std::move(outside)));
 }
 
 // Every published frame, in publication order (the callback runs on the worker thread).
@@ -112,7 +113,8 @@ Image renderDirectly(const RenderRecipe& recipe, const RenderParams& params) {
   }
   const VesselGlyphRecipe& vg = *recipe.vesselGlyph;
   RayRegions regions;
-  RayRegionBuilder(testData().centerlines, vg.settings).build(makeViewGeometry(testVolume(), params), regions);
+  RayRegionBuilder(testData().centerlines, vg.settings)
+      .build(makeViewGeometry(testVolume(), params), regions);
   const TfTable focus = buildTable(vg.focusTf), context = buildTable(vg.contextTf);
   const TfTable outside = buildTable(vg.outsideTf.value_or(TransferFunction{}));
   const RegionTables tables{&regions, &focus, &context, vg.outsideTf ? &outside : nullptr};
@@ -176,7 +178,7 @@ TEST(ProgressiveRenderer, AfterPublishRunsForEveryFrameAndWhenIdle) {
   auto renderer = std::make_unique<ProgressiveRenderer>(testVolume(), threads, callbacks);
   const std::uint64_t id = renderer->request(requestAt(0, sceneFor("cta-vessels")));
   ASSERT_TRUE(renderer->waitForLevel(id, Quality::high, 120s));
-  renderer.reset();  // joins: every callback has run
+  renderer.reset();            // joins: every callback has run
   EXPECT_EQ(calls.load(), 4);  // fast, medium, high, idle
 }
 
@@ -471,7 +473,8 @@ TEST(RenderThreads, EveryThreadOfAnArenaRunsAtItsPriority) {
           nices.push_back(nice);
         });
       });
-    }).join();
+    })
+        .join();
     ASSERT_FALSE(nices.empty());
     const int expected = level == Quality::fast ? threads.fastNice() : threads.backgroundNice();
     for (const int nice : nices) EXPECT_EQ(nice, expected) << toString(level);

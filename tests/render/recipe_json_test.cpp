@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 TransferFunction tf(const std::string& name, double shift) {
   TransferFunction t;
   t.name = name;
-  t.points = {{-1024, {0.f, 0.f, 0.f}, 0.0}, {150.25 + shift, {0.6f, 0.1f, 0.05f}, 0.0},
+  t.points = {{-1024, {0.f, 0.f, 0.f}, 0.0},
+              {150.25 + shift, {0.6f, 0.1f, 0.05f}, 0.0},
               {300 + shift, {0.9f, 0.3f, 1.f / 3.f}, 0.4 + 1e-12}};
   t.modulators = {0.75, -12.5};
   t.mipWindow = 777.125;
@@ -178,18 +179,22 @@ TEST_F(RenderSidecarFiles, BrokenSidecarsGiveOneLineNamingTheFileAndKey) {
       {"binary.json", std::string("\x89PNG\r\n\x1a\n\0\0", 10), "bad JSON"},
       {"array.json", "[1, 2]", "not an angioray render sidecar"},
       {"tf.json", R"({"name": "x", "points": []})", "not an angioray render sidecar"},
-      {"version.json", replaced("\"angioray_render_sidecar\": 1", "\"angioray_render_sidecar\": 7"), "version"},
+      {"version.json", replaced("\"angioray_render_sidecar\": 1", "\"angioray_render_sidecar\": 7"),
+       "version"},
       {"axis.json", replaced("\"axis\": \"j\"", "\"axis\": \"q\""), "view.axis"},
       {"isd.json", replaced("\"isd\": ", "\"isd\": \"x\", \"was\": "), "sampling.isd"},
       {"no-dataset.json", replaced("\"dataset\"", "\"dataset_\""), "dataset"},
       {"raycaster.json", replaced("\"reference\"", "\"gpu\""), "raycaster"},
       {"cleft.json", replaced("\"cleft\": true", "\"cleft\": 1"), "vessel_glyph.cleft"},
-      {"radius.json", replaced("\"radius_mode\": \"mm\"", "\"radius_mode\": \"inch\""), "vessel_glyph.focus.radius_mode"},
+      {"radius.json", replaced("\"radius_mode\": \"mm\"", "\"radius_mode\": \"inch\""),
+       "vessel_glyph.focus.radius_mode"},
       {"tf-points.json", replaced("\"opacity\": 0.0", "\"opacity\": 2.0"), "tf"},
       {"display.json", replaced("\"grey\"", "\"rainbow\""), "hybrid_cpr.display"},
-      {"hybrid-alone.json", replaced("\"vessel_glyph\": {", "\"vessel_glyph\": null, \"x\": {"), "needs"},
+      {"hybrid-alone.json", replaced("\"vessel_glyph\": {", "\"vessel_glyph\": null, \"x\": {"),
+       "needs"},
   };
-  EXPECT_NE(loadError(dir_ / "absent.json").find("absent.json: no such render sidecar"), std::string::npos);
+  EXPECT_NE(loadError(dir_ / "absent.json").find("absent.json: no such render sidecar"),
+            std::string::npos);
   for (const Case& c : cases) {
     const std::string message = loadError(write(c.name, c.text));
     EXPECT_EQ(message.rfind((dir_ / c.name).string() + ": ", 0), 0u) << c.name << ": " << message;

@@ -76,7 +76,8 @@ class SeriesExport : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("angioray_series_" + std::to_string(::getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() /
+           ("angioray_series_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     tf_ = loadPresetOrFile("cta-vessels-bone");
     base_.dataset = "phantom 32x32x64";
@@ -142,7 +143,8 @@ TEST_F(SeriesExport, WritesNumberedImagesWhoseSidecarsHoldTheirAngles) {
     ASSERT_TRUE(file.read(0, 0, true, OIIO::TypeDesc::UINT8));
     ASSERT_EQ(file.spec().width, direct.width);
     std::vector<std::uint8_t> got(want.size());
-    file.get_pixels(OIIO::ROI(0, direct.width, 0, direct.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, got.data());
+    file.get_pixels(OIIO::ROI(0, direct.width, 0, direct.height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8,
+                    got.data());
     EXPECT_EQ(got, want) << n;
   }
 }
@@ -150,7 +152,8 @@ TEST_F(SeriesExport, WritesNumberedImagesWhoseSidecarsHoldTheirAngles) {
 TEST_F(SeriesExport, HybridSeriesHoldsTheHybridOfEachViewAndItsRecipe) {
   const Centerlines centerlines = toVolumeFrame(smallPhantomWithPaths().centerlines, smallPhantom());
   RenderRecipe base = base_;
-  base.vesselGlyph = VesselGlyphRecipe{"phantom.csv", {}, tf_, loadPresetOrFile("soft-tissue-context"), std::nullopt};
+  base.vesselGlyph =
+      VesselGlyphRecipe{"phantom.csv", {}, tf_, loadPresetOrFile("soft-tissue-context"), std::nullopt};
   base.hybrid = HybridCprRecipe{"all", 2.0, kCtaLumenWindow};
   SeriesSpec spec;
   spec.count = 3;
@@ -167,7 +170,8 @@ TEST_F(SeriesExport, HybridSeriesHoldsTheHybridOfEachViewAndItsRecipe) {
     EXPECT_EQ(filePixels(result.images[n], expected.width, expected.height), toRgb8(expected)) << n;
     RenderRecipe plain = sidecar;
     plain.hybrid.reset();
-    const std::vector<std::uint8_t> vesselGlyph = toRgb8(renderRecipe(smallPhantom(), centerlines, plain));
+    const std::vector<std::uint8_t> vesselGlyph =
+        toRgb8(renderRecipe(smallPhantom(), centerlines, plain));
     differFromPlain += vesselGlyph != toRgb8(expected);
   }
   EXPECT_EQ(differFromPlain, 3);  // every view shows the CPR somewhere

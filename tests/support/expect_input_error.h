@@ -21,8 +21,7 @@ std::optional<std::string> expectInputError(Call&& call, const std::filesystem::
   } catch (const InputError& error) {
     const std::string message = error.what();
     EXPECT_NE(message.find(file.string()), std::string::npos) << message;
-    EXPECT_NE(message.find(problem), std::string::npos)
-        << "wanted \"" << problem << "\" in " << message;
+    EXPECT_NE(message.find(problem), std::string::npos) << "wanted \"" << problem << "\" in " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     return message;
   }

@@ -24,7 +24,8 @@ class PhantomFolderTest : public ::testing::Test {
   void SetUp() override {
     dir = std::filesystem::temp_directory_path() /
           ("angioray-" + std::string(folderPrefix()) + "-" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" + std::to_string(getpid()));
+           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" +
+           std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const auto run = runAngioray("phantom " + file("phantom.nrrd") + " --size 96x96x200 --centerlines " +

@@ -23,8 +23,8 @@ class TempFolderTest : public ::testing::Test {
     // one level and TearDown removes all of it.
     std::string name = std::string(info->test_suite_name()) + "-" + info->name();
     std::replace(name.begin(), name.end(), '/', '_');
-    dir_ = std::filesystem::temp_directory_path() /
-           ("angioray-" + name + "-" + std::to_string(::getpid()));
+    dir_ =
+        std::filesystem::temp_directory_path() / ("angioray-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }

@@ -14,7 +14,8 @@ namespace angio {
 namespace {
 
 double signedDistance(const RoundCone& cone, glm::dvec3 p) {
-  return test_support::taperedSegmentSignedDistance(cone.centre0, cone.radius0, cone.centre1, cone.radius1, p);
+  return test_support::taperedSegmentSignedDistance(cone.centre0, cone.radius0, cone.centre1,
+                                                    cone.radius1, p);
 }
 
 // Every sample along the ray is inside the span exactly when it is inside the cone (samples
@@ -70,7 +71,8 @@ TEST(RoundConeIntersector, MatchesPointSamplingForRandomConesAndRays) {
   for (int trial = 0; trial < 150; ++trial) {
     const RoundCone cone{{coordinate(random), coordinate(random), coordinate(random)},
                          {coordinate(random), coordinate(random), coordinate(random)},
-                         radius(random), radius(random)};
+                         radius(random),
+                         radius(random)};
     glm::dvec3 direction(normal(random), normal(random), normal(random));
     direction = glm::normalize(direction);
     // Aim near the cone so that most rays hit.
@@ -101,7 +103,8 @@ TEST(DepthRayRoundCone, AgreesWithTheGeneralIntersector) {
   for (int trial = 0; trial < 20000; ++trial) {
     const RoundCone cone{{coordinate(random), coordinate(random), coordinate(random)},
                          {coordinate(random), coordinate(random), coordinate(random)},
-                         radius(random), radius(random)};
+                         radius(random),
+                         radius(random)};
     const RoundConeIntersector general(cone, {0, 0, 1});
     const DepthRayRoundCone withEndBall(cone, true), withoutEndBall(cone, false);
     const double h = coordinate(random), v = coordinate(random);
@@ -132,9 +135,9 @@ TEST(DepthRayRoundCone, AgreesWithTheGeneralIntersector) {
 TEST(DepthRayRoundCone, WithoutTheEndBallLeavesOnlyThatBall) {
   const RoundCone cone{{0, 0, 0}, {10, 0, 0}, 2, 2};
   const DepthRayRoundCone piece(cone, false);
-  EXPECT_TRUE(piece.intersect(piece.row(0), 11.5).empty());  // only in the end ball
-  EXPECT_FALSE(piece.intersect(piece.row(0), 9.5).empty());  // in the frustum
-  EXPECT_FALSE(piece.intersect(piece.row(0), -1.5).empty()); // in the first ball
+  EXPECT_TRUE(piece.intersect(piece.row(0), 11.5).empty());   // only in the end ball
+  EXPECT_FALSE(piece.intersect(piece.row(0), 9.5).empty());   // in the frustum
+  EXPECT_FALSE(piece.intersect(piece.row(0), -1.5).empty());  // in the first ball
 }
 
 }  // namespace

@@ -30,8 +30,7 @@ CenterlinePath helix(int pointsPerTurn) {
   CenterlinePath path{"helix", {}};
   for (int n = 0; n <= 2 * pointsPerTurn; ++n) {
     const double angle = 2 * std::numbers::pi * n / pointsPerTurn;
-    path.points.push_back(
-        {{20 * std::cos(angle), 20 * std::sin(angle), 30.0 * n / pointsPerTurn}, 3.0});
+    path.points.push_back({{20 * std::cos(angle), 20 * std::sin(angle), 30.0 * n / pointsPerTurn}, 3.0});
   }
   return path;
 }
@@ -52,8 +51,7 @@ Volume flippedVolume() {
   return volume;
 }
 
-std::vector<std::string> problems(const std::vector<CenterlineIssue>& issues,
-                                  IssueSeverity severity) {
+std::vector<std::string> problems(const std::vector<CenterlineIssue>& issues, IssueSeverity severity) {
   std::vector<std::string> found;
   for (const CenterlineIssue& issue : issues) {
     if (issue.severity == severity) found.push_back(issue.problem);
@@ -84,8 +82,7 @@ Volume obliqueVolume() {
   const double angle = 20.0 * std::numbers::pi / 180.0;
   volume.origin = {10.0, -30.0, 100.0};
   volume.direction = glm::dmat3(glm::dvec3(std::cos(angle), std::sin(angle), 0),
-                                glm::dvec3(-std::sin(angle), std::cos(angle), 0),
-                                glm::dvec3(0, 0, 1));
+                                glm::dvec3(-std::sin(angle), std::cos(angle), 0), glm::dvec3(0, 0, 1));
   return volume;
 }
 
@@ -159,8 +156,8 @@ TEST(CenterlineGeometry, ResamplingSkipsRepeatedPointsAndLeavesDegeneratePathsAl
   EXPECT_EQ(resampleByArcLength(single, 1.0).points.size(), 1u);
   const CenterlinePath still{"z", {{{1, 2, 3}, 1}, {{1, 2, 3}, 2}}};
   EXPECT_EQ(resampleByArcLength(still, 1.0).points.size(), 2u);
-  for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
-                     std::numeric_limits<double>::infinity()}) {
+  for (double bad :
+       {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     EXPECT_THROW(resampleByArcLength(single, bad), std::invalid_argument) << bad;
   }
 }
@@ -249,8 +246,7 @@ TEST(CenterlineValidation, PointsOutsideTheVolumeAreCountedPerPath) {
   EXPECT_EQ(problems(checkInsideVolume(physical, volume), IssueSeverity::warning), expected);
   EXPECT_FALSE(hasError(checkInsideVolume(physical, volume)));
   // The same answer from the volume frame.
-  EXPECT_EQ(problems(checkInsideVolume(toVolumeFrame(physical, volume), volume),
-                     IssueSeverity::warning),
+  EXPECT_EQ(problems(checkInsideVolume(toVolumeFrame(physical, volume), volume), IssueSeverity::warning),
             expected);
 }
 

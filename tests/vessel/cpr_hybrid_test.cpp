@@ -87,7 +87,8 @@ Volume patternedVolume() {
   for (int k = 0; k < 16; ++k)
     for (int j = 0; j < 20; ++j)
       for (int i = 0; i < 24; ++i)
-        volume.voxels[volume.indexOf(i, j, k)] = encodeVoxel(int(400 * std::sin(0.7 * i + 1.3 * j + 0.4 * k)));
+        volume.voxels[volume.indexOf(i, j, k)] =
+            encodeVoxel(int(400 * std::sin(0.7 * i + 1.3 * j + 0.4 * k)));
   return volume;
 }
 
@@ -118,13 +119,15 @@ TEST(CprHybrid, InPlaceCompositingEqualsTheFullImagePipeline) {
       display.centerlineMarker = display.ruler = false;
       for (const double transitionMm : {0.0, 2.0}) {
         const HybridCompositing settings{transitionMm, view.pixelMm};
-        const Image expected = compositeHybrid(dvr, displayCpr(layout, hu, display), footprint, settings);
+        const Image expected =
+            compositeHybrid(dvr, displayCpr(layout, hu, display), footprint, settings);
         Image image = dvr;
         compositeCprInPlace(image, volume, layout, footprint, display, settings);
         std::size_t changed = 0;
         for (int y = 0; y < view.height; ++y)
           for (int x = 0; x < view.width; ++x) {
-            ASSERT_EQ(image.at(x, y), expected.at(x, y)) << angle << " deg, T " << transitionMm << ": " << x << "," << y;
+            ASSERT_EQ(image.at(x, y), expected.at(x, y))
+                << angle << " deg, T " << transitionMm << ": " << x << "," << y;
             changed += image.at(x, y) != dvr.at(x, y);
           }
         EXPECT_GT(changed, 10u) << angle;  // the CPR did show

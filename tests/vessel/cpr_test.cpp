@@ -29,8 +29,7 @@ constexpr double kPi = std::numbers::pi;
 CenterlinePath polyline(const std::string& name, const std::function<glm::dvec3(double)>& curve,
                         int points, double radiusMm) {
   CenterlinePath path{name, {}};
-  for (int n = 0; n < points; ++n)
-    path.points.push_back({curve(double(n) / (points - 1)), radiusMm});
+  for (int n = 0; n < points; ++n) path.points.push_back({curve(double(n) / (points - 1)), radiusMm});
   return path;
 }
 
@@ -48,8 +47,8 @@ double distanceToSegment(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b) {
 double distanceToPath(glm::dvec3 p, const CenterlinePath& path) {
   double best = std::numeric_limits<double>::max();
   for (std::size_t n = 0; n + 1 < path.points.size(); ++n) {
-    best = std::min(best,
-                    distanceToSegment(p, path.points[n].positionMm, path.points[n + 1].positionMm));
+    best =
+        std::min(best, distanceToSegment(p, path.points[n].positionMm, path.points[n + 1].positionMm));
   }
   return best;
 }
@@ -70,8 +69,8 @@ bool insideTube(glm::dvec3 p, const std::vector<CenterlinePath>& paths, double r
 }
 
 // The share of a voxel inside the tube, from 4x4x4 sub-samples.
-double insideFraction(glm::dvec3 centre, glm::dvec3 spacing,
-                      const std::vector<CenterlinePath>& paths, double radiusMm) {
+double insideFraction(glm::dvec3 centre, glm::dvec3 spacing, const std::vector<CenterlinePath>& paths,
+                      double radiusMm) {
   int inside = 0;
   for (int s = 0; s < 64; ++s) {
     const glm::dvec3 offset{s % 4 - 1.5, s / 4 % 4 - 1.5, s / 16 - 1.5};
@@ -175,16 +174,15 @@ TEST(CprStraightened, CurvedTubeIsAStraightBandToo) {
       200, 4.0);
   const Volume volume = tubeVolume({60, 44, 52}, glm::dvec3(1.0), {path}, 4.0);
   for (double angle : {0.0, 60.0, 135.0, 270.0}) {
-    const Cpr cpr = computeCpr(volume, {path}, cprView(volume, Axis::k, angle, 0.5),
-                               {CprMode::straightened, 24.0});
+    const Cpr cpr =
+        computeCpr(volume, {path}, cprView(volume, Axis::k, angle, 0.5), {CprMode::straightened, 24.0});
     expectStraightBand(cpr, 4.0, cpr.layout.width / 2, 16);
   }
 }
 
 TEST(CprStraightened, RowsAreArcLengthAndTheCentreColumnIsTheCenterline) {
   const CenterlinePath path = polyline(
-      "wave", [](double t) { return glm::dvec3(30 + 8 * std::sin(6 * t), 30, 5 + 80 * t); }, 120,
-      3);
+      "wave", [](double t) { return glm::dvec3(30 + 8 * std::sin(6 * t), 30, 5 + 80 * t); }, 120, 3);
   const Volume volume = emptyVolume();
   const ViewGeometry view = cprView(volume, Axis::k, 20, 0.5);
   const CprLayout layout = layoutCpr({path}, view, {CprMode::straightened, 20.0});
@@ -206,8 +204,7 @@ TEST(CprStraightened, VectorOfInterestIsTheViewsRightForAVesselAlongTheUpAxis) {
                                  std::pair{glm::dvec3(30, 30, 95), glm::dvec3(30, 30, 5)}}) {
     for (double angle : {0.0, 30.0, 90.0, 225.0}) {
       const ViewGeometry view = cprView(volume, Axis::k, angle, 1.0);
-      const CprLayout layout =
-          layoutCpr({straightPath(from, to)}, view, {CprMode::straightened, {}});
+      const CprLayout layout = layoutCpr({straightPath(from, to)}, view, {CprMode::straightened, {}});
       for (const CprSpan& span : layout.spans) {
         EXPECT_LT(glm::distance(span.stepMm, view.right), 1e-9) << "angle " << angle;
       }
@@ -223,8 +220,8 @@ TEST(CprStraightened, RotatingTheViewRotatesAnEccentricPlaqueAroundTheLumen) {
     for (int j = 29; j <= 31; ++j)
       for (int i = 34; i <= 36; ++i) volume.voxels[volume.indexOf(i, j, k)] = encodeVoxel(1500);
   auto plaqueSide = [&](double angle) {
-    const Cpr cpr = computeCpr(volume, {path}, cprView(volume, Axis::k, angle, 0.5),
-                               {CprMode::straightened, 30.0});
+    const Cpr cpr =
+        computeCpr(volume, {path}, cprView(volume, Axis::k, angle, 0.5), {CprMode::straightened, 30.0});
     float left = 0, right = 0;
     for (int y = 0; y < cpr.layout.height; ++y)
       for (int x = 0; x < cpr.layout.width; ++x) {
@@ -255,8 +252,7 @@ TEST(CprFrame, RotationMinimizingNormalsKeepThePlaneNormalOfAPlanarCurve) {
       rotationMinimizingNormals(points, tangents, glm::dvec3(2, 1, 0));
   const double startAngle = glm::dot(normals.front(), glm::dvec3(0, 1, 0));
   EXPECT_LT(startAngle, 0.9);
-  for (const glm::dvec3& normal : normals)
-    EXPECT_NEAR(glm::dot(normal, {0, 1, 0}), startAngle, 1e-9);
+  for (const glm::dvec3& normal : normals) EXPECT_NEAR(glm::dot(normal, {0, 1, 0}), startAngle, 1e-9);
   // Started on the plane's normal, it stays there.
   for (const glm::dvec3& normal : rotationMinimizingNormals(points, tangents, {0, 1, 0})) {
     EXPECT_LT(glm::distance(normal, {0, 1, 0}), 1e-9);
@@ -295,8 +291,7 @@ TEST(CprFrame, RotationMinimizingNormalsTurnAgainstTheTorsionOfAHelix) {
 TEST(CprStretched, HeightIsArcLengthOverPixelForAPathNormalToTheViewsRight) {
   // Axis k, angle 0: r = +i. The path bends in the j-k plane only.
   const CenterlinePath path = polyline(
-      "bend", [](double t) { return glm::dvec3(30, 30 + 15 * std::sin(3 * t), 5 + 85 * t); }, 150,
-      3);
+      "bend", [](double t) { return glm::dvec3(30, 30 + 15 * std::sin(3 * t), 5 + 85 * t); }, 150, 3);
   const Volume volume = emptyVolume();
   for (double pixel : {0.5, 0.7, 1.3}) {
     const CprLayout layout =
@@ -309,9 +304,8 @@ TEST(CprStretched, IsIsometricAlongTheCenterlineAndKeepsTheDvrColumns) {
   // A path with a component along r: rows advance by the length normal to r only, and the
   // centerline drawn in the image keeps its true length.
   const CenterlinePath path = polyline(
-      "sweep",
-      [](double t) { return glm::dvec3(10 + 40 * t, 20 + 10 * std::sin(4 * t), 5 + 80 * t); }, 300,
-      3);
+      "sweep", [](double t) { return glm::dvec3(10 + 40 * t, 20 + 10 * std::sin(4 * t), 5 + 80 * t); },
+      300, 3);
   const Volume volume = emptyVolume();
   const ViewGeometry view = cprView(volume, Axis::k, 0, 0.5);
   const CprLayout layout = layoutCpr({path}, view, {CprMode::stretched, 20.0});
@@ -407,9 +401,7 @@ TEST(CprProjected, RowsCrossedTwiceAreSplitAtTheMidpointAndBandsLimitTheWidth) {
   // A U-turn in the i-k plane: rows between its ends are crossed twice.
   const CenterlinePath path = polyline(
       "u",
-      [](double t) {
-        return glm::dvec3(30 + 15 * std::cos(kPi * t), 30, 70 - 40 * std::sin(kPi * t));
-      },
+      [](double t) { return glm::dvec3(30 + 15 * std::cos(kPi * t), 30, 70 - 40 * std::sin(kPi * t)); },
       200, 2);
   const Volume volume = emptyVolume();
   const ViewGeometry view = cprView(volume, Axis::k, 0, 1.0);
@@ -628,8 +620,8 @@ TEST(CprAorta, StraightenedCentreColumnIsContrastLumen) {
       int lumen = 0;
       for (int y = 0; y < cpr.layout.height; ++y) lumen += cpr.huAt(centre, y) > kLumenThreshold;
       const double fraction = double(lumen) / cpr.layout.height;
-      std::printf("[ measure  ] aorta path %zu, angle %.0f: %.1f %% of %d centre pixels > %.0f\n",
-                  p, angle, 100 * fraction, cpr.layout.height, kLumenThreshold);
+      std::printf("[ measure  ] aorta path %zu, angle %.0f: %.1f %% of %d centre pixels > %.0f\n", p,
+                  angle, 100 * fraction, cpr.layout.height, kLumenThreshold);
       EXPECT_GE(fraction, 0.95) << "path " << p;
     }
   }
@@ -731,9 +723,8 @@ TEST(CprDisplay, MarkerAndRulerDrawOnTheCenterlineOnly) {
 
 TEST(CprMetadata, SaysHowToMeasure) {
   const Volume volume = emptyVolume();
-  const CprLayout layout =
-      layoutCpr({straightPath({30, 30, 5}, {30, 30, 95})}, cprView(volume, Axis::k, 15, 0.5),
-                {CprMode::straightened, {}});
+  const CprLayout layout = layoutCpr({straightPath({30, 30, 5}, {30, 30, 95})},
+                                     cprView(volume, Axis::k, 15, 0.5), {CprMode::straightened, {}});
   CprDescription description;
   description.pathNames = {"left", "right"};
   description.angleDeg = 15;
@@ -762,8 +753,7 @@ TEST(CprErrors, BadPathSelectionsNameTheIndexAndTheRange) {
   EXPECT_EQ(selectPaths(centerlines, "all").size(), 2u);
   EXPECT_EQ(selectPaths(centerlines, "1").size(), 1u);
   EXPECT_EQ(errorOf([&] { selectPaths(centerlines, "2"); }), "there is no path 2; it has 2 (0..1)");
-  EXPECT_EQ(errorOf([&] { selectPaths(centerlines, "-1"); }),
-            "there is no path -1; it has 2 (0..1)");
+  EXPECT_EQ(errorOf([&] { selectPaths(centerlines, "-1"); }), "there is no path -1; it has 2 (0..1)");
   EXPECT_NE(errorOf([&] { selectPaths(centerlines, "1x"); }).find("neither 'all' nor"),
             std::string::npos);
 }
@@ -784,11 +774,10 @@ TEST(CprErrors, EmptyDegenerateAndOutsidePathsAreRefusedWithTheirName) {
   away.name = "away";
   EXPECT_EQ(layoutOf(away), "path 'away' lies entirely outside the volume");
   EXPECT_EQ(errorOf([&] { layoutCpr({}, view, {}); }), "no centerline paths to reformat");
-  EXPECT_NE(layoutOf(straightPath({30, 30, 5}, {30, 30, 95}), {CprMode::straightened, -3.0})
-                .find("width"),
-            std::string::npos);
-  EXPECT_NE(errorOf([&] { cprView(volume, Axis::k, 0, 0.0); }).find("pixel size"),
-            std::string::npos);
+  EXPECT_NE(
+      layoutOf(straightPath({30, 30, 5}, {30, 30, 95}), {CprMode::straightened, -3.0}).find("width"),
+      std::string::npos);
+  EXPECT_NE(errorOf([&] { cprView(volume, Axis::k, 0, 0.0); }).find("pixel size"), std::string::npos);
   // Problems of the paths (the CLI blames the centerline file) are told apart from the others.
   EXPECT_THROW(layoutCpr({CenterlinePath{"empty", {}}}, view, {}), CprPathError);
   bool pathError = false;
@@ -800,8 +789,8 @@ TEST(CprErrors, EmptyDegenerateAndOutsidePathsAreRefusedWithTheirName) {
   }
   EXPECT_FALSE(pathError);
   EXPECT_NE(errorOf([&] {
-              layoutCpr({straightPath({30, 30, 5}, {30, 30, 95})},
-                        cprView(volume, Axis::k, 0, 1e-4), {CprMode::straightened, {}});
+              layoutCpr({straightPath({30, 30, 5}, {30, 30, 95})}, cprView(volume, Axis::k, 0, 1e-4),
+                        {CprMode::straightened, {}});
             }).find("pixels; choose a larger pixel size"),
             std::string::npos);
 }

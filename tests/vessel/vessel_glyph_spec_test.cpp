@@ -40,10 +40,10 @@ TEST(VesselGlyphSpec, ContextShapes) {
 }
 
 TEST(VesselGlyphSpec, BadSpecsGiveOneLineNamingTheOption) {
-  for (const std::string spec : {"", "circle", "circle:", "circle:radius", "circle:radius=",
-                                 "circle:radius=0", "circle:radius=-1", "circle:radius=2y",
-                                 "circle:radius=nan", "circle:radius=1e999", "disc:radius=2",
-                                 "circle:radius=2,radius=3", "circle:radius=2,extra=1"}) {
+  for (const std::string spec :
+       {"", "circle", "circle:", "circle:radius", "circle:radius=", "circle:radius=0",
+        "circle:radius=-1", "circle:radius=2y", "circle:radius=nan", "circle:radius=1e999",
+        "disc:radius=2", "circle:radius=2,radius=3", "circle:radius=2,extra=1"}) {
     try {
       parseFocusSpec(spec);
       ADD_FAILURE() << "accepted '" << spec << "'";
@@ -54,8 +54,9 @@ TEST(VesselGlyphSpec, BadSpecsGiveOneLineNamingTheOption) {
     }
   }
   VesselGlyphSettings settings;
-  for (const std::string spec : {"slab", "slab:front=1", "slab:front=1,back=x", "slab:front=1,back=2,width=-3",
-                                 "tube", "tube:radius=0", "none:width=1", "cylinder:radius=2"}) {
+  for (const std::string spec :
+       {"slab", "slab:front=1", "slab:front=1,back=x", "slab:front=1,back=2,width=-3", "tube",
+        "tube:radius=0", "none:width=1", "cylinder:radius=2"}) {
     EXPECT_THROW(parseContextSpec(spec, settings), std::invalid_argument) << spec;
   }
 }

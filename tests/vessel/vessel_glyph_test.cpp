@@ -46,7 +46,8 @@ CenterlinePath sampledPath(const std::string& name, const std::function<glm::dve
 
 CenterlinePath straightPath(const std::string& name, glm::dvec3 from, glm::dvec3 to, int points,
                             double radius) {
-  return sampledPath(name, [&](double s) { return glm::mix(from, to, s); }, points, radius, radius);
+  return sampledPath(
+      name, [&](double s) { return glm::mix(from, to, s); }, points, radius, radius);
 }
 
 // Oblique and tortuous: corner to corner with wiggles in all three axes, radius 4.5 -> 2 mm.
@@ -145,13 +146,15 @@ void expectWellFormed(const RayRegions& regions, const ViewGeometry& view) {
 // Signed distance to a tube with radius interpolated along each segment:
 // min over segments and s of |p - c(s)| - r(s) (convex in s: ternary search).
 double segmentSignedDistance(const CenterlinePoint& a, const CenterlinePoint& b, glm::dvec3 p) {
-  return test_support::taperedSegmentSignedDistance(a.positionMm, a.radiusMm, b.positionMm, b.radiusMm, p);
+  return test_support::taperedSegmentSignedDistance(a.positionMm, a.radiusMm, b.positionMm, b.radiusMm,
+                                                    p);
 }
 
 double pointSegmentDistance(glm::dvec3 a, glm::dvec3 b, glm::dvec3 p) {
   const glm::dvec3 along = b - a;
   const double lengthSquared = glm::dot(along, along);
-  const double s = lengthSquared > 0 ? std::clamp(glm::dot(p - a, along) / lengthSquared, 0.0, 1.0) : 0.0;
+  const double s =
+      lengthSquared > 0 ? std::clamp(glm::dot(p - a, along) / lengthSquared, 0.0, 1.0) : 0.0;
   return glm::distance(p, a + s * along);
 }
 
@@ -175,7 +178,8 @@ struct BruteForceTube {
     };
     for (std::size_t n = 0; n < segments.size(); ++n) {
       const auto& [a, b] = segments[n];
-      const double distance = pointSegmentDistance(project(a.positionMm), project(b.positionMm), {h, v, 0});
+      const double distance =
+          pointSegmentDistance(project(a.positionMm), project(b.positionMm), {h, v, 0});
       if (distance - std::max(a.radiusMm, b.radiusMm) <= reachMm) found.push_back(n);
     }
     return found;
@@ -186,8 +190,8 @@ struct BruteForceTube {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t n : candidates) {
       const auto& [a, b] = segments[n];
-      const double bound = pointSegmentDistance(a.positionMm, b.positionMm, p) -
-                           std::max(a.radiusMm, b.radiusMm);
+      const double bound =
+          pointSegmentDistance(a.positionMm, b.positionMm, p) - std::max(a.radiusMm, b.radiusMm);
       if (bound > std::min(best, farMm)) {
         best = std::min(best, bound);
         continue;
@@ -262,7 +266,8 @@ void expectMatchesBruteForce(const std::vector<CenterlinePath>& paths, double an
   expectWellFormed(regions, view);
   const BruteForceTube tube(paths);
   const bool slab = settings.context == ContextShape::slab;
-  const std::vector<glm::dvec3> dense = slab ? densePointsInView(paths, view) : std::vector<glm::dvec3>{};
+  const std::vector<glm::dvec3> dense =
+      slab ? densePointsInView(paths, view) : std::vector<glm::dvec3>{};
   const double far = outerSlackMm + kTolerance;
   int focusChecked = 0, contextChecked = 0, outsideChecked = 0;
   for (int y = 0; y < view.height; ++y) {
@@ -293,11 +298,11 @@ void expectMatchesBruteForce(const std::vector<CenterlinePath>& paths, double an
                                            << "), t = " << t << ", distance " << distance;
           if (inSpans(slabInner, t)) {
             ++contextChecked;
-            ASSERT_EQ(region, Region::context) << "inside the slab at pixel (" << x << ", " << y
-                                               << "), t = " << t;
+            ASSERT_EQ(region, Region::context)
+                << "inside the slab at pixel (" << x << ", " << y << "), t = " << t;
           } else if (!inSpans(slabOuter, t)) {
-            ASSERT_EQ(region, Region::outside) << "outside the slab at pixel (" << x << ", " << y
-                                               << "), t = " << t;
+            ASSERT_EQ(region, Region::outside)
+                << "outside the slab at pixel (" << x << ", " << y << "), t = " << t;
           }
         }
       }
@@ -375,10 +380,9 @@ TEST(VesselGlyph, ObliqueTortuousVesselMatchesBruteForce) {
 }
 
 TEST(VesselGlyph, OverlappingTubesOfSeveralPathsAreMerged) {
-  const std::vector<CenterlinePath> paths{
-      straightPath("a", {10, 20, 10}, {50, 40, 70}, 30, 5.0),
-      straightPath("b", {50, 20, 10}, {12, 42, 68}, 25, 3.0),
-      straightPath("c", {30, 10, 40}, {30, 55, 40}, 20, 4.0)};
+  const std::vector<CenterlinePath> paths{straightPath("a", {10, 20, 10}, {50, 40, 70}, 30, 5.0),
+                                          straightPath("b", {50, 20, 10}, {12, 42, 68}, 25, 3.0),
+                                          straightPath("c", {30, 10, 40}, {30, 55, 40}, 20, 4.0)};
   for (double angle : {0.0, 45.0, 100.0}) {
     SCOPED_TRACE("angle " + std::to_string(angle));
     expectMatchesBruteForce(paths, angle, exactFocusOnly(), 0.0);
@@ -393,8 +397,7 @@ TEST(VesselGlyph, SlabContextFollowsTheCenterlineDepthWithinItsBounds) {
   settings.context = ContextShape::slab;
   settings.slab = {6.0, 9.0, 12.0};
   // Slanted in depth at angle 0 (y changes with z), and a tortuous one.
-  const std::vector<CenterlinePath> slanted{
-      straightPath("slanted", {30, 18, 5}, {34, 45, 73}, 40, 2.0)};
+  const std::vector<CenterlinePath> slanted{straightPath("slanted", {30, 18, 5}, {34, 45, 73}, 40, 2.0)};
   for (double angle : {0.0, 60.0, 145.0}) {
     SCOPED_TRACE("slanted, angle " + std::to_string(angle));
     expectMatchesBruteForce(slanted, angle, settings, 0.0);
@@ -413,7 +416,8 @@ TEST(VesselGlyph, SlabIsBoundedSideways) {
   settings.slab = {5.0, 5.0, 8.0};
   const Volume volume = testVolume();
   const ViewGeometry view = viewAt(volume, 0);  // h = x - 31.5, t = y - 31.5
-  const Centerlines centerlines = inVolumeFrame({straightPath("axial", {30.5, 25, 5}, {30.5, 25, 73}, 30, 2.0)});
+  const Centerlines centerlines =
+      inVolumeFrame({straightPath("axial", {30.5, 25, 5}, {30.5, 25, 73}, 30, 2.0)});
   const RayRegions regions = buildRayRegions(volume, view, centerlines, settings);
   const int y = view.height / 2;
   for (int x = 0; x < view.width; ++x) {
@@ -442,7 +446,8 @@ TEST(VesselGlyph, ContextTubeSurroundsTheFocus) {
   settings.contextTube = {RadiusMode::constant, 9.0, 0.0};
   const Volume volume = testVolume();
   const ViewGeometry view = viewAt(volume, 0);
-  const Centerlines centerlines = inVolumeFrame({straightPath("axial", {31.5, 25, 5}, {31.5, 25, 73}, 30, 2.0)});
+  const Centerlines centerlines =
+      inVolumeFrame({straightPath("axial", {31.5, 25, 5}, {31.5, 25, 73}, 30, 2.0)});
   const RayRegions regions = buildRayRegions(volume, view, centerlines, settings);
   const int y = view.height / 2, xCentre = view.width / 2;  // h = 0.5 at xCentre
   const auto centre = intervalsOf(regions, {xCentre, y});
@@ -464,8 +469,8 @@ TEST(VesselGlyph, CleftRemovesTheContextInFrontOfTheFocusInsideItsFootprint) {
   settings.context = ContextShape::slab;
   settings.slab = {20.0, 20.0, 30.0};
   const Volume volume = testVolume();
-  const Centerlines centerlines = inVolumeFrame(
-      {tortuousPath(), straightPath("axial", {40, 25, 5}, {40, 25, 73}, 30, 3.0)});
+  const Centerlines centerlines =
+      inVolumeFrame({tortuousPath(), straightPath("axial", {40, 25, 5}, {40, 25, 73}, 30, 3.0)});
   for (double angle : {0.0, 70.0, 160.0}) {
     const ViewGeometry view = viewAt(volume, angle);
     settings.cleft = false;
@@ -528,13 +533,15 @@ TEST(VesselGlyph, HalfVesselCutKeepsTheBackHalf) {
         const glm::dvec3 under = horizontalFrom + s * along;
         const double horizontalDepth = glm::dot(under - origin, view.viewDir);
         const double horizontalOffset = std::abs(z - 40);
-        const bool nearAxial = axialOffset < kRadius - 0.01 && z > 15 && z < 60 && std::abs(z - 40) > kRadius + 1;
-        const bool nearHorizontal = horizontalOffset < kRadius - 0.01 && s > 0.1 && s < 0.9 &&
-                                    axialOffset > kRadius + 1;
+        const bool nearAxial =
+            axialOffset < kRadius - 0.01 && z > 15 && z < 60 && std::abs(z - 40) > kRadius + 1;
+        const bool nearHorizontal =
+            horizontalOffset < kRadius - 0.01 && s > 0.1 && s < 0.9 && axialOffset > kRadius + 1;
         if (nearAxial) {
           ASSERT_EQ(focus.size(), 1u) << x << ", " << y;
           EXPECT_NEAR(focus[0].begin, axialDepth, 1e-4);
-          EXPECT_NEAR(focus[0].end, axialDepth + std::sqrt(kRadius * kRadius - axialOffset * axialOffset), 1e-4);
+          EXPECT_NEAR(focus[0].end,
+                      axialDepth + std::sqrt(kRadius * kRadius - axialOffset * axialOffset), 1e-4);
           ++checked;
         } else if (nearHorizontal) {
           ASSERT_EQ(focus.size(), 1u) << x << ", " << y;
@@ -598,9 +605,9 @@ TEST(VesselGlyph, SimplificationMergesCollinearPointsAndStaysWithinTolerance) {
 }
 
 TEST(VesselGlyph, LongPathsAreSimplifiedPieceByPiece) {
-  const GlyphTubes tubes = prepareGlyphTubes(
-      inVolumeFrame({straightPath("long", {10, 10, 5}, {50, 50, 70}, 2000, 2.0)}),
-      simplifiedFocusOnly(0.1));
+  const GlyphTubes tubes =
+      prepareGlyphTubes(inVolumeFrame({straightPath("long", {10, 10, 5}, {50, 50, 70}, 2000, 2.0)}),
+                        simplifiedFocusOnly(0.1));
   expectOneSegmentPerPiece(tubes, 2000);
 }
 
@@ -671,9 +678,9 @@ TEST(VesselGlyph, SameOutputWhateverTheThreadCount) {
   settings.context = ContextShape::slab;
   settings.cleft = true;
   const Volume volume = testVolume();
-  const Centerlines centerlines = inVolumeFrame(
-      {tortuousPath(), straightPath("a", {10, 20, 10}, {50, 40, 70}, 300, 5.0),
-       straightPath("b", {50, 20, 10}, {12, 42, 68}, 200, 3.0)});
+  const Centerlines centerlines =
+      inVolumeFrame({tortuousPath(), straightPath("a", {10, 20, 10}, {50, 40, 70}, 300, 5.0),
+                     straightPath("b", {50, 20, 10}, {12, 42, 68}, 200, 3.0)});
   const ViewGeometry view = viewAt(volume, 33);
   const auto buildWith = [&](int threads) {
     tbb::task_arena arena(threads);
@@ -698,8 +705,8 @@ TEST(VesselGlyph, BuilderReusingItsMemoryGivesTheSameRegions) {
   VesselGlyphSettings settings;
   settings.context = ContextShape::slab;
   const Volume volume = testVolume();
-  const Centerlines centerlines = inVolumeFrame(
-      {tortuousPath(), straightPath("a", {10, 20, 10}, {50, 40, 70}, 300, 5.0)});
+  const Centerlines centerlines =
+      inVolumeFrame({tortuousPath(), straightPath("a", {10, 20, 10}, {50, 40, 70}, 300, 5.0)});
   RayRegionBuilder builder(centerlines, settings);
   RayRegions reused;
   for (double angle : {0.0, 45.0, 90.0, 10.0}) {  // bigger and smaller outputs in turn
