@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ pkg-config ccache xvfb xauth xdotool
+  cmake ninja-build g++ pkg-config ccache clang-format xvfb xauth xdotool
   libinsighttoolkit5-dev libgdcm-dev libopenimageio-dev openimageio-tools libopencv-dev
   libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libgtest-dev zlib1g-dev
   libpugixml-dev libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev

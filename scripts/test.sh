@@ -5,6 +5,10 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 
+"$root/scripts/setup.sh"
+# The tree is formatted with .clang-format (clang-format -i on the files you changed).
+(cd "$root" && git ls-files '*.h' '*.cpp' | xargs clang-format --dry-run --Werror)
+
 "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
 ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
 
