@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bench/cpr_bench.h"
+#include "cli/load_volume.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "io/centerline_file.h"
@@ -76,11 +77,7 @@ void runBenchmark(const Volume& volume, const std::vector<CenterlinePath>& paths
 int runCpr(const CprOptions& o) {
   std::string displayDescription;
   const CprDisplay display = displayFrom(o, displayDescription);
-  ReadOptions read;
-  read.warn = printWarning;
-  ProgressLine loading("loading " + o.volume);
-  read.progress = std::ref(loading);
-  const LoadedVolume loaded = readVolume(o.volume, read);
+  const LoadedVolume loaded = loadVolumeWithProgress(o.volume);
   const Volume& volume = loaded.volume;
   CenterlineLoadOptions loadOptions;
   loadOptions.warn = printWarning;

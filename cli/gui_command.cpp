@@ -8,6 +8,7 @@
 #include "io/input_error.h"
 #include "phantom/phantom.h"
 #include "gui/app_window.h"
+#include "cli/load_volume.h"
 #include "cli/commands.h"
 #include "gui/headless.h"
 #include "cli/progress_line.h"
@@ -40,11 +41,7 @@ LoadedDataset loadDataset(const GuiOptions& options) {
     dataset.description = "generated run-off CTA phantom";
     return dataset;
   }
-  ReadOptions read;
-  read.warn = printWarning;
-  ProgressLine progress("loading " + options.volume);
-  read.progress = std::ref(progress);
-  LoadedVolume loaded = readVolume(options.volume, read);
+  LoadedVolume loaded = loadVolumeWithProgress(options.volume);
   dataset.volume = std::move(loaded.volume);
   dataset.name = options.volume;
   dataset.description = loaded.description;

@@ -3,6 +3,7 @@
 #include <functional>
 
 #include "io/input_error.h"
+#include "cli/load_volume.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "io/tf_file.h"
@@ -58,12 +59,7 @@ void printHistogramSummary(const Volume& volume, const std::string& tfName) {
 }  // namespace
 
 int runInfo(const InfoOptions& options) {
-  ReadOptions read;
-  read.labelPath = options.labels;
-  read.warn = printWarning;
-  ProgressLine loading("loading " + options.volume);
-  read.progress = std::ref(loading);
-  const LoadedVolume loaded = readVolume(options.volume, read);
+  const LoadedVolume loaded = loadVolumeWithProgress(options.volume, options.labels);
   const Volume& v = loaded.volume;
   std::printf("file:        %s\n", options.volume.c_str());
   std::printf("format:      %s\n", loaded.description.c_str());

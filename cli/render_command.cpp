@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "cli/load_volume.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "io/centerline_file.h"
@@ -58,15 +59,6 @@ RenderRecipe sidecarFrom(const RenderOptions& o) {
   return s;
 }
 
-Volume loadVolume(const RenderRecipe& sidecar) {
-  ReadOptions read;
-  read.labelPath = sidecar.labels;
-  read.warn = printWarning;
-  ProgressLine loading("loading " + sidecar.dataset);
-  read.progress = std::ref(loading);
-  return readVolume(sidecar.dataset, read).volume;
-}
-
 Centerlines loadCenterlines(const RenderRecipe& sidecar, const Volume& volume) {
   if (!sidecar.vesselGlyph) return {};
   CenterlineLoadOptions load;
@@ -79,7 +71,7 @@ Centerlines loadCenterlines(const RenderRecipe& sidecar, const Volume& volume) {
 
 // Loads the volume (and centerlines), renders, writes `out` and its sidecar (image = out).
 void renderToFile(const RenderRecipe& sidecar, const std::filesystem::path& out) {
-  const Volume volume = loadVolume(sidecar);
+  const Volume volume = loadVolumeWithProgress(sidecar.dataset, sidecar.labels).volume;
   const Centerlines centerlines = loadCenterlines(sidecar, volume);
   checkImageSize(makeViewGeometry(volume, sidecar.params), out);
   const auto start = std::chrono::steady_clock::now();

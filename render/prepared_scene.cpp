@@ -17,8 +17,7 @@ void PreparedScene::prepareVesselGlyph(const Centerlines& centerlines, const Pre
   const VesselGlyphRecipe& vg = *recipe_.vesselGlyph;
   focus_ = buildTable(vg.focusTf);
   context_ = buildTable(vg.contextTf);
-  outsideRendered_ = vg.outsideTf.has_value();
-  if (outsideRendered_) outside_ = buildTable(*vg.outsideTf);
+  if (vg.outsideTf) outside_ = buildTable(*vg.outsideTf);
 
   const auto& lent = previous ? previous->regions_ : nullptr;
   if (lent && lent->builder.settings() == vg.settings && lent->centerlines == centerlines)
@@ -39,7 +38,7 @@ void PreparedScene::prepareVesselGlyph(const Centerlines& centerlines, const Pre
 
 RegionTables PreparedScene::tables(const RayRegions* regions) const {
   if (!regions_) return singleTable(table_);
-  return {regions, &focus_, &context_, outsideRendered_ ? &outside_ : nullptr};
+  return {regions, &focus_, &context_, recipe_.vesselGlyph->outsideTf ? &outside_ : nullptr};
 }
 
 void PreparedScene::buildRegions(const ViewGeometry& view, RayRegions& out) const {

@@ -73,7 +73,6 @@ class PreparedScene {
   const Volume& volume_;
   RenderRecipe recipe_;
   TfTable table_{}, focus_{}, context_{}, outside_{};
-  bool outsideRendered_ = true;
   std::shared_ptr<GuardedRegions> regions_;
   std::shared_ptr<Hybrid> hybrid_;
 };

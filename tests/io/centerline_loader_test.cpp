@@ -698,8 +698,9 @@ std::optional<double> valueAt(const Volume& volume, glm::dvec3 physicalMm) {
   return huOfDensity(volume.densityAt(voxel.x, voxel.y, voxel.z));
 }
 
-// aorta.mha's values: tissue 0-700, contrast-filled lumen 1200-2400, and ~850-1000 at the top of
-// the trunk, where the contrast fades (README). Lumen = above all tissue.
+// aorta.mha is not calibrated in HU (shared data README). Its lumen is brighter than every tissue
+// voxel, also at the top of the trunk where the contrast fades, so "lumen" is any value above the
+// brightest tissue, and "full contrast" the band the well-filled lumen holds.
 bool inLumen(double value) { return value > 700 && value <= 2600; }
 bool fullContrast(double value) { return value >= 1200 && value <= 2400; }
 

@@ -10,23 +10,15 @@
 #include "phantom/phantom.h"
 #include "render/frame_renderer.h"
 #include "render/prepared_scene.h"
+#include "tests/support/phantom_in_volume_frame.h"
 
 namespace angio {
 namespace {
 
-struct TestData {
-  Volume volume;
-  Centerlines centerlines;  // volume frame
-};
+using test_support::PhantomInVolumeFrame;
 
-const TestData& testData() {
-  static const TestData data = [] {
-    PhantomOptions options;
-    options.dims = {64, 64, 128};
-    Phantom phantom = generatePhantom(options);
-    Centerlines centerlines = toVolumeFrame(phantom.centerlines, phantom.volume);
-    return TestData{std::move(phantom.volume), std::move(centerlines)};
-  }();
+const PhantomInVolumeFrame& testData() {
+  static const PhantomInVolumeFrame data = test_support::phantomInVolumeFrame({64, 64, 128});
   return data;
 }
 
@@ -54,7 +46,7 @@ bool hasVisiblePixel(const Image& image) {
 }
 
 TEST(PreparedScene, AScenePreparedAfterAnotherRendersAsAFreshOne) {
-  const TestData& data = testData();
+  const PhantomInVolumeFrame& data = testData();
   const RenderRecipe first = vesselGlyphRecipe();
   const auto before = PreparedScene::prepare(data.volume, data.centerlines, first);
   FrameRenderer frames(data.volume);
@@ -75,7 +67,7 @@ TEST(PreparedScene, AScenePreparedAfterAnotherRendersAsAFreshOne) {
 }
 
 TEST(FrameRenderer, OneRendererAcrossScenesAndAxesGivesEachRecipesImage) {
-  const TestData& data = testData();
+  const PhantomInVolumeFrame& data = testData();
   FrameRenderer frames(data.volume);
   RenderRecipe plain;
   plain.tf = loadPresetOrFile("cta-vessels-bone");

@@ -19,6 +19,7 @@
 #include "phantom/phantom.h"
 #include "render/progressive_renderer.h"
 #include "render/render_threads.h"
+#include "tests/support/phantom_in_volume_frame.h"
 #include "vessel/vessel_glyph.h"
 
 namespace angio {
@@ -32,19 +33,9 @@ using Clock = std::chrono::steady_clock;
 // tight bound here would fail on a loaded CI machine or under sanitizers.
 constexpr double kInterruptBudgetMs = 150;
 
-struct TestData {
-  Volume volume;
-  Centerlines centerlines;  // volume frame
-};
-
-const TestData& testData() {
-  static const TestData data = [] {
-    PhantomOptions options;
-    options.dims = {96, 96, 200};
-    Phantom phantom = generatePhantom(options);
-    Centerlines centerlines = toVolumeFrame(phantom.centerlines, phantom.volume);
-    return TestData{std::move(phantom.volume), std::move(centerlines)};
-  }();
+const test_support::PhantomInVolumeFrame& testData() {
+  static const test_support::PhantomInVolumeFrame data =
+      test_support::phantomInVolumeFrame({96, 96, 200});
   return data;
 }
 const Volume& testVolume() { return testData().volume; }

@@ -605,9 +605,9 @@ TEST(CprResampling, ValuesAreTheTrilinearReferenceAndTheRemapIsMeasured) {
 // --- The aorta ----------------------------------------------------------------------------------
 
 TEST(CprAorta, StraightenedCentreColumnIsContrastLumen) {
-  // aorta.mha is not calibrated: contrast lumen ~1200-2400, tissue 0-700, and where the contrast
-  // fades at the trunk's start (its first ~22 points) the lumen is still ~840-990. 800 lies above
-  // all tissue and below all lumen.
+  // aorta.mha is not calibrated in HU (shared data README). Its lumen stays brighter than every
+  // tissue voxel, also at the trunk's start where the contrast fades, so one threshold between the
+  // brightest tissue and the faintest lumen tells them apart.
   constexpr float kLumenThreshold = 800.f;
   const Aorta& data = aorta();
   ASSERT_EQ(data.centerlines.paths.size(), 2u);
