@@ -115,6 +115,33 @@ RenderRecipe vesselGlyphRecipe(const TransferFunction& tf, bool hybrid) {
   return recipe;
 }
 
+// Every listed label with the main TF as its own: the image without labels, through the per-label
+// path.
+RenderRecipe ownTfRecipe(const RenderRecipe& recipe) {
+  RenderRecipe own = recipe;
+  for (LabelStyle& style : own.tf.labels) {
+    style.mode = LabelMode::tf;
+    style.points = recipe.tf.points;
+  }
+  return own;
+}
+
+// Re-classification after a label change: scenes alternating between the styles and the styles
+// with the first label shown, each prepared anew; median ms over `count` changes.
+double labelClassifyMs(FrameRenderer& frames, const Volume& volume, const RenderRecipe& recipe,
+                       Axis axis, int count) {
+  RenderRecipe shown = recipe;
+  shown.tf.labels.front().mode = LabelMode::main;
+  std::vector<double> times;
+  for (int n = 0; n < count; ++n) {
+    const auto scene = PreparedScene::prepare(volume, {}, n % 2 ? shown : recipe);
+    const auto start = Clock::now();
+    frames.prepare(scene, axis);
+    times.push_back(msSince(start));
+  }
+  return median(times);
+}
+
 // One frame of `scene` (recycling the previous frame's memory, as the progressive renderer
 // does); returns the samples evaluated.
 FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedScene> scene,
@@ -189,6 +216,12 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
   report.interruptMaxMs = *std::max_element(latencies.begin(), latencies.end());
   report.interrupts = int(latencies.size());
   report.accelerationMiB = frames.structureMiB();
+  RenderRecipe labelled = recipe;
+  labelled.tf.labels = settings.labels;
+  if (!settings.labels.empty())
+    report.labelClassifyMs = labelClassifyMs(frames, volume, labelled, settings.axis, 9);
+  const auto labelScene = PreparedScene::prepare(volume, {}, labelled);
+  const auto ownTfScene = PreparedScene::prepare(volume, {}, ownTfRecipe(labelled));
   report.blocking = blockingReport(volume, buildTable(tf));
 
   Image previous;
@@ -227,6 +260,15 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
           report.rows.push_back(timeVariant(level.name, "only " + t.name, few, p, onlyWith(&t)));
       }
     }
+    if (!settings.labels.empty()) {
+      for (const auto& [variant, labelledScene] :
+           {std::pair{"labels", labelScene}, {"labels, own TF", ownTfScene}}) {
+        report.rows.push_back(timeFrames(level.name, variant, settings.angles, p,
+                                         sceneFrames(frames, labelledScene, previous)));
+        std::fprintf(stderr, "bench: %s %s %.1f ms\n", level.name.c_str(), variant,
+                     report.rows.back().medianMs);
+      }
+    }
     if (settings.vesselTree) {
       for (const bool hybrid : {false, true}) {
         const auto glyph =
@@ -259,8 +301,9 @@ std::string formatTable(const BenchReport& r) {
                 r.dims.y, r.dims.z, r.volumeMiB, r.transferFunction.c_str(), r.threads);
   out << line;
   std::snprintf(line, sizeof line,
-                "preprocessing (slice tiles) %.0f ms, TF classification %.1f ms, structures %.1f MiB\n",
-                r.preprocessMs, r.classifyMs, r.accelerationMiB);
+                "preprocessing (slice tiles) %.0f ms, TF classification %.1f ms, label change "
+                "re-classification %.1f ms, structures %.1f MiB\n",
+                r.preprocessMs, r.classifyMs, r.labelClassifyMs, r.accelerationMiB);
   out << line;
   const BlockingReport& b = r.blocking;
   std::snprintf(
@@ -304,6 +347,7 @@ std::string toJson(const BenchReport& r) {
                    {"acceleration_mib", r.accelerationMiB},
                    {"preprocess_ms", r.preprocessMs},
                    {"classify_ms", r.classifyMs},
+                   {"label_classify_ms", r.labelClassifyMs},
                    {"blocked_volume",
                     {{"build_ms", r.blocking.buildMs},
                      {"mib", r.blocking.memoryMiB},

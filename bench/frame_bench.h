@@ -27,6 +27,11 @@ struct BenchSettings {
   // "hybrid cpr" row (thesis fig. 5.4): that frame with the projected CPR of every path composited
   // into the focus's footprint.
   std::optional<Centerlines> vesselTree;
+  // Label styles for a volume with labels: a "labels" row per level renders with them, a
+  // "labels, own TF" row with every listed label given the main TF as its own (the image without
+  // labels, the cost of per-label classification alone), and the re-classification after a label
+  // change is timed.
+  std::vector<LabelStyle> labels;
 };
 
 struct FrameTimingRow {
@@ -46,6 +51,7 @@ struct BenchReport {
   double accelerationMiB = 0;  // slice tiles + classification
   double preprocessMs = 0;     // building the slice tiles for the axis
   double classifyMs = 0;       // classifying them for the TF
+  double labelClassifyMs = 0;  // median re-classification after a label change (with labels)
   BlockingReport blocking;     // the blocked volume (built and classified, not rendered from)
   // A high-quality frame cancelled at a random moment: cancel flag set -> renderFast returned.
   double interruptMedianMs = 0, interruptMaxMs = 0;

@@ -15,6 +15,7 @@
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/volume_reader.h"
+#include "render/label_styles.h"
 
 namespace angio {
 
@@ -22,7 +23,10 @@ namespace {
 
 // The volume, and the phantom's ground-truth centerlines when it is the phantom.
 Phantom benchVolume(const BenchOptionsCli& options) {
-  if (!options.volume.empty()) return {readVolume(options.volume).volume, {}};
+  if (!options.labels.empty() && options.volume.empty())
+    throw std::invalid_argument("--labels needs VOLUME (write the phantom with `angioray phantom`)");
+  if (!options.volume.empty())
+    return {readVolume(options.volume, {.labelPath = options.labels}).volume, {}};
   PhantomOptions phantom;
   phantom.dims = parseSize(options.size);
   ProgressLine progress("generating phantom " + options.size);
@@ -65,6 +69,17 @@ int runGlyphIntervalBench(const BenchOptionsCli& options, const Volume& volume) 
   return 0;
 }
 
+// The styles of the label rows: each of `hide` (default: bone) hidden.
+std::vector<LabelStyle> hiddenLabels(const std::vector<std::string>& hide) {
+  std::vector<LabelStyle> styles;
+  for (const std::string& name : hide.empty() ? std::vector<std::string>{"bone"} : hide) {
+    const std::optional<int> label = findLabel(styles, name);
+    if (!label) throw std::invalid_argument("--hide " + name + ": no such label (bone, table, 1-15)");
+    styleOf(styles, *label).mode = LabelMode::hidden;
+  }
+  return styles;
+}
+
 }  // namespace
 
 int runBench(const BenchOptionsCli& options) {
@@ -86,6 +101,7 @@ int runBench(const BenchOptionsCli& options) {
   settings.withReference = options.reference;
   settings.withContributions = options.contributions;
   settings.levels = options.levels;
+  if (!options.labels.empty()) settings.labels = hiddenLabels(options.hide);
   BenchReport report = runFrameBench(volume, tf, settings);
   report.dataset = options.volume.empty() ? "phantom " + options.size : options.volume;
   std::printf("%s", formatTable(report).c_str());

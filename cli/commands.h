@@ -32,6 +32,8 @@ struct RenderOptions {
   bool mip = false;
   std::optional<double> window, level;
   bool reference = false;             // the plain reference raycaster instead of the fast one
+  std::vector<std::string> hide;      // labels (names or numbers) cut out of the render
+  bool showRemoved = false;           // hidden labels translucent instead of cut out
   VesselGlyphCliOptions vesselGlyph;  // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
   std::string params;                 // a render sidecar to reproduce (then only --out may be given)
 };
@@ -79,6 +81,8 @@ struct BenchOptionsCli {
   bool contributions = true;
   std::vector<std::string> levels;  // empty = all
   std::string centerlines;          // adds VesselGlyph rows (the phantom's own when no VOLUME)
+  std::string labels;               // a label volume for VOLUME: adds label rows
+  std::vector<std::string> hide;    // the labels those rows hide (default: bone)
   std::string json;
   bool glyphIntervals =
       false;  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)

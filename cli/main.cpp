@@ -44,6 +44,10 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
   cmd->add_option("--window", o.window, "MIP window width (HU)")->check(CLI::PositiveNumber);
   cmd->add_option("--level", o.level, "MIP window centre (HU)");
   cmd->add_flag("--reference", o.reference, "Use the plain reference raycaster (same image, slower)");
+  cmd->add_option("--hide", o.hide,
+                  "Cut a label out of the render (bone, table, a label number 1-15 or a name "
+                  "from the TF's labels); repeatable");
+  cmd->add_flag("--show-removed", o.showRemoved, "Render hidden labels translucent instead");
   angio::addVesselGlyphOptions(*cmd, o.vesselGlyph);
   auto* params = cmd->add_option("--params", o.params,
                                  "Render again what this sidecar (IMAGE.json) "
@@ -121,6 +125,8 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
       ->check(CLI::IsMember({"fast", "medium", "medium-trilinear", "high"}));
   cmd->add_option("--centerlines", o.centerlines,
                   "Also time VesselGlyph frames with these centerlines (default: the phantom's)");
+  cmd->add_option("--labels", o.labels, "Label volume for VOLUME: also time frames with labels");
+  cmd->add_option("--hide", o.hide, "Labels hidden in those frames (default: bone); repeatable");
   cmd->add_flag("--glyph-intervals", o.glyphIntervals,
                 "Time only VesselGlyph interval construction at medium quality: 20 synthetic "
                 "paths of 1000 points, or --centerlines");

@@ -15,6 +15,7 @@
 #include "render/export.h"
 #include "render/recipe_json.h"
 #include "render/frame_renderer.h"
+#include "render/label_styles.h"
 
 namespace angio {
 
@@ -43,6 +44,19 @@ std::string absolutePath(const std::string& path) {
   return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
 }
 
+void hideLabels(const RenderOptions& o, std::vector<LabelStyle>& styles) {
+  if (!o.hide.empty() && o.labels.empty())
+    throw std::invalid_argument("--hide needs --labels (a label volume)");
+  for (const std::string& name : o.hide) {
+    const std::optional<int> label = findLabel(styles, name);
+    if (!label)
+      throw std::invalid_argument("--hide " + name +
+                                  ": no such label (bone, table, 1-15 or a name from the TF's labels)");
+    styleOf(styles, *label).mode = LabelMode::hidden;
+  }
+  if (o.showRemoved) styles = withRemovedShown(std::move(styles));
+}
+
 RenderRecipe sidecarFrom(const RenderOptions& o) {
   if (o.volume.empty() || o.out.empty())
     throw std::invalid_argument("render needs VOLUME and --out (or --params SIDECAR.json)");
@@ -55,6 +69,7 @@ RenderRecipe sidecarFrom(const RenderOptions& o) {
   s.quality = parseQuality(o.quality);
   s.raycaster = o.reference ? Raycaster::reference : Raycaster::fast;
   s.tf = loadPresetOrFile(o.tf);
+  hideLabels(o, s.tf.labels);
   s.params = paramsFrom(o, s.tf);
   return s;
 }

@@ -22,6 +22,12 @@ FrameTables frameTables(const RegionTables& tables, double osd) {
   if (tables.regions && tables.context)
     frame.context = correctedTable(*tables.context, osd), frame.hasContext = true;
   if (tables.outside) frame.outside = correctedTable(*tables.outside, osd), frame.hasOutside = true;
+  frame.ownSlot.fill(-1);
+  for (int label = 0; tables.labels && label < kLabelCount; ++label)
+    if (const TfTable* own = tables.labels->ownTf(label)) {
+      frame.ownSlot[label] = int(frame.ownTables.size());
+      frame.ownTables.push_back(correctedTable(*own, osd));
+    }
   return frame;
 }
 

@@ -5,9 +5,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "core/label_tables.h"
 #include "core/region_intervals.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
@@ -26,19 +28,28 @@ SampleTable correctedTable(const TfTable& table, double osd);
 // The TFs of a frame by region (VesselGlyph, thesis ch. 5): focus and context of each ray from
 // RayRegions, everything else "outside". Plain DVR is the case without regions, where every sample
 // is outside and the outside TF is the TF: VG-DVR generalises DVR.
+// Labels (rendering model, "Labels") apply in every region: a hidden label is cut out everywhere,
+// and a label's own TF replaces the TF of whatever region the sample is in (a clipped region
+// stays clipped).
 struct RegionTables {
   const RayRegions* regions = nullptr;  // none: every sample is outside
   const TfTable* focus = nullptr;
   const TfTable* context = nullptr;
-  const TfTable* outside = nullptr;  // none: the outside is clipped (not rendered)
+  const TfTable* outside = nullptr;     // none: the outside is clipped (not rendered)
+  const LabelTables* labels = nullptr;  // none: every label as unlabelled voxels
+
+  // True iff some label renders differently from unlabelled voxels.
+  bool labelsActive() const { return labels && labels->active(); }
 };
 
 inline RegionTables singleTable(const TfTable& table) { return {nullptr, nullptr, nullptr, &table}; }
 
-// The region TFs with opacities corrected for the sample distance, once per frame.
+// The region and label TFs with opacities corrected for the sample distance, once per frame.
 struct FrameTables {
   SampleTable focus{}, context{}, outside{};
   bool hasFocus = false, hasContext = false, hasOutside = false;
+  std::vector<SampleTable> ownTables;    // the labels' own TFs
+  std::array<int, kLabelCount> ownSlot;  // per label: its index in ownTables, -1 = none
 
   // The table for a region, or nullptr where the region is not rendered.
   const SampleTable* of(Region region) const {
@@ -48,6 +59,11 @@ struct FrameTables {
       case Region::outside: return hasOutside ? &outside : nullptr;
     }
     return nullptr;
+  }
+  // The table for a sample whose nearest voxel has `label`, or nullptr where not rendered.
+  const SampleTable* of(Region region, int label) const {
+    const SampleTable* table = of(region);
+    return table && ownSlot[label] >= 0 ? &ownTables[ownSlot[label]] : table;
   }
 };
 FrameTables frameTables(const RegionTables& tables, double osd);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -27,6 +28,8 @@ struct Frame {
   const RenderParams& params;
   const FastRenderOptions& options;
   const RegionTables& regionTables;
+  const std::vector<std::uint16_t>& tileMaxDensity;  // the classification's, for MIP
+  LabelTables labels;  // the tables' labels (as unlabelled voxels when it has none)
   ViewGeometry view;
   FrameTables tables;
   RayTemplates templates;
@@ -45,6 +48,12 @@ struct Frame {
       case Region::outside: return regionTables.outside;
     }
     return nullptr;
+  }
+  // The same for a sample whose nearest voxel has `label`.
+  const TfTable* tfOf(Region region, int label) const {
+    const TfTable* table = tfOf(region);
+    const TfTable* own = labels.ownTf(label);
+    return table && own ? own : table;
   }
 };
 
@@ -66,8 +75,7 @@ void classifyRow(const Frame& f, double qa, RowTiles& row) {
   const bool mip = f.params.compositing == Compositing::mip;
   row.maxDensity.assign(perSlice, 0);
   row.visible.assign(perSlice, 0);
-  const bool wide = f.params.sampling.filter == Filter::mean;
-  const auto& sliceMax = wide ? f.tiles.wideMaxDensity : f.tiles.maxDensity;
+  const auto& sliceMax = f.tileMaxDensity;
   const std::uint8_t bit = visibilityBit(f.params.sampling.filter);
   for (int s = span.first; s <= span.last; ++s) {
     const std::size_t base = perSlice * s;
@@ -215,11 +223,13 @@ struct BundleRay {
   }
 };
 
-// What the inner loop is compiled for: MIP or DVR, with or without VesselGlyph regions.
-template <bool Mip, bool Regions>
+// What the inner loop is compiled for: MIP or DVR, with or without VesselGlyph regions, with or
+// without labels that render differently from unlabelled voxels.
+template <bool Mip, bool Regions, bool Labels>
 struct Compiled {
   static constexpr bool mip = Mip;
   static constexpr bool regions = Regions;
+  static constexpr bool labels = Labels;
 };
 
 // One sample k of one lane, after the bundle's sampler moved to it.
@@ -228,7 +238,8 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   Lane& lane = b.lanes[l];
   const double t = double(k) * f.view.sampleMm;
   const Region region = Mode::regions ? lane.regions.at(t) : Region::outside;
-  const SampleTable* table = f.tables.of(region);
+  const int label = Mode::labels && !Mode::mip ? b.sampler.label(bundle.fracA[l]) : 0;
+  const SampleTable* table = Mode::labels ? f.tables.of(region, label) : f.tables.of(region);
   if (Mode::regions && !table) {
     // A clipped region (VesselGlyph): leap to just before its end. The sample there is
     // classified as every other one, so the leap needs no exact division.
@@ -245,7 +256,7 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
     lane.mipMaximum = std::max(lane.mipMaximum, sampler.density(bundle.fracA[l]));
   } else {
     // (Without regions the sampler's cell already passed this test for every lane.)
-    if (Mode::regions && f.skipCells && !sampler.mayBeVisible(*f.tfOf(region))) return;
+    if (Mode::regions && f.skipCells && !sampler.mayBeVisible(*f.tfOf(region, label))) return;
     const glm::vec4 rgba = (*table)[tableIndex(sampler.density(bundle.fracA[l]))];
     if (rgba.a <= 0.f) return;
     const float shade = f.params.shading.enabled
@@ -336,12 +347,20 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
   return false;
 }
 
+// The sampler's voxel reader: the frame's label mask, or the plain density.
+template <class Read>
+Read densityReader(const Frame& f) {
+  if constexpr (std::is_same_v<Read, MaskedDensity>) return f.labels.density();
+  else return Read{};
+}
+
 template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
-  BundleRay<Sampler> b{RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
-                       Sampler(f.volume, f.rayStepQ, f.view.axis),
-                       {},
-                       bundle.lanes};
+  BundleRay<Sampler> b{
+      RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
+      Sampler(f.volume, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
+      {},
+      bundle.lanes};
   for (int l = 0; l < bundle.lanes; ++l)
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
   return b;
@@ -415,23 +434,30 @@ using RowFunction = bool (*)(const Frame&, const RowBundle*, const RowBundle*, I
 
 template <class Mode>
 RowFunction rowFunctionFor(Filter filter) {
+  using Read = std::conditional_t<Mode::labels, MaskedDensity, PlainDensity>;
   switch (filter) {
-    case Filter::nearest: return renderRows<Mode, NearestRaySampler>;
-    case Filter::mean: return renderRows<Mode, MeanRaySampler>;
-    case Filter::trilinear: return renderRows<Mode, TrilinearRaySampler>;
+    case Filter::nearest: return renderRows<Mode, NearestRaySampler<Read>>;
+    case Filter::mean: return renderRows<Mode, MeanRaySampler<Read>>;
+    case Filter::trilinear: return renderRows<Mode, TrilinearRaySampler<Read>>;
   }
-  return renderRows<Mode, NearestRaySampler>;
+  return renderRows<Mode, NearestRaySampler<Read>>;
 }
 
-// The row renderer compiled for the frame's filter, compositing and regions.
-RowFunction rowFunctionFor(const RenderParams& params, bool regions) {
+template <bool Mip, bool Regions>
+RowFunction rowFunctionFor(Filter filter, bool labels) {
+  return labels ? rowFunctionFor<Compiled<Mip, Regions, true>>(filter)
+                : rowFunctionFor<Compiled<Mip, Regions, false>>(filter);
+}
+
+// The row renderer compiled for the frame's filter, compositing, regions and labels.
+RowFunction rowFunctionFor(const RenderParams& params, bool regions, bool labels) {
   const bool mip = params.compositing == Compositing::mip;
   const Filter filter = params.sampling.filter;
   if (regions)
-    return mip ? rowFunctionFor<Compiled<true, true>>(filter)
-               : rowFunctionFor<Compiled<false, true>>(filter);
-  return mip ? rowFunctionFor<Compiled<true, false>>(filter)
-             : rowFunctionFor<Compiled<false, false>>(filter);
+    return mip ? rowFunctionFor<true, true>(filter, labels)
+               : rowFunctionFor<false, true>(filter, labels);
+  return mip ? rowFunctionFor<true, false>(filter, labels)
+             : rowFunctionFor<false, false>(filter, labels);
 }
 
 // The frame's image: every pixel is written by its row, so recycled memory needs no clearing.
@@ -443,19 +469,6 @@ Image frameImage(const ViewGeometry& view, Image* recycle) {
   image.height = view.height;
   image.pixels.resize(std::size_t(view.width) * view.height);
   return image;
-}
-
-// A table whose visibility query answers "visible in any region's TF" (only integratedVisible set).
-TfTable unionVisibility(const RegionTables& tables) {
-  TfTable any;
-  for (int d = 0; d < kDensityLevels; ++d) {
-    bool visible = false;
-    for (const TfTable* table : {tables.regions ? tables.focus : nullptr,
-                                 tables.regions ? tables.context : nullptr, tables.outside})
-      visible = visible || (table && table->rgba[d].a > 0.f);
-    any.integratedVisible[d + 1] = any.integratedVisible[d] + (visible ? 1 : 0);
-  }
-  return any;
 }
 
 }  // namespace
@@ -474,10 +487,23 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
     throw std::logic_error("renderFast: the tile classification was made for other TFs");
   const auto start = std::chrono::steady_clock::now();
   const SliceTiles& tiles = classification.tiles();
-  Frame f{volume,  tiles,  classification.visible(),         params,
-          options, tables, makeViewGeometry(volume, params), frameTables(tables, params.sampling.osd),
+  const bool labels = tables.labelsActive();
+  Frame f{volume,
+          tiles,
+          classification.visible(),
+          params,
+          options,
+          tables,
+          classification.maxDensity(params.sampling.filter),
+          labels ? *tables.labels : LabelTables(),
+          makeViewGeometry(volume, params),
+          frameTables(tables, params.sampling.osd),
           {}};
-  const TfTable anyRegion = unionVisibility(tables);
+  // Visible where any region's or label's TF is: a cell hidden from all is hidden from its samples.
+  std::vector<const TfTable*> anyTables = {f.tfOf(Region::focus), f.tfOf(Region::context),
+                                           f.tfOf(Region::outside)};
+  for (int label = 0; label < kLabelCount; ++label) anyTables.push_back(f.labels.ownTf(label));
+  const TfTable anyRegion = visibilityUnion(anyTables);
   f.anyRegionTf = &anyRegion;
   f.skipGroups = options.skipEmpty && options.skipGroups;
   f.skipTiles = options.skipEmpty && options.skipTiles;
@@ -495,7 +521,7 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   }
 
   Image image = frameImage(f.view, options.recycle);
-  const RowFunction renderRowsFn = rowFunctionFor(params, tables.regions != nullptr);
+  const RowFunction renderRowsFn = rowFunctionFor(params, tables.regions != nullptr, labels);
   std::atomic<std::uint64_t> samples{0};
   std::atomic<bool> cancelled{false};
   const std::vector<RowBundle> bundles = rowBundles(f);

@@ -17,7 +17,9 @@
 // (what cellAt gives for the row's own q; the voxel filters ignore it, a bundle's rows read the
 // same nearest voxel). samplesLeftInCell() tells how many of the following samples (q + j step, j = 1, 2, ...)
 // surely fall into the same cell (the same voxels), so a ray can leap over a hidden cell at once
-// (0 where the sampler does not know).
+// (0 where the sampler does not know). `Read` turns voxels into densities (PlainDensity, or
+// MaskedDensity where labels are hidden); label(fracA) is the label of the sample's nearest voxel,
+// which picks its TF (rendering model, "Labels").
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -35,34 +37,43 @@ namespace angio {
 // Mean (thesis sec. 4.4): the nearest voxel and its six face neighbours.
 enum class VoxelFilter { nearest, mean };
 
-template <VoxelFilter Filter>
+template <VoxelFilter Filter, class ReadDensity>
 class VoxelRaySampler {
  public:
-  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int) : volume_(volume) {}
+  using Read = ReadDensity;
+  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int, const Read& read = {})
+      : volume_(volume), read_(read) {}
 
   void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
   float density(float) const {
-    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, voxel_);
-    else return float(volume_.densityAt(voxel_.x, voxel_.y, voxel_.z));
+    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, voxel_, read_);
+    else return float(read_(volume_.at(voxel_.x, voxel_.y, voxel_.z)));
   }
-  glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_); }
+  glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_, read_); }
+  int label(float) const { return labelOf(volume_.at(voxel_.x, voxel_.y, voxel_.z)); }
 
  private:
   const Volume& volume_;
+  const Read read_;
   glm::ivec3 voxel_{0};
 };
 
-using NearestRaySampler = VoxelRaySampler<VoxelFilter::nearest>;
-using MeanRaySampler = VoxelRaySampler<VoxelFilter::mean>;
+template <class Read>
+using NearestRaySampler = VoxelRaySampler<VoxelFilter::nearest, Read>;
+template <class Read>
+using MeanRaySampler = VoxelRaySampler<VoxelFilter::mean, Read>;
 
+template <class ReadDensity>
 class TrilinearRaySampler {
  public:
+  using Read = ReadDensity;
   // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a.
-  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis)
-      : volume_(volume), steps_(cornerSteps(volume)), interior_(interiorBox(volume)), axis_(axis) {
+  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis, const Read& read = {})
+      : volume_(volume), read_(read), steps_(cornerSteps(volume)), interior_(interiorBox(volume)),
+        axis_(axis) {
     for (int axis = 0; axis < 3; ++axis) {
       forward_[axis] = step[axis] > 0;
       inverseStep_[axis] = step[axis] != 0 ? 1.0 / std::abs(step[axis]) : 0.0;
@@ -101,6 +112,11 @@ class TrilinearRaySampler {
     if (!gradientsLoaded_) loadGradients();
     return interpolateRow(
         fracA, [&](int dx, int dy, int dz) { return gradients_[corner(dx, dy, dz)]; }, gradientPlanes_);
+  }
+  // The nearest corner (nearestCorner in core/volume_sampling.h) as this row sees the cell.
+  int label(float fracA) const {
+    const glm::ivec3 near = nearestCorner(rowCell(fracA)) - cached_;
+    return cornerLabels_[corner(near.x, near.y, near.z)];
   }
 
  private:
@@ -148,8 +164,10 @@ class TrilinearRaySampler {
     for (int dz = 0; dz < 2; ++dz)
       for (int dy = 0; dy < 2; ++dy)
         for (int dx = 0; dx < 2; ++dx) {
-          const int d = densityOf(base[dx * steps_.x + dy * steps_.y + dz * steps_.z]);
+          const Voxel v = base[dx * steps_.x + dy * steps_.y + dz * steps_.z];
+          const int d = read_(v);
           corners_[corner(dx, dy, dz)] = float(d);
+          cornerLabels_[corner(dx, dy, dz)] = std::uint8_t(labelOf(v));
           lo = std::min(lo, d);
           hi = std::max(hi, d);
         }
@@ -176,7 +194,7 @@ class TrilinearRaySampler {
               glm::ivec3 across = d;
               across[axis] = 1 - d[axis];
               const float inside = corners_[corner(across.x, across.y, across.z)];
-              const float shell = float(densityOf(v[d[axis] ? strides[axis] : -strides[axis]]));
+              const float shell = float(read_(v[d[axis] ? strides[axis] : -strides[axis]]));
               g[axis] = d[axis] ? centralDifference(inside, shell, volume_.spacing[axis])
                                 : centralDifference(shell, inside, volume_.spacing[axis]);
             }
@@ -188,10 +206,11 @@ class TrilinearRaySampler {
       for (int dy = 0; dy < 2; ++dy)
         for (int dx = 0; dx < 2; ++dx)
           gradients_[corner(dx, dy, dz)] =
-              voxelGradient(volume_, clampIndex(volume_, cached_ + glm::ivec3(dx, dy, dz)));
+              voxelGradient(volume_, clampIndex(volume_, cached_ + glm::ivec3(dx, dy, dz)), read_);
   }
 
   const Volume& volume_;
+  const Read read_;
   const glm::ivec3 steps_;
   const Box interior_;
   const int axis_;
@@ -202,7 +221,8 @@ class TrilinearRaySampler {
   glm::ivec3 cached_{-1};
   bool gradientsLoaded_ = false;
   int lo_ = 0, hi_ = 0;
-  std::array<float, 8> corners_;        // filled by load() before any use
+  std::array<float, 8> corners_;  // filled by load() before any use
+  std::array<std::uint8_t, 8> cornerLabels_;
   std::array<glm::vec3, 8> gradients_;  // filled by loadGradients() before any use
   Planes<float> densityPlanes_;         // rotation about k
   Planes<glm::vec3> gradientPlanes_;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 namespace angio {
 
@@ -22,38 +24,116 @@ struct Range {
   }
 };
 
+// What a volume without labels keeps of a window of voxels: the density range.
+struct PlainSummary {
+  Range densities;
+  void add(Voxel v) { densities.add(std::uint16_t(densityOf(v))); }
+  void add(const PlainSummary& s) { densities.add(s.densities); }
+};
+
+// With labels: the unlabelled and the labelled voxels' ranges apart, and the labels that occur.
+struct LabelledSummary {
+  Range densities;  // unlabelled
+  Range labelled;
+  std::uint16_t bits = 0;
+  void add(Voxel v) {
+    const int label = labelOf(v);
+    (label == 0 ? densities : labelled).add(std::uint16_t(densityOf(v)));
+    bits |= std::uint16_t(1u << label);
+  }
+  void add(const LabelledSummary& s) {
+    densities.add(s.densities);
+    labelled.add(s.labelled);
+    bits |= s.bits;
+  }
+};
+
 // Voxel window of tile t, clamped to [0, n - 1]: [t*T, t*T + T] for the cells of the tile
 // (nearest, trilinear), one more voxel on each side for the mean filter.
 std::pair<int, int> tileWindow(int tile, int n, int reach) {
   return {std::max(tile * kTileSize - reach, 0), std::min(tile * kTileSize + kTileSize + reach, n - 1)};
 }
 
-// Separable min/max over one slice: first along b for every c line, then along c.
-void rangesOfSlice(const Volume& volume, const SliceTiles& tiles, int slice, int reach,
-                   std::vector<Range>& lineRanges, Range* out) {
+// Separable summary over one slice: first along b for every c line, then along c.
+template <class Summary>
+void summariseSlice(const Volume& volume, const SliceTiles& tiles, int slice, int reach,
+                    std::vector<Summary>& lineSummaries, Summary* out) {
   const glm::ivec3 dims = volume.dims;
   const int nb = dims[tiles.axisB], nc = dims[tiles.axisC];
   glm::ivec3 stride(1, dims.x, dims.x * dims.y);
   const std::size_t sliceBase = std::size_t(slice) * stride[int(tiles.axis)];
   const int strideB = stride[tiles.axisB], strideC = stride[tiles.axisC];
-  lineRanges.assign(std::size_t(nc) * tiles.tilesB, Range{});
+  lineSummaries.assign(std::size_t(nc) * tiles.tilesB, Summary{});
   for (int c = 0; c < nc; ++c) {
     const Voxel* line = volume.voxels.data() + sliceBase + std::size_t(c) * strideC;
     for (int tb = 0; tb < tiles.tilesB; ++tb) {
       const auto [lo, hi] = tileWindow(tb, nb, reach);
-      Range r;
-      for (int b = lo; b <= hi; ++b) r.add(std::uint16_t(densityOf(line[std::size_t(b) * strideB])));
-      lineRanges[std::size_t(c) * tiles.tilesB + tb] = r;
+      Summary r;
+      for (int b = lo; b <= hi; ++b) r.add(line[std::size_t(b) * strideB]);
+      lineSummaries[std::size_t(c) * tiles.tilesB + tb] = r;
     }
   }
   for (int tc = 0; tc < tiles.tilesC; ++tc) {
     const auto [lo, hi] = tileWindow(tc, nc, reach);
     for (int tb = 0; tb < tiles.tilesB; ++tb) {
-      Range r;
-      for (int c = lo; c <= hi; ++c) r.add(lineRanges[std::size_t(c) * tiles.tilesB + tb]);
+      Summary r;
+      for (int c = lo; c <= hi; ++c) r.add(lineSummaries[std::size_t(c) * tiles.tilesB + tb]);
       out[std::size_t(tc) * tiles.tilesB + tb] = r;
     }
   }
+}
+
+void store(const std::vector<PlainSummary>& summaries, TileRanges& ranges) {
+  ranges.minDensity.resize(summaries.size());
+  ranges.maxDensity.resize(summaries.size());
+  for (std::size_t n = 0; n < summaries.size(); ++n) {
+    ranges.minDensity[n] = summaries[n].densities.lo;
+    ranges.maxDensity[n] = summaries[n].densities.hi;
+  }
+}
+
+void store(const std::vector<LabelledSummary>& summaries, TileRanges& ranges) {
+  const std::size_t count = summaries.size();
+  for (auto* v : {&ranges.minDensity, &ranges.maxDensity, &ranges.labelledMin, &ranges.labelledMax,
+                  &ranges.labelBits})
+    v->resize(count);
+  for (std::size_t n = 0; n < count; ++n) {
+    const LabelledSummary& s = summaries[n];
+    ranges.minDensity[n] = s.densities.lo, ranges.maxDensity[n] = s.densities.hi;
+    ranges.labelledMin[n] = s.labelled.lo, ranges.labelledMax[n] = s.labelled.hi;
+    ranges.labelBits[n] = s.bits;
+  }
+}
+
+template <class Summary>
+void summariseTiles(const Volume& volume, SliceTiles& tiles) {
+  const std::size_t perSlice = tiles.tilesPerSlice();
+  std::vector<Summary> cells(perSlice * tiles.slices), wide(perSlice * tiles.slices);
+  tbb::parallel_for(0, tiles.slices, [&](int slice) {
+    std::vector<Summary> lineSummaries;
+    summariseSlice(volume, tiles, slice, 0, lineSummaries, cells.data() + perSlice * slice);
+    summariseSlice(volume, tiles, slice, 1, lineSummaries, wide.data() + perSlice * slice);
+  });
+  store(cells, tiles.cells);
+  store(wide, tiles.wide);
+}
+
+bool anyLabel(const Volume& volume) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, volume.voxels.size()), false,
+      [&](const tbb::blocked_range<std::size_t>& range, bool found) {
+        Voxel bits = 0;
+        for (std::size_t n = range.begin(); n != range.end(); ++n) bits |= volume.voxels[n];
+        return found || labelOf(bits) != 0;
+      },
+      [](bool a, bool b) { return a || b; });
+}
+
+std::size_t bytesOf(const TileRanges& r) {
+  std::size_t bytes = 0;
+  for (const auto* v : {&r.minDensity, &r.maxDensity, &r.labelledMin, &r.labelledMax, &r.labelBits})
+    bytes += v->size() * sizeof(std::uint16_t);
+  return bytes;
 }
 
 }  // namespace
@@ -66,23 +146,13 @@ SliceTiles buildSliceTiles(const Volume& volume, Axis axis) {
   tiles.slices = volume.dims[int(axis)];
   tiles.tilesB = (volume.dims[tiles.axisB] + kTileSize - 1) / kTileSize;
   tiles.tilesC = (volume.dims[tiles.axisC] + kTileSize - 1) / kTileSize;
-  const std::size_t perSlice = tiles.tilesPerSlice();
-  std::vector<Range> cells(perSlice * tiles.slices), wide(perSlice * tiles.slices);
-  tbb::parallel_for(0, tiles.slices, [&](int slice) {
-    thread_local std::vector<Range> lineRanges;
-    rangesOfSlice(volume, tiles, slice, 0, lineRanges, cells.data() + perSlice * slice);
-    rangesOfSlice(volume, tiles, slice, 1, lineRanges, wide.data() + perSlice * slice);
-  });
-  auto store = [](const std::vector<Range>& ranges, std::vector<std::uint16_t>& lo,
-                  std::vector<std::uint16_t>& hi) {
-    lo.resize(ranges.size());
-    hi.resize(ranges.size());
-    for (std::size_t n = 0; n < ranges.size(); ++n) lo[n] = ranges[n].lo, hi[n] = ranges[n].hi;
-  };
-  store(cells, tiles.minDensity, tiles.maxDensity);
-  store(wide, tiles.wideMinDensity, tiles.wideMaxDensity);
+  tiles.labelled = anyLabel(volume);
+  if (tiles.labelled) summariseTiles<LabelledSummary>(volume, tiles);
+  else summariseTiles<PlainSummary>(volume, tiles);
   return tiles;
 }
+
+std::size_t SliceTiles::memoryBytes() const { return bytesOf(cells) + bytesOf(wide); }
 
 int cellBase(double q, int n) {
   return std::min(int(std::floor(std::clamp(q, 0.0, double(n - 1)))), std::max(n - 2, 0));
@@ -92,16 +162,6 @@ SliceSpan slicesReadAt(const SliceTiles& tiles, double qa, Filter filter) {
   const int base = cellBase(qa, tiles.slices);
   const int reach = filter == Filter::mean ? 1 : 0;
   return {std::max(base - reach, 0), std::min(base + 1 + reach, tiles.slices - 1)};
-}
-
-std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const TfTable& table) {
-  std::vector<std::uint8_t> visible(tiles.minDensity.size());
-  tbb::parallel_for(std::size_t(0), visible.size(), [&](std::size_t n) {
-    visible[n] = std::uint8_t(
-        (table.anyVisible(tiles.minDensity[n], tiles.maxDensity[n]) ? kCellsVisible : 0) |
-        (table.anyVisible(tiles.wideMinDensity[n], tiles.wideMaxDensity[n]) ? kWideVisible : 0));
-  });
-  return visible;
 }
 
 }  // namespace angio

@@ -19,15 +19,32 @@ namespace angio {
 constexpr int kTileSize = 8;
 constexpr int kGroupTiles = 4;  // a tile group is kGroupTiles^2 tiles (32^2 voxels) of a slice
 
+// What the voxels of one reach (a tile's cells, or the tile grown for the mean filter) hold, per
+// tile [slice][tileC][tileB]. Labels decide how a voxel reads and which TF classifies it, so in a
+// volume with labels the unlabelled and the labelled voxels keep separate ranges, and the labels
+// that occur are kept as bits: a classification can then cut out hidden labels and use the labels'
+// own TFs without reading a voxel again. An empty range has min > max.
+struct TileRanges {
+  std::vector<std::uint16_t> minDensity;  // over the unlabelled voxels (all, without labels)
+  std::vector<std::uint16_t> maxDensity;
+  // Only for a volume with labels (empty otherwise):
+  std::vector<std::uint16_t> labelledMin;  // over the labelled voxels
+  std::vector<std::uint16_t> labelledMax;
+  std::vector<std::uint16_t> labelBits;  // bit L: a voxel with label L occurs (bit 0: unlabelled)
+};
+
 struct SliceTiles {
   Axis axis = Axis::k;
   int axisB = 0, axisC = 1;  // the in-plane axes (b, c) of the rendering model
   int slices = 0;            // n_a
   int tilesB = 0, tilesC = 0;
-  std::vector<std::uint16_t> minDensity;  // [slice][tileC][tileB], voxels the tile's cells read
-  std::vector<std::uint16_t> maxDensity;
-  std::vector<std::uint16_t> wideMinDensity;  // the same grown by one voxel (mean filter)
-  std::vector<std::uint16_t> wideMaxDensity;
+  bool labelled = false;  // some voxel carries a label: the TileRanges' label parts are filled
+  TileRanges cells;       // the voxels the tile's cells read (nearest, trilinear)
+  TileRanges wide;        // the same grown by one voxel (mean filter)
+
+  std::size_t tileCount() const { return cells.minDensity.size(); }
+  const TileRanges& reach(Filter filter) const { return filter == Filter::mean ? wide : cells; }
+  std::size_t memoryBytes() const;
 
   int tilesPerSlice() const { return tilesB * tilesC; }
   int groupsB() const { return (tilesB + kGroupTiles - 1) / kGroupTiles; }
@@ -50,15 +67,13 @@ struct SliceSpan {
 };
 SliceSpan slicesReadAt(const SliceTiles& tiles, double qa, Filter filter);
 
-// Per TF: which tiles of which slices hold a visible density, one byte per tile with two bits:
-// kCellsVisible for the tile's own range, kWideVisible for the grown one. Re-classifying is a table
-// lookup per tile, no voxel is read again.
+// A classification (core/tile_classification.h) keeps one byte per tile with two bits:
+// kCellsVisible for the tile's own reach, kWideVisible for the grown one.
 constexpr std::uint8_t kCellsVisible = 1;
 constexpr std::uint8_t kWideVisible = 2;
 // The bit that matters for a filter's reach.
 constexpr std::uint8_t visibilityBit(Filter filter) {
   return filter == Filter::mean ? kWideVisible : kCellsVisible;
 }
-std::vector<std::uint8_t> classifyTiles(const SliceTiles& tiles, const TfTable& table);
 
 }  // namespace angio

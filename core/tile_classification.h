@@ -1,7 +1,10 @@
 #pragma once
 // Which slice tiles the TFs of a render can see. The integrated opacity table answers "is any
 // density of the tile's range visible?" in O(1) per tile without reading voxels again (thesis sec.
-// 4.2.2), so re-classifying after a TF change costs a pass over the tile ranges only.
+// 4.2.2), so re-classifying after a TF change costs a pass over the tile ranges only. Labels
+// (rendering model, "Labels") re-classify the same way: a tile's hidden labels read as density 0
+// and its labels' own TFs count for the densities it holds (core/slice_tiles.h keeps which labels
+// occur), so a hidden bone leaves no tile visible.
 // A classification is made from one SliceTiles and the TF tables together and remembers both: a
 // raycaster handed one can check that it belongs to the view's axis and to the TFs it renders
 // with, instead of trusting its callers to pass matching pieces.
@@ -25,6 +28,9 @@ class TileClassification {
   Axis axis() const { return tiles_->axis; }
   // One byte per tile: kCellsVisible and kWideVisible (core/slice_tiles.h).
   const std::vector<std::uint8_t>& visible() const { return visible_; }
+  // Per tile, the largest density a sample of the filter's reach can read (MIP): hidden labels
+  // read 0.
+  const std::vector<std::uint16_t>& maxDensity(Filter filter) const;
   // True iff made from these TF table objects (the regions themselves do not matter).
   bool classifies(const RegionTables& tables) const;
 
@@ -33,13 +39,17 @@ class TileClassification {
     const TfTable* focus = nullptr;
     const TfTable* context = nullptr;
     const TfTable* outside = nullptr;
+    const LabelTables* labels = nullptr;
     friend bool operator==(const UsedTables&, const UsedTables&) = default;
   };
   static UsedTables usedBy(const RegionTables& tables);
+  void classifyLabelled(const TfTable& anyRegion, const LabelTables& labels);
 
   const SliceTiles* tiles_;
   UsedTables tables_;
   std::vector<std::uint8_t> visible_;
+  // With labels only (else the tiles' own maxima hold): the maxima as the labels read.
+  std::vector<std::uint16_t> cellsMax_, wideMax_;
 };
 
 }  // namespace angio

@@ -45,4 +45,14 @@ TfTable buildTable(const TransferFunction& tf) {
   return table;
 }
 
+TfTable visibilityUnion(const std::vector<const TfTable*>& tables) {
+  TfTable any;
+  for (int d = 0; d < kDensityLevels; ++d) {
+    bool visible = false;
+    for (const TfTable* table : tables) visible = visible || (table && table->rgba[d].a > 0.f);
+    any.integratedVisible[d + 1] = any.integratedVisible[d] + (visible ? 1 : 0);
+  }
+  return any;
+}
+
 }  // namespace angio

@@ -29,10 +29,30 @@ struct TfModulators {
   friend bool operator==(const TfModulators&, const TfModulators&) = default;
 };
 
+// How the voxels of one segmentation label are rendered (rendering model, "Labels"); labels not
+// listed use the main TF.
+enum class LabelMode {
+  main,    // classified with the TF of the sample's region, as unlabelled voxels
+  hidden,  // read as -1024 HU (density 0) for sampling, gradients and MIP: cut out of the scan
+  tf,      // classified with the label's own TF where it is the sample's nearest voxel's label
+};
+
+struct LabelStyle {
+  int label = 1;  // 1..15
+  std::string name;
+  LabelMode mode = LabelMode::main;
+  std::vector<ControlPoint> points;    // the own TF (mode tf), no modulators
+  glm::vec3 color{0.9f, 0.85f, 0.7f};  // the label's color in lists, overlays and Slicer
+
+  friend bool operator==(const LabelStyle&, const LabelStyle&) = default;
+};
+
 struct TransferFunction {
   std::string name;
   std::vector<ControlPoint> points;  // sorted by hu (sortPoints keeps them so)
   TfModulators modulators;
+  // Per-label rendering; at most one entry per label (the first one counts).
+  std::vector<LabelStyle> labels;
   // MIP window/level (HU) that goes with this TF; used when rendering in MIP mode.
   double mipWindow = 600;
   double mipLevel = 250;
@@ -64,5 +84,9 @@ struct TfTable {
 };
 
 TfTable buildTable(const TransferFunction& tf);
+
+// A table whose anyVisible answers "visible in any of `tables`" (null entries ignored); only its
+// visibility prefix sums are set.
+TfTable visibilityUnion(const std::vector<const TfTable*>& tables);
 
 }  // namespace angio

@@ -1,6 +1,8 @@
 #pragma once
 // Reconstruction of density and gradient at a continuous voxel coordinate q = p / spacing
 // (rendering model, "Sampling"). Indices are clamped to the volume, so these never read outside it.
+// `read` turns a voxel into its density: PlainDensity, or MaskedDensity (core/label_tables.h) where
+// hidden labels read as density 0 for the density, the gradient and MIP alike.
 // Hot paths address voxels through pointer offsets; border cases take the clamped path, which
 // computes the same values (clamping changes nothing inside the volume).
 #include <algorithm>
@@ -18,9 +20,10 @@ inline glm::ivec3 clampIndex(const Volume& volume, glm::ivec3 index) {
   return glm::clamp(index, glm::ivec3(0), volume.dims - 1);
 }
 
-inline float densityAtClamped(const Volume& volume, glm::ivec3 index) {
+template <class Read = PlainDensity>
+float densityAtClamped(const Volume& volume, glm::ivec3 index, const Read& read = {}) {
   const glm::ivec3 c = clampIndex(volume, index);
-  return float(volume.densityAt(c.x, c.y, c.z));
+  return float(read(volume.at(c.x, c.y, c.z)));
 }
 
 inline glm::ivec3 voxelStrides(const Volume& volume) {
@@ -44,24 +47,27 @@ inline float centralDifference(float below, float above, double spacing) {
 }
 
 // Central differences at a voxel, neighbours clamped.
-inline glm::vec3 voxelGradient(const Volume& volume, glm::ivec3 v) {
+template <class Read = PlainDensity>
+glm::vec3 voxelGradient(const Volume& volume, glm::ivec3 v, const Read& read = {}) {
   glm::vec3 g;
   for (int axis = 0; axis < 3; ++axis) {
     glm::ivec3 lo = v, hi = v;
     --lo[axis];
     ++hi[axis];
-    g[axis] = centralDifference(densityAtClamped(volume, lo), densityAtClamped(volume, hi),
+    g[axis] = centralDifference(densityAtClamped(volume, lo, read), densityAtClamped(volume, hi, read),
                                 volume.spacing[axis]);
   }
   return g;
 }
 
 // The same for a voxel whose six neighbours exist, through pointer offsets.
-inline glm::vec3 voxelGradientInterior(const Voxel* voxel, glm::ivec3 strides, glm::dvec3 spacing) {
+template <class Read = PlainDensity>
+glm::vec3 voxelGradientInterior(const Voxel* voxel, glm::ivec3 strides, glm::dvec3 spacing,
+                                const Read& read = {}) {
   glm::vec3 g;
   for (int axis = 0; axis < 3; ++axis)
-    g[axis] = centralDifference(float(densityOf(voxel[-strides[axis]])),
-                                float(densityOf(voxel[strides[axis]])), spacing[axis]);
+    g[axis] = centralDifference(float(read(voxel[-strides[axis]])), float(read(voxel[strides[axis]])),
+                                spacing[axis]);
   return g;
 }
 
@@ -108,71 +114,90 @@ inline glm::ivec3 cornerSteps(const Volume& volume) {
           volume.dims.z > 1 ? strides.z : 0};
 }
 
-inline float trilinearDensity(const Volume& volume, const Cell& cell) {
+// The voxel nearest to the sample, floor(q + 0.5), as the cell's corner: per axis the far one
+// where the fraction is at least 0.5 (the fraction in float, as trilinear weighs with it).
+inline glm::ivec3 nearestCorner(const Cell& cell) {
+  return cell.base + glm::ivec3(glm::greaterThanEqual(cell.frac, glm::vec3(0.5f)));
+}
+
+template <class Read = PlainDensity>
+float trilinearDensity(const Volume& volume, const Cell& cell, const Read& read = {}) {
   const Voxel* base = volume.voxels.data() + volume.indexOf(cell.base.x, cell.base.y, cell.base.z);
   const glm::ivec3 step = cornerSteps(volume);
   return trilinear(cell, [&](int dx, int dy, int dz) {
-    return float(densityOf(base[dx * step.x + dy * step.y + dz * step.z]));
+    return float(read(base[dx * step.x + dy * step.y + dz * step.z]));
   });
 }
 
-inline glm::vec3 trilinearGradient(const Volume& volume, const Cell& cell) {
+template <class Read = PlainDensity>
+glm::vec3 trilinearGradient(const Volume& volume, const Cell& cell, const Read& read = {}) {
   if (hasAllNeighbours(volume, cell.base, 1, 2)) {
     const Voxel* base = volume.voxels.data() + volume.indexOf(cell.base.x, cell.base.y, cell.base.z);
     const glm::ivec3 strides = voxelStrides(volume);
     return trilinear(cell, [&](int dx, int dy, int dz) {
       return voxelGradientInterior(base + dx * strides.x + dy * strides.y + dz * strides.z, strides,
-                                   volume.spacing);
+                                   volume.spacing, read);
     });
   }
   return trilinear(cell, [&](int dx, int dy, int dz) {
-    return voxelGradient(volume, clampIndex(volume, cell.base + glm::ivec3(dx, dy, dz)));
+    return voxelGradient(volume, clampIndex(volume, cell.base + glm::ivec3(dx, dy, dz)), read);
   });
 }
 
 // Thesis sec. 4.4: the nearest voxel and its 6 face neighbours, equally weighted.
-inline float meanDensity(const Volume& volume, glm::ivec3 v) {
-  float sum = float(volume.densityAt(v.x, v.y, v.z));
+template <class Read = PlainDensity>
+float meanDensity(const Volume& volume, glm::ivec3 v, const Read& read = {}) {
+  float sum = float(read(volume.at(v.x, v.y, v.z)));
   if (hasAllNeighbours(volume, v, 1, 1)) {
     const Voxel* voxel = volume.voxels.data() + volume.indexOf(v.x, v.y, v.z);
     const glm::ivec3 strides = voxelStrides(volume);
     for (int axis = 0; axis < 3; ++axis)
-      sum += float(densityOf(voxel[-strides[axis]])) + float(densityOf(voxel[strides[axis]]));
+      sum += float(read(voxel[-strides[axis]])) + float(read(voxel[strides[axis]]));
     return sum / 7.f;
   }
   for (int axis = 0; axis < 3; ++axis) {
     glm::ivec3 lo = v, hi = v;
     --lo[axis];
     ++hi[axis];
-    sum += densityAtClamped(volume, lo) + densityAtClamped(volume, hi);
+    sum += densityAtClamped(volume, lo, read) + densityAtClamped(volume, hi, read);
   }
   return sum / 7.f;
 }
 
-inline glm::vec3 nearestGradient(const Volume& volume, glm::ivec3 v) {
+template <class Read = PlainDensity>
+glm::vec3 nearestGradient(const Volume& volume, glm::ivec3 v, const Read& read = {}) {
   if (hasAllNeighbours(volume, v, 1, 1))
     return voxelGradientInterior(volume.voxels.data() + volume.indexOf(v.x, v.y, v.z),
-                                 voxelStrides(volume), volume.spacing);
-  return voxelGradient(volume, v);
+                                 voxelStrides(volume), volume.spacing, read);
+  return voxelGradient(volume, v, read);
 }
 
 // Density (0..4095, fractional for trilinear and mean) reconstructed with the filter.
-inline float sampleDensity(const Volume& volume, glm::dvec3 q, Filter filter) {
+template <class Read = PlainDensity>
+float sampleDensity(const Volume& volume, glm::dvec3 q, Filter filter, const Read& read = {}) {
   switch (filter) {
     case Filter::nearest: {
       const glm::ivec3 v = nearestVoxel(volume, q);
-      return float(volume.densityAt(v.x, v.y, v.z));
+      return float(read(volume.at(v.x, v.y, v.z)));
     }
-    case Filter::mean: return meanDensity(volume, nearestVoxel(volume, q));
-    case Filter::trilinear: return trilinearDensity(volume, cellAt(volume, q));
+    case Filter::mean: return meanDensity(volume, nearestVoxel(volume, q), read);
+    case Filter::trilinear: return trilinearDensity(volume, cellAt(volume, q), read);
   }
   return 0.f;
 }
 
 // Gradient reconstructed with the same filter as the density (for mean: the nearest voxel's).
-inline glm::vec3 sampleGradient(const Volume& volume, glm::dvec3 q, Filter filter) {
-  if (filter == Filter::trilinear) return trilinearGradient(volume, cellAt(volume, q));
-  return nearestGradient(volume, nearestVoxel(volume, q));
+template <class Read = PlainDensity>
+glm::vec3 sampleGradient(const Volume& volume, glm::dvec3 q, Filter filter, const Read& read = {}) {
+  if (filter == Filter::trilinear) return trilinearGradient(volume, cellAt(volume, q), read);
+  return nearestGradient(volume, nearestVoxel(volume, q), read);
+}
+
+// The label that picks a sample's TF: its nearest voxel's (rendering model, "Labels").
+inline int sampleLabel(const Volume& volume, glm::dvec3 q, Filter filter) {
+  const glm::ivec3 v =
+      filter == Filter::trilinear ? nearestCorner(cellAt(volume, q)) : nearestVoxel(volume, q);
+  return labelOf(volume.at(v.x, v.y, v.z));
 }
 
 }  // namespace angio

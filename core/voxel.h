@@ -12,10 +12,16 @@ using Voxel = std::uint16_t;
 constexpr int kDensityLevels = 4096;
 constexpr int kHuOffset = 1024;  // density 0 is -1024 HU
 constexpr int kMaxLabel = 15;
+constexpr int kLabelCount = kMaxLabel + 1;  // label 0 (none) included
 
 constexpr int densityOf(Voxel v) { return v & 0x0FFF; }
 constexpr int labelOf(Voxel v) { return v >> 12; }
 constexpr double huOfDensity(double d) { return d - kHuOffset; }
+
+// A voxel's density as every voxel reads when no label is hidden.
+struct PlainDensity {
+  int operator()(Voxel v) const { return densityOf(v); }
+};
 
 inline int densityOfHu(double hu) {
   const double d = std::round(hu) + kHuOffset;

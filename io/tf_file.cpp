@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -63,8 +64,9 @@ const Json& requireKey(const Json& object, const char* key, const fs::path& sour
 }
 
 // Points are numbered from 1 in messages, in file order.
-ControlPoint parsePoint(const Json& point, int number, const fs::path& source) {
-  const std::string where = "point " + std::to_string(number);
+ControlPoint parsePoint(const Json& point, int number, const fs::path& source,
+                        const std::string& owner = "") {
+  const std::string where = owner + "point " + std::to_string(number);
   if (!point.is_object()) throw InputError(source, where + " is not an object");
   ControlPoint parsed;
   parsed.hu =
@@ -102,6 +104,79 @@ void parseModulators(const Json& modulators, const fs::path& source, TransferFun
     tf.modulators.huShift = requireNumber(modulators["hu_shift"], source, "modulators hu_shift");
 }
 
+std::optional<LabelMode> parseLabelMode(const std::string& text) {
+  if (text == "main") return LabelMode::main;
+  if (text == "hidden") return LabelMode::hidden;
+  if (text == "tf") return LabelMode::tf;
+  return std::nullopt;
+}
+
+const char* labelModeName(LabelMode mode) {
+  switch (mode) {
+    case LabelMode::main: return "main";
+    case LabelMode::hidden: return "hidden";
+    case LabelMode::tf: return "tf";
+  }
+  return "main";
+}
+
+glm::vec3 parseColor(const Json& color, const fs::path& source, const std::string& where) {
+  if (!color.is_array() || color.size() != 3)
+    throw InputError(source, where + ": color is not an array of 3 numbers");
+  glm::vec3 parsed;
+  for (int c = 0; c < 3; ++c)
+    parsed[c] =
+        float(requireInRange(color[c], 0, 1, source, where + ": color[" + std::to_string(c) + "]"));
+  return parsed;
+}
+
+// Rendering model, "Labels": {"label": 1..15, "name", "mode": main | hidden | tf, "points" (tf),
+// "color" (optional)}.
+LabelStyle parseLabelStyle(const Json& entry, const fs::path& source) {
+  if (!entry.is_object()) throw InputError(source, "a \"labels\" entry is not an object");
+  const Json& labelValue = requireKey(entry, "label", source, "a \"labels\" entry");
+  const double label = requireInRange(labelValue, 1, kMaxLabel, source, "label");
+  if (label != std::floor(label))
+    throw InputError(source, "label " + labelValue.dump() + " is not an integer");
+  LabelStyle style;
+  style.label = int(label);
+  const std::string where = "label " + std::to_string(style.label);
+  if (entry.contains("name")) {
+    if (!entry["name"].is_string()) throw InputError(source, where + ": \"name\" is not a string");
+    style.name = entry["name"].get<std::string>();
+  }
+  const Json& mode = requireKey(entry, "mode", source, where);
+  const auto parsedMode = mode.is_string() ? parseLabelMode(mode.get<std::string>()) : std::nullopt;
+  if (!parsedMode)
+    throw InputError(source, where + ": mode " + mode.dump() + " is not main, hidden or tf");
+  style.mode = *parsedMode;
+  if (entry.contains("color")) style.color = parseColor(entry["color"], source, where);
+  if (entry.contains("points")) {
+    const Json& points = entry["points"];
+    if (!points.is_array()) throw InputError(source, where + ": \"points\" is not an array");
+    for (std::size_t i = 0; i < points.size(); ++i)
+      style.points.push_back(parsePoint(points[i], int(i) + 1, source, where + ": "));
+    std::stable_sort(style.points.begin(), style.points.end(),
+                     [](const ControlPoint& a, const ControlPoint& b) { return a.hu < b.hu; });
+  }
+  if (style.mode == LabelMode::tf && style.points.empty())
+    throw InputError(source, where + ": mode tf needs \"points\"");
+  return style;
+}
+
+std::vector<LabelStyle> parseLabelStyles(const Json& labels, const fs::path& source) {
+  if (!labels.is_array()) throw InputError(source, "\"labels\" is not an array");
+  std::vector<LabelStyle> styles;
+  for (const Json& entry : labels) {
+    LabelStyle style = parseLabelStyle(entry, source);
+    for (const LabelStyle& earlier : styles)
+      if (earlier.label == style.label)
+        throw InputError(source, "label " + std::to_string(style.label) + " is listed twice");
+    styles.push_back(std::move(style));
+  }
+  return styles;
+}
+
 Json parseJsonText(const std::string& text, const fs::path& source) {
   try {
     return Json::parse(text);
@@ -134,12 +209,28 @@ std::string dumpJson(const OrderedJson& value, int indent = -1) {
   return value.dump(indent, ' ', false, Json::error_handler_t::replace);
 }
 
+OrderedJson colorJson(glm::vec3 color) {
+  return {shortestDecimal(color.r), shortestDecimal(color.g), shortestDecimal(color.b)};
+}
+
 OrderedJson pointJson(const ControlPoint& point) {
   OrderedJson json;
   json["hu"] = point.hu;
-  json["color"] = {shortestDecimal(point.color.r), shortestDecimal(point.color.g),
-                   shortestDecimal(point.color.b)};
+  json["color"] = colorJson(point.color);
   json["opacity"] = point.opacity;
+  return json;
+}
+
+OrderedJson labelStyleJson(const LabelStyle& style) {
+  OrderedJson json;
+  json["label"] = style.label;
+  json["name"] = style.name;
+  json["mode"] = labelModeName(style.mode);
+  json["color"] = colorJson(style.color);
+  if (!style.points.empty()) {
+    json["points"] = OrderedJson::array();
+    for (const ControlPoint& point : style.points) json["points"].push_back(pointJson(point));
+  }
   return json;
 }
 
@@ -184,6 +275,7 @@ TransferFunction parseTransferFunction(const std::string& text, const fs::path& 
 
   if (json.contains("mip")) parseMip(json["mip"], source, tf);
   if (json.contains("modulators")) parseModulators(json["modulators"], source, tf);
+  if (json.contains("labels")) tf.labels = parseLabelStyles(json["labels"], source);
   // "description" and "mode" are for people and the UI; a TransferFunction does not keep them.
   return tf;
 }
@@ -210,7 +302,15 @@ std::string toJson(const TransferFunction& tf) {
   const OrderedJson modulators = {{"opacity_scale", tf.modulators.opacityScale},
                                   {"hu_shift", tf.modulators.huShift}};
   out += "  \"mip\": " + dumpJson(mip) + ",\n";
-  out += "  \"modulators\": " + dumpJson(modulators) + "\n}\n";
+  out += "  \"modulators\": " + dumpJson(modulators);
+  // Written only when there are any, so files without labels stay as they were.
+  if (!tf.labels.empty()) {
+    out += ",\n  \"labels\": [\n";
+    for (std::size_t i = 0; i < tf.labels.size(); ++i)
+      out += "    " + dumpJson(labelStyleJson(tf.labels[i])) + (i + 1 < tf.labels.size() ? ",\n" : "\n");
+    out += "  ]";
+  }
+  out += "\n}\n";
   return out;
 }
 

@@ -20,7 +20,7 @@ void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
 double FrameRenderer::structureMiB() const {
   if (!tiles_) return 0;
   const std::size_t visible = classification_ ? classification_->visible().size() : 0;
-  return (tiles_->minDensity.size() * 4 * sizeof(std::uint16_t) + visible) / 1048576.0;
+  return (tiles_->memoryBytes() + visible) / 1048576.0;
 }
 
 Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,

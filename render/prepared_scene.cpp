@@ -7,6 +7,7 @@ std::shared_ptr<const PreparedScene> PreparedScene::prepare(const Volume& volume
                                                             const RenderRecipe& recipe,
                                                             const PreparedScene* previous, Warn warn) {
   std::shared_ptr<PreparedScene> scene(new PreparedScene(volume, recipe));
+  scene->labels_ = LabelTables(recipe.tf.labels);
   if (recipe.vesselGlyph) scene->prepareVesselGlyph(centerlines, previous, std::move(warn));
   else scene->table_ = buildTable(recipe.tf);
   return scene;
@@ -37,8 +38,8 @@ void PreparedScene::prepareVesselGlyph(const Centerlines& centerlines, const Pre
 }
 
 RegionTables PreparedScene::tables(const RayRegions* regions) const {
-  if (!regions_) return singleTable(table_);
-  return {regions, &focus_, &context_, recipe_.vesselGlyph->outsideTf ? &outside_ : nullptr};
+  if (!regions_) return {nullptr, nullptr, nullptr, &table_, &labels_};
+  return {regions, &focus_, &context_, recipe_.vesselGlyph->outsideTf ? &outside_ : nullptr, &labels_};
 }
 
 void PreparedScene::buildRegions(const ViewGeometry& view, RayRegions& out) const {

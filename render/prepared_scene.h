@@ -13,6 +13,7 @@
 
 #include "core/compositing.h"
 #include "core/image.h"
+#include "core/label_tables.h"
 #include "core/region_intervals.h"
 #include "core/transfer_function.h"
 #include "core/view_geometry.h"
@@ -73,6 +74,7 @@ class PreparedScene {
   const Volume& volume_;
   RenderRecipe recipe_;
   TfTable table_{}, focus_{}, context_{}, outside_{};
+  LabelTables labels_;  // from the main TF's label styles, in every region
   std::shared_ptr<GuardedRegions> regions_;
   std::shared_ptr<Hybrid> hybrid_;
 };

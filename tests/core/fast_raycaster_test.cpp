@@ -12,16 +12,12 @@
 #include "core/reference_raycaster.h"
 #include "io/tf_file.h"
 #include "io/volume_reader.h"
+#include "tests/support/image_difference.h"
 
 namespace angio {
 namespace {
 
-float maxChannelDifference(const Image& a, const Image& b) {
-  float worst = 0.f;
-  for (std::size_t n = 0; n < a.pixels.size(); ++n)
-    for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(a.pixels[n][c] - b.pixels[n][c]));
-  return worst;
-}
+using test_support::maxChannelDifference;
 
 struct Case {
   Axis axis;

@@ -8,6 +8,7 @@
 #include "phantom/phantom.h"
 #include "core/reference_raycaster.h"
 #include "core/view_geometry.h"
+#include "tests/support/varying_regions.h"
 
 namespace angio {
 namespace {
@@ -108,17 +109,7 @@ TEST(RegionRendering, FastMatchesReferenceWithRegions) {
           const ViewGeometry view = makeViewGeometry(volume, p);
           // Per-pixel intervals that vary across the image: focus around depth 0 with a width that
           // depends on x, a gap, context behind it.
-          RayRegions regions;
-          regions.width = view.width;
-          regions.height = view.height;
-          for (int y = 0; y < view.height; ++y)
-            for (int x = 0; x < view.width; ++x) {
-              regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
-              const float half = 5.f + float((x * 7 + y * 3) % 40);
-              regions.intervals.push_back({-half, half, Region::focus});
-              regions.intervals.push_back({half + 7.3f, half + 60.f, Region::context});
-            }
-          regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+          const RayRegions regions = test_support::varyingRegions(view, 5.f, 40, 7.3f, 60.f);
           const RegionTables tables{&regions, &focusTable, contextTf, outsideTf};
           const SliceTiles tiles = buildSliceTiles(volume, axis);
           const Image reference = renderReference(volume, tables, p);

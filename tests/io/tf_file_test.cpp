@@ -263,6 +263,48 @@ TEST_F(TfFileTest, RejectsBadOptionalBlocks) {
   expectRejected(withKeys(R"("modulators": {"hu_shift": null})"), "hu_shift is not a number");
 }
 
+TEST_F(TfFileTest, LabelsRoundTripAndTheRenderingModelsExampleParses) {
+  const fs::path file = write("labels.json", R"({"name": "t", "points": [)" + kGood0 + R"(],
+    "labels": [{"label": 1, "name": "bone", "mode": "hidden"},
+               {"label": 3, "name": "left kidney", "mode": "tf", "color": [0.5, 0.25, 1],
+                "points": [)" + kGood1 + "," + kGood0 +
+                                                 R"(]}]})");
+  const TransferFunction tf = loadTransferFunction(file);
+  ASSERT_EQ(tf.labels.size(), 2u);
+  EXPECT_EQ(tf.labels[0].label, 1);
+  EXPECT_EQ(tf.labels[0].name, "bone");
+  EXPECT_EQ(tf.labels[0].mode, LabelMode::hidden);
+  EXPECT_EQ(tf.labels[1].mode, LabelMode::tf);
+  EXPECT_EQ(tf.labels[1].color, glm::vec3(0.5f, 0.25f, 1.f));
+  ASSERT_EQ(tf.labels[1].points.size(), 2u);
+  EXPECT_EQ(tf.labels[1].points[0].hu, -1024);  // sorted by HU
+  const fs::path saved = dir_ / "saved.json";
+  saveTransferFunction(tf, saved);
+  EXPECT_EQ(loadTransferFunction(saved), tf);
+  // A TF without labels is written as before: no "labels" key.
+  TransferFunction plain = tf;
+  plain.labels.clear();
+  EXPECT_EQ(toJson(plain).find("labels"), std::string::npos);
+}
+
+TEST_F(TfFileTest, RejectsBadLabels) {
+  const auto withLabels = [](const std::string& labels) {
+    return R"({"points": [)" + kGood0 + R"(], "labels": )" + labels + "}";
+  };
+  expectRejected(withLabels("{}"), "\"labels\" is not an array");
+  expectRejected(withLabels(R"([{"label": 16, "mode": "hidden"}])"), "label 16 outside [1, 15]");
+  expectRejected(withLabels(R"([{"label": 0, "mode": "hidden"}])"), "label 0 outside [1, 15]");
+  expectRejected(withLabels(R"([{"label": 2.5, "mode": "hidden"}])"), "is not an integer");
+  expectRejected(withLabels(R"([{"mode": "hidden"}])"), "has no \"label\"");
+  expectRejected(withLabels(R"([{"label": 2, "mode": "invisible"}])"),
+                 "label 2: mode \"invisible\" is not main, hidden or tf");
+  expectRejected(withLabels(R"([{"label": 2, "mode": "tf"}])"), "label 2: mode tf needs \"points\"");
+  expectRejected(withLabels(R"([{"label": 2, "mode": "hidden"}, {"label": 2, "mode": "main"}])"),
+                 "label 2 is listed twice");
+  expectRejected(withLabels(R"([{"label": 2, "mode": "tf", "points": [{"hu": 1}]}])"),
+                 "label 2: point 1 has no \"color\"");
+}
+
 TEST_F(TfFileTest, NameDefaultsToTheFileStem) {
   EXPECT_EQ(loadTransferFunction(write("unnamed.json", R"({"points": [)" + kGood0 + "]}")).name,
             "unnamed");

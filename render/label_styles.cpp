@@ -1,0 +1,66 @@
+#include "render/label_styles.h"
+
+#include <charconv>
+
+#include "core/voxel.h"
+#include "io/lowercase.h"
+
+namespace angio {
+
+namespace {
+
+std::optional<int> labelNumber(const std::string& text) {
+  int number = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  if (number < 1 || number > kMaxLabel) return std::nullopt;
+  return number;
+}
+
+}  // namespace
+
+std::string defaultLabelName(int label) {
+  if (label == kBoneLabel) return "bone";
+  if (label == kTableLabel) return "table";
+  return "label " + std::to_string(label);
+}
+
+glm::vec3 defaultLabelColor(int label) {
+  if (label == kBoneLabel) return {0.95f, 0.9f, 0.75f};
+  if (label == kTableLabel) return {0.55f, 0.6f, 0.7f};
+  // The user's labels: hues spread around the circle, none close to bone's or the lumen's.
+  const glm::vec3 palette[] = {{0.3f, 0.75f, 0.35f}, {0.3f, 0.55f, 0.95f}, {0.9f, 0.6f, 0.2f},
+                               {0.7f, 0.4f, 0.9f},   {0.2f, 0.8f, 0.8f},   {0.9f, 0.45f, 0.6f}};
+  return palette[(label - 3) % 6];
+}
+
+std::optional<int> findLabel(const std::vector<LabelStyle>& styles, const std::string& nameOrNumber) {
+  if (const auto number = labelNumber(nameOrNumber)) return number;
+  const std::string wanted = lowercase(nameOrNumber);
+  for (const LabelStyle& style : styles)
+    if (lowercase(style.name) == wanted) return style.label;
+  for (int label = 1; label <= kMaxLabel; ++label)
+    if (defaultLabelName(label) == wanted) return label;
+  return std::nullopt;
+}
+
+LabelStyle& styleOf(std::vector<LabelStyle>& styles, int label) {
+  for (LabelStyle& style : styles)
+    if (style.label == label) return style;
+  styles.push_back({label, defaultLabelName(label), LabelMode::main, {}, defaultLabelColor(label)});
+  return styles.back();
+}
+
+std::vector<LabelStyle> withRemovedShown(std::vector<LabelStyle> styles) {
+  for (LabelStyle& style : styles) {
+    if (style.mode != LabelMode::hidden) continue;
+    style.mode = LabelMode::tf;
+    style.points = {{-1024, style.color, 0},
+                    {-500, style.color, 0},
+                    {-300, style.color, 0.02},
+                    {3071, style.color, 0.05}};
+  }
+  return styles;
+}
+
+}  // namespace angio

@@ -1,0 +1,30 @@
+#pragma once
+// Editing the label styles of a recipe's TF (rendering model, "Labels"): labels by name or number,
+// a label's mode, and the "show removed" view in which hidden labels render translucent so the
+// user sees what was cut. Shared by the command line and the workstation.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/transfer_function.h"
+
+namespace angio {
+
+constexpr int kBoneLabel = 1;   // written by automatic bone removal
+constexpr int kTableLabel = 2;  // written by automatic table removal
+
+// "bone", "table", "label N" for the user's labels.
+std::string defaultLabelName(int label);
+glm::vec3 defaultLabelColor(int label);
+
+// The label a user means: a number 1..15, a style's name, or a default name (case-insensitive).
+std::optional<int> findLabel(const std::vector<LabelStyle>& styles, const std::string& nameOrNumber);
+
+// The style of `label`, added with its default name and color where the list has none.
+LabelStyle& styleOf(std::vector<LabelStyle>& styles, int label);
+
+// Hidden labels as translucent ones: each gets an own TF in its color, faint above -500 HU, so
+// the removed structures stay in place as a ghost around what remains.
+std::vector<LabelStyle> withRemovedShown(std::vector<LabelStyle> styles);
+
+}  // namespace angio

@@ -1,0 +1,17 @@
+#pragma once
+// Comparing rendered images in tests: the largest difference of any channel of any pixel.
+#include <algorithm>
+#include <cmath>
+
+#include "core/image.h"
+
+namespace angio::test_support {
+
+inline float maxChannelDifference(const Image& a, const Image& b) {
+  float worst = 0.f;
+  for (std::size_t n = 0; n < a.pixels.size(); ++n)
+    for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(a.pixels[n][c] - b.pixels[n][c]));
+  return worst;
+}
+
+}  // namespace angio::test_support

@@ -1,0 +1,28 @@
+#pragma once
+// VesselGlyph ray regions for raycaster tests: per pixel, focus around depth 0 with a half-width
+// that varies across the image (`minHalf` + (x * 7 + y * 3) mod `spread`), a gap of `gap`, then
+// context up to `contextEnd` beyond the focus, so every ray's regions start and end elsewhere.
+#include <cstdint>
+
+#include "core/region_intervals.h"
+#include "core/view_geometry.h"
+
+namespace angio::test_support {
+
+inline RayRegions varyingRegions(const ViewGeometry& view, float minHalf, int spread, float gap,
+                                 float contextEnd) {
+  RayRegions regions;
+  regions.width = view.width;
+  regions.height = view.height;
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+      const float half = minHalf + float((x * 7 + y * 3) % spread);
+      regions.intervals.push_back({-half, half, Region::focus});
+      regions.intervals.push_back({half + gap, half + contextEnd, Region::context});
+    }
+  regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+  return regions;
+}
+
+}  // namespace angio::test_support
