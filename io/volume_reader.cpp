@@ -263,8 +263,13 @@ void addLabels(Volume& volume, const std::filesystem::path& file, const ReadOpti
   const StoredVolume stored = readStoredVolume(file, 1.0, ReadOptions{});
   const Reorientation plan = planFor(file, stored.geometry);
   const std::string difference = gridDifference(reorientedGeometry(stored.geometry, plan), volume);
+  // Slicer 4.11 saved segmentations cropped to their segments by default.
+  const std::string slicerHint =
+      segmentation ? "; in Slicer, set the segmentation's geometry to this CT (Segment Editor, "
+                     "Specify geometry) and save it again"
+                   : "";
   if (!difference.empty())
-    throw InputError(file, "label volume is not on the volume's grid (" + difference + ")");
+    throw InputError(file, "label volume is not on the volume's grid (" + difference + ")" + slicerHint);
   std::vector<std::uint8_t> labels(volume.voxelCount());
   const std::size_t invalid = withComponentType(stored.componentType, [&](auto type) {
     using T = typename decltype(type)::type;
