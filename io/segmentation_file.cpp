@@ -261,35 +261,48 @@ struct StoredSegment {
   int layer = 0;
 };
 
-StoredSegment storedSegment(const std::filesystem::path& file, const HeaderFields& fields,
-                            std::size_t index, int layers) {
-  const auto field = [&](const char* name) -> const std::string* {
+// A segment's field ("Name" of Segment2 is Segment2_Name), or null.
+struct SegmentFields {
+  const HeaderFields& fields;
+  std::size_t index;
+
+  const std::string* operator[](const char* name) const {
     const auto found = fields.find(segmentKey(index, name));
     return found == fields.end() ? nullptr : &found->second;
-  };
-  StoredSegment segment;
-  const std::string* name = field("Name");
-  segment.info.name = name ? *name : *field("ID");  // Slicer names a nameless segment by its ID
-  const std::string* color = field("Color");
-  segment.info.color = color ? colorOf(*color) : glm::vec3(0.5f);
-  const std::string* labelValue = field("LabelValue");
-  const std::string where = "segment '" + segment.info.name + "' (" + segmentKey(index, "") + ")";
-  if (!labelValue) throw InputError(file, where + " has no LabelValue");
-  const std::optional<int> label = wholeNumber(*labelValue);
-  if (!label)
-    throw InputError(file, where + " has LabelValue '" + *labelValue + "', not a whole number");
+  }
+};
+
+int labelOfSegment(const std::filesystem::path& file, const std::string& where,
+                   const std::string* value) {
+  if (!value) throw InputError(file, where + " has no LabelValue");
+  const std::optional<int> label = wholeNumber(*value);
+  if (!label) throw InputError(file, where + " has LabelValue '" + *value + "', not a whole number");
   if (*label < 1 || *label > kMaxLabel)
     throw InputError(file, where + " has LabelValue " + std::to_string(*label) +
                                "; angioray labels are 1..15 (renumber the segments in Slicer)");
-  segment.info.label = *label;
+  return *label;
+}
+
+int layerOfSegment(const std::filesystem::path& file, const std::string& where, const std::string* value,
+                   std::size_t index, int layers) {
   // Without a Layer field Slicer puts segment N in layer N.
-  const std::string* layer = field("Layer");
-  const std::optional<int> layerIndex = layer ? wholeNumber(*layer) : std::optional<int>(int(index));
-  if (!layerIndex || *layerIndex < 0 || *layerIndex >= layers)
-    throw InputError(file, where + " is in layer " +
-                               (layer ? "'" + *layer + "'" : std::to_string(index)) +
-                               " but the file has " + std::to_string(layers) + " layer(s)");
-  segment.layer = *layerIndex;
+  const std::string text = value ? "'" + *value + "'" : std::to_string(index);
+  const std::optional<int> layer = value ? wholeNumber(*value) : std::optional<int>(int(index));
+  if (!layer || *layer < 0 || *layer >= layers)
+    throw InputError(file, where + " is in layer " + text + " but the file has " +
+                               std::to_string(layers) + " layer(s)");
+  return *layer;
+}
+
+StoredSegment storedSegment(const std::filesystem::path& file, const HeaderFields& fields,
+                            std::size_t index, int layers) {
+  const SegmentFields field{fields, index};
+  StoredSegment segment;
+  segment.info.name = field["Name"] ? *field["Name"] : *field["ID"];  // as Slicer names a nameless one
+  segment.info.color = field["Color"] ? colorOf(*field["Color"]) : glm::vec3(0.5f);
+  const std::string where = "segment '" + segment.info.name + "' (Segment" + std::to_string(index) + ")";
+  segment.info.label = labelOfSegment(file, where, field["LabelValue"]);
+  segment.layer = layerOfSegment(file, where, field["Layer"], index, layers);
   return segment;
 }
 

@@ -137,15 +137,15 @@ TEST_F(SegmentationFileTest, LabelValueAbove15IsAnErrorNamingTheSegment) {
   writeSegmentation(file_, ct_.volume, kSegments);
   editHeader("Segment3_LabelValue:=4", "Segment3_LabelValue:=20");
   expectInputError([&] { readSegmentationInfo(file_); }, file_,
-                   "segment 'aorta' (Segment3_) has LabelValue 20; angioray labels are 1..15");
-  expectLabelsError("segment 'aorta' (Segment3_) has LabelValue 20");
+                   "segment 'aorta' (Segment3) has LabelValue 20; angioray labels are 1..15");
+  expectLabelsError("segment 'aorta' (Segment3) has LabelValue 20");
 }
 
 TEST_F(SegmentationFileTest, InconsistentSegmentFieldsAreErrors) {
   writeSegmentation(file_, ct_.volume, kSegments);
   const std::string original = fileContents(file_);
   for (const auto& [from, to, problem] : std::vector<std::tuple<std::string, std::string, std::string>>{
-           {"Segment1_LabelValue:=2\n", "", "segment 'table' (Segment1_) has no LabelValue"},
+           {"Segment1_LabelValue:=2\n", "", "segment 'table' (Segment1) has no LabelValue"},
            {"Segment1_LabelValue:=2", "Segment1_LabelValue:=two",
             "has LabelValue 'two', not a whole number"},
            {"Segment4_ID:=Segment_15\n", "", "has Segment4_Color but no Segment4_ID"},
