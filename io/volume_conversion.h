@@ -3,6 +3,7 @@
 // loops have no per-voxel dispatch: HU -> 12-bit density (rendering model's encoding, with NaN/Inf
 // rejected as -1024 HU) and label values -> 4-bit labels.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -67,17 +68,26 @@ struct HuToVoxels {
   }
 };
 
-// Row converter for reorientCopy: label values -> 0..15; returns how many were outside that range
-// (or not whole numbers).
+// Row converter for reorientCopy: label values -> 0..15; returns how many were not among `valid`
+// (outside 0..15, not whole numbers, or a value `valid` leaves out); those read as 0.
 struct ToLabels {
+  std::array<bool, kMaxLabel + 1> valid = everyLabel();
+
+  static constexpr std::array<bool, kMaxLabel + 1> everyLabel() {
+    std::array<bool, kMaxLabel + 1> all{};
+    all.fill(true);
+    return all;
+  }
+
   template <class T>
   std::size_t operator()(const T* first, std::ptrdiff_t step, int count, std::uint8_t* out) const {
     std::size_t invalid = 0;
     for (int x = 0; x < count; ++x) {
       const T value = first[x * step];
-      const bool valid = value >= T(0) && value <= T(kMaxLabel) && value == T(int(value));
-      out[x] = valid ? static_cast<std::uint8_t>(value) : 0;
-      invalid += !valid;
+      const bool isLabel =
+          value >= T(0) && value <= T(kMaxLabel) && value == T(int(value)) && valid[std::size_t(value)];
+      out[x] = isLabel ? static_cast<std::uint8_t>(value) : 0;
+      invalid += !isLabel;
     }
     return invalid;
   }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 
 #include <itkGDCMImageIO.h>
@@ -15,6 +16,7 @@
 
 #include "io/dicom_series.h"
 #include "io/input_error.h"
+#include "io/segmentation_file.h"
 #include "io/volume_conversion.h"
 #include "io/volume_formats.h"
 #include "io/volume_integrity.h"
@@ -249,23 +251,48 @@ std::string gridDifference(const VolumeGeometry& labels, const Volume& volume) {
   return "";
 }
 
+void requireVolumesGrid(const std::filesystem::path& file, const VolumeGeometry& labels,
+                        const Volume& volume, bool isSegmentation) {
+  const std::string difference = gridDifference(labels, volume);
+  if (difference.empty()) return;
+  // Slicer 4.11 saved segmentations cropped to their segments by default.
+  const std::string slicerHint =
+      isSegmentation ? "; in Slicer, set the segmentation's geometry to this CT (Segment Editor, "
+                       "Specify geometry) and save it again"
+                     : "";
+  throw InputError(file, "label volume is not on the volume's grid (" + difference + ")" + slicerHint);
+}
+
+// Voxels whose value is no label: an error in a label volume; in a segmentation a warning, as
+// Slicer shows no segment for them either.
+void reportInvalidLabels(const std::filesystem::path& file, std::size_t invalid, bool isSegmentation,
+                         const ReadOptions& options) {
+  if (invalid == 0) return;
+  if (!isSegmentation)
+    throw InputError(file, std::to_string(invalid) + " voxels have label values outside 0..15");
+  warn(options, file.string() + ": " + std::to_string(invalid) +
+                    " voxels have values that are no segment's label value; read as unlabelled");
+}
+
 void addLabels(Volume& volume, const std::filesystem::path& file, const ReadOptions& options) {
   if (!std::filesystem::exists(file)) throw InputError(file, "label volume does not exist");
   if (std::filesystem::is_directory(file))
-    throw InputError(file, "label volume must be a file (.nii, .nii.gz, .nrrd, .mha), not a folder");
+    throw InputError(
+        file, "label volume must be a file (.nii, .nii.gz, .nrrd, .seg.nrrd, .mha), not a folder");
+  // A Slicer segmentation's values are its segments' label values (one layer only).
+  const std::optional<SegmentationInfo> segmentation = readSegmentationInfo(file);
+  ToLabels toLabels;
+  if (segmentation) toLabels.valid = segmentLabelValues(file, *segmentation);
   const StoredVolume stored = readStoredVolume(file, 1.0, ReadOptions{});
   const Reorientation plan = planFor(file, stored.geometry);
-  const std::string difference = gridDifference(reorientedGeometry(stored.geometry, plan), volume);
-  if (!difference.empty())
-    throw InputError(file, "label volume is not on the volume's grid (" + difference + ")");
+  requireVolumesGrid(file, reorientedGeometry(stored.geometry, plan), volume, segmentation.has_value());
   std::vector<std::uint8_t> labels(volume.voxelCount());
   const std::size_t invalid = withComponentType(stored.componentType, [&](auto type) {
     using T = typename decltype(type)::type;
     return reorientCopy(reinterpret_cast<const T*>(stored.data.get()), stored.geometry.dims, plan,
-                        labels.data(), ToLabels{});
+                        labels.data(), toLabels);
   });
-  if (invalid > 0)
-    throw InputError(file, std::to_string(invalid) + " voxels have label values outside 0..15");
+  reportInvalidLabels(file, invalid, segmentation.has_value(), options);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, labels.size(), 1 << 16),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t n = range.begin(); n != range.end(); ++n)

@@ -14,7 +14,8 @@
 namespace angio {
 
 struct ReadOptions {
-  // Optional label volume on the same grid; its values (0..15) go into the 4 label bits.
+  // Optional label volume on the same grid; its values (0..15) go into the 4 label bits. A 3D
+  // Slicer segmentation (.seg.nrrd, one layer) gives its segments' label values (segmentation_file.h).
   std::filesystem::path labelPath;
   // Called with each warning (NaN replaced, oblique snapped, other DICOM series present, ...).
   std::function<void(const std::string&)> warn;
