@@ -115,6 +115,7 @@ struct GuiOptions {
   double quitAfterSeconds = 0;  // window: close by itself after this long (smoke tests)
   std::string session;          // a saved session (gui/session_file.h): its dataset, view, TF, panels
   std::string centerlines;      // loaded into the VesselGlyph panel at start (errors shown there)
+  std::string labels;           // a label volume or .seg.nrrd read at start (errors shown there)
 };
 int runGui(const GuiOptions& options);
 // A display is there and GLFW can open windows on it.

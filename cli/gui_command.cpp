@@ -69,6 +69,7 @@ AppStart initialState(const GuiOptions& options, const LoadedDataset& dataset,
     document = withSession.document();
   }
   start.centerlinesFile = options.centerlines;
+  start.labelsFile = options.labels;
   return start;
 }
 

@@ -43,4 +43,18 @@ std::optional<PickedPoint> pickPoint(const Volume& volume, const RegionTables& t
   return pointAt(scene, origin, *reached);
 }
 
+std::optional<PickedPoint> pickLabelled(const Volume& volume, const RenderParams& params,
+                                        glm::dvec2 imagePoint) {
+  const ViewGeometry view = makeViewGeometry(volume, params);
+  const glm::dvec3 origin = originAt(view, imagePoint);
+  const RaySamples positions(volume, view, origin);
+  const SampleRange samples = sampleRange(view, origin);
+  for (long k = samples.first; k <= samples.last; ++k) {
+    const glm::dvec3 q = positions.at(k);
+    if (sampleLabel(volume, q, params.sampling.filter) == 0) continue;
+    return PickedPoint{q * volume.spacing, sampleDensity(volume, q, params.sampling.filter)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace angio

@@ -25,4 +25,9 @@ std::optional<PickedPoint> pickPoint(const Volume& volume, const RegionTables& t
                                      const RenderParams& params, glm::dvec2 imagePoint,
                                      double opacity = 0.5);
 
+// The first sample along the same ray whose nearest voxel carries a label (hidden or not): what
+// "give back" clicks on when the labelled structure is cut out of the image. None: no label.
+std::optional<PickedPoint> pickLabelled(const Volume& volume, const RenderParams& params,
+                                        glm::dvec2 imagePoint);
+
 }  // namespace angio

@@ -26,6 +26,8 @@ App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& 
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
   ImGui::StyleColorsDark();
   startSession();
+  labels_.pendingFile = start.labelsFile.empty() ? doc().labels.file : start.labelsFile;
+  resetLabels();
   if (!start.centerlinesFile.empty()) {  // `gui --centerlines` rather than a session's file
     vessel_.ui.path = start.centerlinesFile;
     commit(CenterlineFileEdit{});
@@ -89,6 +91,7 @@ void App::pollJobs() {
   pollRenderer();
   pollExport();
   pollBackgroundJobs();
+  pollLabelJobs();
   status_ = renderer_->status();
 }
 
@@ -134,6 +137,7 @@ void App::drawViewportWindow() {
   if (viewport_.zoomedOrPanned) commit(ViewEdit{*viewport_.zoomedOrPanned});
   drawCenterlineOverlay();
   moveCprCursorOnClick();
+  growOnClick();
   if (viewport_.rotateDegrees != 0) commit(RotateEdit{viewport_.rotateDegrees});
   ImGui::End();
 }

@@ -25,6 +25,7 @@
 #include "gui/latency_trace.h"
 #include "render/series_export.h"
 #include "gui/app_cpr.h"
+#include "gui/app_labels.h"
 #include "gui/app_vessel.h"
 #include "gui/panel_export.h"
 #include "gui/panel_session.h"
@@ -50,6 +51,7 @@ struct LoadedDataset {
 struct AppStart {
   Document document;
   std::string centerlinesFile;  // centerlines to load at start (`gui --centerlines`), if any
+  std::string labelsFile;       // labels to read at start (`gui --labels`; else the session's)
 };
 
 // UI frame times (ms, as the platform measured them: the window's exclude the buffer swap, the
@@ -169,6 +171,16 @@ class App {
   const Centerlines* framedCenterlines();
   void loadMissingRegionTfs();  // a focus or context TF with no points: its preset
   ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
+  // Labels (gui/app_labels.cpp): bone removal, pick and grow, undo, label files.
+  void drawLabelsSection();
+  void pollLabelJobs();
+  void startBoneRemoval();
+  void growOnClick();  // right after drawViewport: a click with the grow tool on
+  void startLabelRead(const std::string& file);
+  void saveLabels(const std::string& file);
+  void changeLabels(const LabelChange& change, bool undo);  // stops the renderer meanwhile
+  void resetLabels();  // a new dataset: its own labels, counted anew
+  std::string exportLabelFile() const;  // the label file exports name ("" = none or unsaved)
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();
   void drawCprView();
@@ -239,6 +251,7 @@ class App {
 
   VesselGlyphPanel vessel_;  // the VesselGlyph panel (gui/app_vessel.cpp)
   CprViewPanel cprView_;     // the CPR view (gui/app_cpr.cpp)
+  LabelsPanel labels_;       // the Labels section (gui/app_labels.cpp); last: its job reads data_
 };
 
 }  // namespace angio

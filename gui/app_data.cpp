@@ -96,6 +96,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   huRange_.reset();
   scene_.reset();  // of the old volume
   renderer_ = makeRenderer();
+  resetLabels();
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
 }
 

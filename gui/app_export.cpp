@@ -9,7 +9,7 @@ RenderRecipe exportSidecar(const Document& state, const std::string& dataset, do
   sidecar.params = renderParamsOf(state);
   sidecar.params.sampling = state.levels[int(Quality::high)];
   sidecar.params.sampling.isd = isd;
-  sidecar.tf = state.tf;
+  sidecar.tf = renderedTf(state);
   return sidecar;
 }
 

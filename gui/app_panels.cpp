@@ -25,6 +25,7 @@ void App::drawSidePanel() {
   drawTfSection();
   drawVesselSection();
   drawCprSection();
+  drawLabelsSection();
   if (sectionHeader("Rendering")) commit(drawRenderingPanel(doc()));
   drawExportSection();
   drawSeriesExport();  // part of the Export section

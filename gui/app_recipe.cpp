@@ -39,7 +39,7 @@ std::optional<HybridCprRecipe> App::hybridRecipe() const {
 std::shared_ptr<const PreparedScene> App::currentScene() {
   RenderRecipe recipe;
   recipe.dataset = absoluteDataset(data_.name);
-  recipe.tf = doc().tf;
+  recipe.tf = renderedTf(doc());
   const Centerlines* centerlines = nullptr;
   if (doc().vesselGlyph.enabled && vessel_.physical) {
     try {
@@ -85,6 +85,7 @@ std::shared_ptr<const PreparedScene> App::prepareScene(RenderRecipe recipe,
 
 RenderRecipe App::exportRecipe() const {
   RenderRecipe recipe = exportSidecar(doc(), data_.name, export_.ui.isd);
+  recipe.labels = exportLabelFile();
   if (!scene_) return recipe;  // nothing rendered yet: plain DVR/MIP
   recipe.vesselGlyph = scene_->recipe().vesselGlyph;
   recipe.hybrid = scene_->recipe().hybrid;

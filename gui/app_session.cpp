@@ -40,7 +40,11 @@ void App::applySession(const Document& session) {
   commit(SessionEdit{session});  // the dataset changes when its load succeeds
   loadSessionCenterlines();      // checked against the session's dataset once that is there
   panelsToApply_ = session.panelsOpen;
-  if (session.dataset == data_.name || session.dataset.empty()) return;
+  labels_.pendingFile = session.labels.file;  // read once its dataset is there
+  if (session.dataset == data_.name || session.dataset.empty()) {
+    if (!labels_.pendingFile.empty()) startLabelRead(std::exchange(labels_.pendingFile, ""));
+    return;
+  }
   if (isPhantomName(session.dataset))
     message_ = "the session's dataset is a " + session.dataset + "; kept " + data_.name;
   else openDataset(session.dataset);

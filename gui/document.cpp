@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "render/label_styles.h"
+
 namespace angio {
 
 const char* cprColoringName(CprColoring coloring) {
@@ -32,6 +34,12 @@ const std::string& presetOf(const Document& document, TfTarget target) {
     case TfTarget::main: break;
   }
   return document.tfPreset;
+}
+
+TransferFunction renderedTf(const Document& document) {
+  TransferFunction tf = document.tf;
+  if (document.labels.showRemoved) tf.labels = withRemovedShown(std::move(tf.labels));
+  return tf;
 }
 
 RenderParams renderParamsOf(const Document& document) {

@@ -69,6 +69,16 @@ struct VesselGlyphState {
   friend bool operator==(const VesselGlyphState&, const VesselGlyphState&) = default;
 };
 
+// The Labels section (rendering model, "Labels"): the label volume that goes with the dataset and
+// whether hidden labels show as a translucent ghost. How each label renders (its name, color,
+// mode, own TF) is the main TF's label list (Document::tf.labels), so TF files carry it.
+struct LabelsState {
+  std::string file;          // the label volume loaded or last saved ("" = none)
+  bool showRemoved = false;  // hidden labels translucent instead of cut out
+
+  friend bool operator==(const LabelsState&, const LabelsState&) = default;
+};
+
 struct Document {
   std::string dataset;  // file or folder; "phantom IxJxK" for the generated phantom
   ViewState view;
@@ -79,6 +89,7 @@ struct Document {
   LevelSamplings levels = defaultLevelSamplings();
   CprState cpr;
   VesselGlyphState vesselGlyph;
+  LabelsState labels;
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 
@@ -91,6 +102,9 @@ enum class TfTarget { main = 0, focus = 1, context = 2 };
 const char* tfTargetName(TfTarget target);  // "main", "focus", "context"
 const TransferFunction& tfOf(const Document& document, TfTarget target);
 const std::string& presetOf(const Document& document, TfTarget target);
+
+// The main TF as rendered: its labels, hidden ones translucent when the user shows what was removed.
+TransferFunction renderedTf(const Document& document);
 
 // The render parameters the document asks for (sampling left at its default: each level sets it).
 RenderParams renderParamsOf(const Document& document);

@@ -239,6 +239,9 @@ struct SessionReader {
       session.levels[q] = sampling(section(levels, toString(Quality(q))), session.levels[q]);
     session.cpr = cpr(section(json, "cpr"));
     session.vesselGlyph = in("vessel_glyph").vesselGlyph(section(json, "vessel_glyph"));
+    const Json& labels = section(json, "labels");
+    session.labels.file = in("labels").text(labels, "file");
+    session.labels.showRemoved = in("labels").flag(labels, "show_removed", false);
     for (const auto& [name, open] : section(json, "panels").items()) {
       if (!open.is_boolean()) fail("panels " + name + " is not true or false");
       session.panelsOpen[name] = open.get<bool>();
@@ -285,6 +288,7 @@ std::string toJson(const Document& session) {
       {"levels", levels},
       {"cpr", cprJson(session.cpr)},
       {"vessel_glyph", vesselGlyphJson(session.vesselGlyph)},
+      {"labels", {{"file", session.labels.file}, {"show_removed", session.labels.showRemoved}}},
       {"panels", panels},
       {"recent_files", session.recentFiles},
   };

@@ -20,7 +20,10 @@ std::string& presetIn(Document& document, TfTarget target) {
 void change(Document& d, const ViewEdit& edit) { d.view = edit.view; }
 void change(Document& d, const RotateEdit& edit) { d.view.angleDeg += edit.degrees; }
 void change(Document& d, const TfChange& edit) {
-  tfIn(d, edit.target) = edit.tf;
+  TransferFunction& tf = tfIn(d, edit.target);
+  std::vector<LabelStyle> labels = std::move(tf.labels);
+  tf = edit.tf;
+  if (edit.target == TfTarget::main && tf.labels.empty()) tf.labels = std::move(labels);
   presetIn(d, edit.target) = edit.preset;
 }
 void change(Document& d, const RenderingEdit& edit) {
@@ -37,11 +40,17 @@ void change(Document& d, const CenterlineFileEdit& edit) {
 }
 void change(Document& d, const DatasetOpened& edit) {
   d.dataset = edit.dataset;
+  d.labels.file.clear();  // the labels of the old dataset do not fit the new one
   d.view.zoom = 1;
   d.view.panPx = glm::dvec2(0.0);
   addRecentFile(d.recentFiles, edit.dataset);
 }
 void change(Document& d, const RecentFilesEdit& edit) { d.recentFiles = edit.recentFiles; }
+void change(Document& d, const LabelStylesEdit& edit) {
+  d.tf.labels = edit.styles;
+  d.labels.showRemoved = edit.showRemoved;
+}
+void change(Document& d, const LabelFileEdit& edit) { d.labels.file = edit.file; }
 void change(Document& d, const PanelOpenEdit& edit) { d.panelsOpen[edit.title] = edit.open; }
 void change(Document& d, const SessionEdit& edit) {
   std::string dataset = std::move(d.dataset);

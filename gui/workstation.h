@@ -59,6 +59,17 @@ struct RecentFilesEdit {
   std::vector<std::string> recentFiles;
   friend bool operator==(const RecentFilesEdit&, const RecentFilesEdit&) = default;
 };
+// The Labels section: the label styles (the main TF's label list) and the ghost of hidden labels.
+struct LabelStylesEdit {
+  std::vector<LabelStyle> styles;
+  bool showRemoved = false;
+  friend bool operator==(const LabelStylesEdit&, const LabelStylesEdit&) = default;
+};
+// The label volume now loaded or saved ("" = none).
+struct LabelFileEdit {
+  std::string file;
+  friend bool operator==(const LabelFileEdit&, const LabelFileEdit&) = default;
+};
 // A side-panel section opened or closed.
 struct PanelOpenEdit {
   std::string title;
@@ -74,7 +85,8 @@ struct SessionEdit {
 
 using Edit =
     std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
-                 CenterlineFileEdit, DatasetOpened, RecentFilesEdit, PanelOpenEdit, SessionEdit>;
+                 CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit, LabelFileEdit,
+                 PanelOpenEdit, SessionEdit>;
 
 class Workstation {
  public:
@@ -88,6 +100,8 @@ class Workstation {
   // Invariants, kept here only: the angle is in [0, 360); an edit or a session that turns the
   // DVR+CPR hybrid on turns VesselGlyph on (its focus is the hybrid's cut). VesselGlyph may be
   // turned off again while the hybrid is on: the CPR section then says the hybrid waits for it.
+  // A main TF without labels (a preset) keeps the labels' styles: changing the TF does not bring
+  // back removed bone. A new dataset starts without labels.
   void apply(const Edit& edit);
 
  private:

@@ -275,6 +275,19 @@ void reportInvalidLabels(const std::filesystem::path& file, std::size_t invalid,
 }
 
 void addLabels(Volume& volume, const std::filesystem::path& file, const ReadOptions& options) {
+  const std::vector<std::uint8_t> labels = readLabels(file, volume, options);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, labels.size(), 1 << 16),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t n = range.begin(); n != range.end(); ++n)
+                        volume.voxels[n] = Voxel(densityOf(volume.voxels[n]) | (labels[n] << 12));
+                    });
+  report(options, 0.95);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> readLabels(const std::filesystem::path& file, const Volume& volume,
+                                     const ReadOptions& options) {
   if (!std::filesystem::exists(file)) throw InputError(file, "label volume does not exist");
   if (std::filesystem::is_directory(file))
     throw InputError(
@@ -293,15 +306,8 @@ void addLabels(Volume& volume, const std::filesystem::path& file, const ReadOpti
                         labels.data(), toLabels);
   });
   reportInvalidLabels(file, invalid, segmentation.has_value(), options);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, labels.size(), 1 << 16),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t n = range.begin(); n != range.end(); ++n)
-                        volume.voxels[n] = Voxel(densityOf(volume.voxels[n]) | (labels[n] << 12));
-                    });
-  report(options, 0.95);
+  return labels;
 }
-
-}  // namespace
 
 LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& options) {
   report(options, 0.0);

@@ -5,6 +5,7 @@
 // one-line message naming the file and the problem.
 #include <filesystem>
 #include <exception>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -34,5 +35,10 @@ struct LoadedVolume {
 };
 
 LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& options = {});
+
+// The labels of a label volume or Slicer segmentation on `volume`'s grid, one per voxel in the
+// volume's order (after the same reorientation); as ReadOptions::labelPath reads them.
+std::vector<std::uint8_t> readLabels(const std::filesystem::path& file, const Volume& volume,
+                                     const ReadOptions& options = {});
 
 }  // namespace angio

@@ -93,5 +93,14 @@ TEST(RayPick, AHiddenLabelIsPickedThrough) {
   EXPECT_TRUE(pickPoint(volume, singleTable(table), p, imagePointOver(volume, p, 16, 16)));
 }
 
+TEST(RayPick, GiveBackPicksTheFirstLabelledVoxelEvenWhenHidden) {
+  const Volume volume = cubeVolume(2);
+  const RenderParams p = nearestView(0);
+  const auto picked = pickLabelled(volume, p, imagePointOver(volume, p, 16, 16));
+  ASSERT_TRUE(picked);
+  EXPECT_NEAR(picked->positionMm.y, 10, 1e-9);  // the cube's front face
+  EXPECT_FALSE(pickLabelled(cubeVolume(0), p, imagePointOver(volume, p, 16, 16)));
+}
+
 }  // namespace
 }  // namespace angio

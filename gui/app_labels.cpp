@@ -1,0 +1,239 @@
+// The Labels section in App: automatic bone and table removal and pick-and-grow run in the
+// background and end in a LabelChange (gui/label_change.h); applying one (or undoing it) stops
+// the renderer and the jobs that read the volume, rewrites the label bits and starts a renderer
+// on the changed volume, whose slice tiles then know the new labels (core/slice_tiles.h).
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+#include <imgui.h>
+
+#include "core/ray_pick.h"
+#include "gui/app.h"
+#include "io/label_volume_file.h"
+#include "io/segmentation_file.h"
+#include "io/volume_reader.h"
+#include "render/label_styles.h"
+#include "segment/bone_removal.h"
+#include "segment/region_growing.h"
+
+namespace angio {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr float kClickSlopPx = 3;  // a left press that moved less than this is a click, not a drag
+
+bool isSegmentationFile(const std::string& file) {
+  const std::string name = fs::path(file).filename().string();
+  return name.size() > 9 && name.compare(name.size() - 9, 9, ".seg.nrrd") == 0;
+}
+
+std::vector<SegmentInfo> segmentsOf(const std::vector<LabelStyle>& styles, const LabelCounts& voxels) {
+  std::vector<LabelStyle> named = styles;
+  std::vector<SegmentInfo> segments;
+  for (int label = 1; label <= kMaxLabel; ++label) {
+    if (voxels[label] == 0) continue;
+    const LabelStyle& style = styleOf(named, label);
+    segments.push_back({label, style.name, style.color});
+  }
+  return segments;
+}
+
+// A new label's style: hidden for bone and table (what removal is for), shown for the user's.
+void addStyle(std::vector<LabelStyle>& styles, int label) {
+  for (const LabelStyle& style : styles)
+    if (style.label == label) return;
+  LabelStyle& style = styleOf(styles, label);
+  if (label == kBoneLabel || label == kTableLabel) style.mode = LabelMode::hidden;
+}
+
+}  // namespace
+
+void App::resetLabels() {
+  labels_.job.stop();
+  labels_.undo.clear();
+  labels_.redo.clear();
+  labels_.counted = false;
+  labels_.dirty = false;
+  labels_.error.clear();
+  labels_.counting = std::async(std::launch::async, [this] { return countLabels(data_.volume); });
+  if (!labels_.pendingFile.empty()) {
+    startLabelRead(labels_.pendingFile);
+    labels_.pendingFile.clear();
+  }
+}
+
+void App::drawLabelsSection() {
+  if (!sectionHeader("Labels")) return;
+  LabelsPanelInfo info;
+  info.hasVolume = data_.volume.voxelCount() > 0;
+  info.voxels = labels_.voxels;
+  info.counted = labels_.counted;
+  info.busy = labels_.job.running();
+  info.busyWhat = labels_.jobWhat;
+  info.progress = labels_.job.progress();
+  info.canUndo = !labels_.undo.empty();
+  info.canRedo = !labels_.redo.empty();
+  if (info.canUndo) info.undoWhat = labels_.undo.back().what;
+  if (info.canRedo) info.redoWhat = labels_.redo.back().what;
+  info.file = doc().labels.file.empty() ? "" : doc().labels.file + (labels_.dirty ? " (changed)" : "");
+  info.error = labels_.error;
+  const LabelsPanelResult result = drawLabelsPanel(doc(), labels_.ui, info, widgetRects_);
+  commit(result.edit);
+  if (result.cancel) labels_.job.cancel();
+  if (result.removeBoneAndTable) startBoneRemoval();
+  if (result.undo && !labels_.undo.empty()) {
+    LabelChange change = std::move(labels_.undo.back());
+    labels_.undo.pop_back();
+    changeLabels(change, true);
+    labels_.redo.push_back(std::move(change));
+  }
+  if (result.redo && !labels_.redo.empty()) {
+    LabelChange change = std::move(labels_.redo.back());
+    labels_.redo.pop_back();
+    changeLabels(change, false);
+    labels_.undo.push_back(std::move(change));
+  }
+  if (result.save) saveLabels(labels_.ui.path);
+  if (result.load) startLabelRead(labels_.ui.path);
+}
+
+void App::startBoneRemoval() {
+  std::optional<Centerlines> protect;
+  try {
+    if (const Centerlines* framed = framedCenterlines()) protect = *framed;
+  } catch (const std::exception&) {
+    // Centerlines that do not fit the dataset protect nothing; the VesselGlyph panel says why.
+  }
+  labels_.error.clear();
+  labels_.jobWhat = "removing bone and table";
+  labels_.fileRead.clear();
+  labels_.job.start([this, protect = std::move(protect)](JobControl& control) {
+    SegmentationProgress progress;
+    progress.progress = [&control](double fraction) { control.progress.store(fraction); };
+    progress.cancel = &control.cancel;
+    const LabelResult result =
+        removeBoneAndTable(data_.volume, protect ? &*protect : nullptr, {}, progress);
+    if (result.cancelled) return LabelChange{};
+    return changeTo(data_.volume, result.labels, "bone and table removal");
+  });
+}
+
+void App::growOnClick() {
+  if (!labels_.ui.growTool || labels_.job.running() || !shown_ || !viewport_.hasImage) return;
+  if (!ImGui::IsItemHovered() || !ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return;
+  const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
+  if (drag.x * drag.x + drag.y * drag.y > kClickSlopPx * kClickSlopPx) return;  // a drag turns the view
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const RenderParams& params = shown_->params;
+  const ViewGeometry view = makeViewGeometry(data_.volume, params);
+  const glm::dvec2 imagePoint{
+      (mouse.x - viewport_.imageMin.x) / (viewport_.imageMax.x - viewport_.imageMin.x) * view.width,
+      (mouse.y - viewport_.imageMin.y) / (viewport_.imageMax.y - viewport_.imageMin.y) * view.height};
+  const bool giveBack = labels_.ui.target == GrowTarget::unlabel;
+  std::optional<PickedPoint> picked;
+  if (giveBack) {
+    picked = pickLabelled(data_.volume, params, imagePoint);
+  } else {
+    const TransferFunction tf = renderedTf(doc());
+    const TfTable table = buildTable(tf);
+    const LabelTables labels(tf.labels);
+    picked = pickPoint(data_.volume, {nullptr, nullptr, nullptr, &table, &labels}, params, imagePoint);
+  }
+  if (!picked) {
+    message_ = giveBack ? "no labelled voxel under the cursor" : "nothing visible under the cursor";
+    return;
+  }
+  const glm::ivec3 seed = nearestVoxel(data_.volume, picked->positionMm / data_.volume.spacing);
+  GrowSettings settings{labels_.ui.lowHu, labels_.ui.highHu, labels_.ui.growLabel, labels_.ui.fillHoles};
+  labels_.error.clear();
+  labels_.fileRead.clear();
+  labels_.jobWhat = giveBack ? "giving back" : "growing";
+  labels_.job.start([this, seed, settings, giveBack](JobControl& control) {
+    if (giveBack)
+      return changeOf(data_.volume, connectedLabelled(data_.volume, seed, &control.cancel), 0,
+                      "give back");
+    return changeOf(data_.volume, growRegion(data_.volume, seed, settings, &control.cancel),
+                    settings.label, "grow " + defaultLabelName(settings.label));
+  });
+}
+
+void App::startLabelRead(const std::string& file) {
+  labels_.error.clear();
+  labels_.jobWhat = "reading " + fs::path(file).filename().string();
+  labels_.fileRead = file;
+  labels_.job.start([this, file](JobControl&) {
+    ReadOptions options;
+    options.warn = printWarning;
+    return changeTo(data_.volume, readLabels(file, data_.volume, options), "load " + file);
+  });
+}
+
+void App::saveLabels(const std::string& file) {
+  try {
+    if (isSegmentationFile(file))
+      writeSegmentation(file, data_.volume, segmentsOf(doc().tf.labels, labels_.voxels));
+    else writeLabelVolume(file, data_.volume);
+    commit(LabelFileEdit{fs::absolute(file).lexically_normal().string()});
+    labels_.dirty = false;
+    message_ = "saved labels " + file;
+  } catch (const std::exception& error) {
+    labels_.error = error.what();
+  }
+}
+
+void App::pollLabelJobs() {
+  if (labels_.counting.valid() &&
+      labels_.counting.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    labels_.voxels = labels_.counting.get();
+    labels_.counted = true;
+  }
+  if (!labels_.job.ready()) return;
+  const bool cancelled = labels_.job.cancelRequested();
+  try {
+    LabelChange change = labels_.job.take();
+    if (cancelled) {
+      message_ = labels_.jobWhat + " cancelled";
+      return;
+    }
+    if (!labels_.fileRead.empty())
+      commit(LabelFileEdit{fs::absolute(labels_.fileRead).lexically_normal().string()});
+    if (change.empty()) {
+      message_ = labels_.jobWhat + ": no voxel changed";
+      return;
+    }
+    changeLabels(change, false);
+    labels_.dirty = labels_.fileRead.empty();
+    message_ = change.what + ": " + std::to_string(change.voxels.size()) + " voxels";
+    labels_.undo.push_back(std::move(change));
+    labels_.redo.clear();
+  } catch (const std::exception& error) {
+    labels_.error = error.what();
+  }
+}
+
+void App::changeLabels(const LabelChange& change, bool undo) {
+  seriesJob_.stop();
+  cprView_.job.stop();
+  if (export_.job.valid()) export_.job.wait();
+  renderer_.reset();  // joins its worker: nothing reads the voxels now
+  lastRequest_.reset();
+  apply(change, undo, data_.volume, labels_.voxels);
+  labels_.dirty = true;
+  std::uint16_t present = 0;  // the labels the change gives
+  for (const std::uint8_t label : undo ? change.before : change.after) present |= std::uint16_t(1u << label);
+  std::vector<LabelStyle> styles = doc().tf.labels;
+  for (int label = 1; label <= kMaxLabel; ++label)
+    if (present & (1u << label)) addStyle(styles, label);
+  commit(LabelStylesEdit{styles, doc().labels.showRemoved});
+  renderer_ = makeRenderer();
+}
+
+std::string App::exportLabelFile() const {
+  if (labels_.dirty || doc().labels.file.empty()) return "";
+  return doc().labels.file;
+}
+
+}  // namespace angio
