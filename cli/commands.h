@@ -64,6 +64,7 @@ struct PhantomOptionsCli {
   std::string size = "512x512x1200";
   std::uint64_t seed = 1;
   std::string centerlines;
+  std::string labels;  // also write the ground-truth label volume (bone 1, table 2)
 };
 int runPhantom(const PhantomOptionsCli& options);
 

@@ -100,6 +100,9 @@ void addPhantom(CLI::App& app, angio::PhantomOptionsCli& o) {
   cmd->add_option("--size", o.size, "Voxels as IxJxK")->capture_default_str();
   cmd->add_option("--seed", o.seed, "Noise seed")->capture_default_str();
   cmd->add_option("--centerlines", o.centerlines, "Also write ground-truth centerlines (.csv)");
+  cmd->add_option("--labels", o.labels,
+                  "Also write the ground-truth label volume (uint8: 1 bone, 2 table; .nrrd, .mha, "
+                  ".nii.gz)");
 }
 
 void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
