@@ -68,6 +68,17 @@ struct PhantomOptionsCli {
 };
 int runPhantom(const PhantomOptionsCli& options);
 
+// `angioray segment`: bone (label 1) and table (label 2) from the density alone, to a label volume.
+struct SegmentOptionsCli {
+  std::string volume;
+  std::string labels;       // existing labels: user labels (3..15) are kept
+  std::string centerlines;  // protect their lumen
+  std::string out;
+  bool bone = false;  // neither flag: both
+  bool table = false;
+};
+int runSegment(const SegmentOptionsCli& options);
+
 // `angioray bench`: frame times of the raycasters (bench/frame_bench.h); no VOLUME = the phantom.
 struct BenchOptionsCli {
   std::string volume;
