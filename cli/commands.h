@@ -66,8 +66,20 @@ struct PhantomOptionsCli {
   std::string size = "512x512x1200";
   std::uint64_t seed = 1;
   std::string centerlines;
+  std::string labels;  // also write the ground-truth label volume (bone 1, table 2)
 };
 int runPhantom(const PhantomOptionsCli& options);
+
+// `angioray segment`: bone (label 1) and table (label 2) from the density alone, to a label volume.
+struct SegmentOptionsCli {
+  std::string volume;
+  std::string labels;       // existing labels: user labels (3..15) are kept
+  std::string centerlines;  // protect their lumen
+  std::string out;
+  bool bone = false;  // neither flag: both
+  bool table = false;
+};
+int runSegment(const SegmentOptionsCli& options);
 
 // `angioray bench`: frame times of the raycasters (bench/frame_bench.h); no VOLUME = the phantom.
 struct BenchOptionsCli {

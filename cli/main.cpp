@@ -104,6 +104,21 @@ void addPhantom(CLI::App& app, angio::PhantomOptionsCli& o) {
   cmd->add_option("--size", o.size, "Voxels as IxJxK")->capture_default_str();
   cmd->add_option("--seed", o.seed, "Noise seed")->capture_default_str();
   cmd->add_option("--centerlines", o.centerlines, "Also write ground-truth centerlines (.csv)");
+  cmd->add_option("--labels", o.labels,
+                  "Also write the ground-truth label volume (uint8: 1 bone, 2 table; .nrrd, .mha, "
+                  ".nii.gz)");
+}
+
+void addSegment(CLI::App& app, angio::SegmentOptionsCli& o) {
+  auto* cmd = app.add_subcommand(
+      "segment", "Label bone (1) and the table (2) from the density alone, to a label volume");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder")->required();
+  cmd->add_flag("--bone", o.bone, "Label bone (without --bone or --table: both)");
+  cmd->add_flag("--table", o.table, "Label the scanner table");
+  cmd->add_option("--labels", o.labels, "Existing label volume on the same grid (user labels kept)");
+  cmd->add_option("--centerlines", o.centerlines,
+                  "Centerlines (.vtp, .mrk.json, .csv) whose lumen never becomes bone");
+  cmd->add_option("--out,-o", o.out, "Output label volume (uint8; .nrrd, .mha, .nii.gz)")->required();
 }
 
 void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
@@ -184,12 +199,14 @@ int main(int argc, char** argv) {
   angio::PhantomOptionsCli phantom;
   angio::DemoOptions demo;
   angio::BenchOptionsCli bench;
+  angio::SegmentOptionsCli segment;
   angio::GuiOptions gui;
   addInfo(app, info);
   addRender(app, render);
   addCpr(app, cpr);
   addPhantom(app, phantom);
   addDemo(app, demo);
+  addSegment(app, segment);
   addBench(app, bench);
   addGui(app, gui);
   app.require_subcommand(0, 1);
@@ -200,6 +217,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return angio::runRender(render);
     if (app.got_subcommand("cpr")) return angio::runCpr(cpr);
     if (app.got_subcommand("phantom")) return angio::runPhantom(phantom);
+    if (app.got_subcommand("segment")) return angio::runSegment(segment);
     if (app.got_subcommand("bench")) return angio::runBench(bench);
     if (app.got_subcommand("gui")) return angio::runGui(gui);
     if (app.got_subcommand("demo")) return angio::runDemo(demo);

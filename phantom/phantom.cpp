@@ -9,6 +9,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "core/labels.h"
 #include "phantom/phantom_anatomy.h"
 
 // The phantom is rasterised slice by slice: each axial slice gathers the few solids whose z-range
@@ -17,7 +18,9 @@
 // solid). A final pass per voxel layers skin, fat and muscle by the distance to the body's outline,
 // paints the groups over it with partial-volume coverage and adds noise hashed from (seed, voxel
 // index), so every voxel depends only on the options and its own index: same bytes for any thread
-// count.
+// count. The scanner table is the same in every slice, so it is rasterised once, as the background
+// the body's layers are painted over. Ground-truth labels follow the same painting order: table
+// outside the body, bone over it, no label where lumen or plaque is painted over bone.
 
 namespace angio {
 
@@ -142,6 +145,7 @@ struct FilledLayer {
 // the shell) are unions of their own, so where bones overlap a core paints over the other's cortex.
 struct ShelledLayer {
   std::vector<float> outerSd, shellHu, coreSd, coreHu;
+  std::vector<std::uint8_t> outerLabel;  // the label of the part whose outer surface is nearest
   PixelRect dirty;
 
   void resize(std::size_t pixels) {
@@ -149,6 +153,7 @@ struct ShelledLayer {
     coreSd.assign(pixels, kFar);
     shellHu.assign(pixels, 0.f);
     coreHu.assign(pixels, 0.f);
+    outerLabel.assign(pixels, 0);
   }
   void add(const SliceGrid& grid, double z, const Placed<ShelledPart>& placed) {
     const PixelRect rect = pixelsWithin(grid, placed.bounds);
@@ -159,6 +164,7 @@ struct ShelledLayer {
       if (d < outerSd[n]) {
         outerSd[n] = d;
         shellHu[n] = float(part.shellHu);
+        outerLabel[n] = std::uint8_t(part.label);
       }
       const float core = d + float(part.shellMm);
       if (core < coreSd[n]) {
@@ -193,6 +199,12 @@ struct SliceLayers {
   }
 };
 
+// The table's density and ground truth per pixel of an axial slice (the same in every slice).
+struct TableSlice {
+  std::vector<float> hu;  // air where there is no table
+  std::vector<std::uint8_t> inside;
+};
+
 // ---- Noise
 
 std::uint64_t mix64(std::uint64_t z) {  // splitmix64 finaliser
@@ -211,10 +223,18 @@ float gaussianNoise(std::uint64_t seedKey, std::uint64_t voxelIndex) {
 
 // ---- The phantom
 
+// A voxel's density from the body's layers and its signed distance to the body's outline.
+struct TissueSample {
+  float hu = 0;
+  float bodySd = kFar;
+};
+
 struct PhantomRasteriser {
   Volume& volume;
   std::uint64_t seedKey;
   double blendMm;  // width of the partial-volume ramp at every surface
+  bool groundTruthLabels;
+  TableSlice table;
   std::vector<FootPart> feet;
   std::vector<Placed<FilledPart>> soft, lumen, plaques;
   std::vector<Placed<ShelledPart>> shelled;
@@ -236,9 +256,29 @@ struct PhantomRasteriser {
     }
   }
 
-  // Skin, fat, muscle (and in the torso, muscle wall then viscera) by depth below the outline.
-  float tissueHu(const std::vector<BodySection>& sections, const std::vector<const FootPart*>& feetHere,
-                 glm::dvec3 p) const {
+  TableSlice rasteriseTable(const ScannerTable& shape) const {
+    const SliceGrid g = grid();
+    TableSlice slice;
+    slice.hu.resize(std::size_t(g.dims.x) * g.dims.y);
+    slice.inside.resize(slice.hu.size());
+    for (int j = 0; j < g.dims.y; ++j) {
+      for (int i = 0; i < g.dims.x; ++i) {
+        const std::size_t n = std::size_t(j) * g.dims.x + i;
+        const glm::dvec2 p(g.x(i), g.y(j));
+        const double tableSd = shape.tableDistance(p);
+        float hu = glm::mix(float(kAirHu), float(shape.padHu), coverage(float(tableSd)));
+        slice.hu[n] = glm::mix(hu, float(shape.shellHu), coverage(float(shape.shellDistance(p))));
+        slice.inside[n] = tableSd < 0;
+      }
+    }
+    return slice;
+  }
+
+  // Skin, fat, muscle (and in the torso, muscle wall then viscera) by depth below the outline,
+  // over the background density.
+  TissueSample tissue(const std::vector<BodySection>& sections,
+                      const std::vector<const FootPart*>& feetHere, glm::dvec3 p,
+                      float background) const {
     double sd = 1e30, fat = 0, wall = 0;
     for (const BodySection& s : sections) {
       const double d = ellipseSignedDistance(glm::dvec2(p) - s.centre, s.radii);
@@ -249,13 +289,13 @@ struct PhantomRasteriser {
       if (d < sd) sd = d, fat = foot->fatMm, wall = 0;
     }
     const float d = float(sd);
-    float hu = float(kAirHu);
-    if (d > 0.5f * float(blendMm)) return hu;
+    float hu = background;
+    if (d > 0.5f * float(blendMm)) return {hu, d};
     hu = glm::mix(hu, float(kSkinHu), coverage(d));
     hu = glm::mix(hu, float(kFatHu), coverage(d + float(kSkinMm)));
     hu = glm::mix(hu, float(kMuscleHu), coverage(d + float(kSkinMm + fat)));
     if (wall > 0) hu = glm::mix(hu, float(kVisceraHu), coverage(d + float(kSkinMm + fat + wall)));
-    return hu;
+    return {hu, d};
   }
 
   PixelRect bodyRect(const SliceGrid& grid, const std::vector<BodySection>& sections,
@@ -276,6 +316,19 @@ struct PhantomRasteriser {
   void paintFilled(const FilledLayer& layer, std::size_t n, int i, int j, float& hu) const {
     if (!layer.dirty.contains(i, j) || layer.sd[n] >= 0.5f * float(blendMm)) return;
     hu = glm::mix(hu, layer.hu[n], coverage(layer.sd[n]));
+  }
+
+  static bool insideFilled(const FilledLayer& layer, std::size_t n, int i, int j) {
+    return layer.dirty.contains(i, j) && layer.sd[n] < 0;
+  }
+
+  // The ground truth at a voxel centre, in the painting order of its density.
+  int groundTruthLabel(const SliceLayers& layers, std::size_t n, int i, int j, float bodySd) const {
+    if (insideFilled(layers.lumen, n, i, j) || insideFilled(layers.plaques, n, i, j)) return 0;
+    const ShelledLayer& shelled = layers.shelled;
+    if (shelled.dirty.contains(i, j) && shelled.outerSd[n] < 0 && shelled.outerLabel[n] != 0)
+      return shelled.outerLabel[n];
+    return table.inside[n] && bodySd >= 0 ? kTableLabel : 0;
   }
 
   void paintShelled(const ShelledLayer& layer, std::size_t n, int i, int j, float& hu) const {
@@ -306,16 +359,17 @@ struct PhantomRasteriser {
     for (int j = 0; j < g.dims.y; ++j) {
       for (int i = 0; i < g.dims.x; ++i) {
         const std::size_t n = std::size_t(j) * g.dims.x + i;
-        float hu = float(kAirHu);
+        TissueSample sample{table.hu[n]};
         if (body.contains(i, j)) {
-          hu = tissueHu(sections, feetHere, glm::dvec3(g.x(i), g.y(j), z));
-          paintFilled(layers.soft, n, i, j, hu);
-          paintShelled(layers.shelled, n, i, j, hu);
-          paintFilled(layers.lumen, n, i, j, hu);
-          paintFilled(layers.plaques, n, i, j, hu);
+          sample = tissue(sections, feetHere, glm::dvec3(g.x(i), g.y(j), z), table.hu[n]);
+          paintFilled(layers.soft, n, i, j, sample.hu);
+          paintShelled(layers.shelled, n, i, j, sample.hu);
+          paintFilled(layers.lumen, n, i, j, sample.hu);
+          paintFilled(layers.plaques, n, i, j, sample.hu);
         }
-        hu += float(kNoiseSigmaHu) * gaussianNoise(seedKey, sliceStart + n);
-        out[n] = encodeVoxel(hu);
+        const float hu = sample.hu + float(kNoiseSigmaHu) * gaussianNoise(seedKey, sliceStart + n);
+        out[n] =
+            encodeVoxel(hu, groundTruthLabels ? groundTruthLabel(layers, n, i, j, sample.bodySd) : 0);
       }
     }
     layers.soft.clear(g);
@@ -363,11 +417,15 @@ Phantom generatePhantom(const PhantomOptions& options, const std::function<void(
   PhantomRasteriser rasteriser{phantom.volume,
                                mix64(options.seed + 0x632be59bd9b4e019ull),
                                blendMm,
+                               options.groundTruthLabels,
+                               {},
                                anatomy.feet,
                                place(anatomy.softParts, margin),
                                place(anatomy.lumen, margin),
                                place(anatomy.plaques, margin),
                                place(anatomy.shelled, margin)};
+
+  rasteriser.table = rasteriser.rasteriseTable(anatomy.table);
 
   tbb::enumerable_thread_specific<SliceLayers> scratch;
   for (int k0 = 0; k0 < dims.z; k0 += kSlicesPerProgressStep) {

@@ -4,6 +4,7 @@
 // femur, tibia and fibula with cortical shell and marrow, and a contrast-filled arterial tree
 // (aorta -> common/external iliac -> femoral -> popliteal -> anterior/posterior tibial) whose
 // radius tapers, with a tortuous and a near-horizontal segment, calcified plaques and a stenosis.
+// Under the body lies the scanner table: a curved carbon-fibre shell with a foam pad on it.
 // Same options, same bytes, whatever the thread count.
 #include <cstdint>
 #include <functional>
@@ -20,6 +21,11 @@ namespace angio {
 struct PhantomOptions {
   glm::ivec3 dims{512, 512, 1200};
   std::uint64_t seed = 1;
+  // The voxels' label bits carry the ground truth (core/labels.h): kBoneLabel for every voxel
+  // inside a bone (cortex and marrow), kTableLabel for the table (shell and pad), 0 elsewhere, also
+  // where lumen or plaque is painted over bone. Off, the label bits are 0. The label bits cost no
+  // memory, where a separate label volume would add half the volume's size.
+  bool groundTruthLabels = false;
 };
 
 struct Phantom {

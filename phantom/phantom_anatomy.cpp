@@ -4,9 +4,34 @@
 #include <array>
 #include <cmath>
 
+#include "core/labels.h"
 #include "phantom/phantom_arteries.h"
 
 namespace angio::phantom {
+
+namespace {
+
+// Signed distance to the curved layer between radii inner and outer (mm) around centre, cut to
+// |x| <= halfWidth.
+double curvedLayerDistance(glm::dvec2 p, glm::dvec2 centre, double inner, double outer,
+                           double halfWidth) {
+  const double rho = glm::length(p - centre);
+  return std::max({inner - rho, rho - outer, std::abs(p.x) - halfWidth});
+}
+
+}  // namespace
+
+double ScannerTable::tableDistance(glm::dvec2 p) const {
+  const glm::dvec2 centre(0.0, padTopMm - curvatureRadiusMm);
+  return curvedLayerDistance(p, centre, curvatureRadiusMm, curvatureRadiusMm + padMm + shellMm,
+                             halfWidthMm);
+}
+
+double ScannerTable::shellDistance(glm::dvec2 p) const {
+  const glm::dvec2 centre(0.0, padTopMm - curvatureRadiusMm);
+  return curvedLayerDistance(p, centre, curvatureRadiusMm + padMm, curvatureRadiusMm + padMm + shellMm,
+                             halfWidthMm);
+}
 
 double signedDistance(const Solid& solid, glm::dvec3 p) {
   return std::visit([&](const auto& shape) { return signedDistance(shape, p); }, solid);
@@ -66,11 +91,12 @@ std::vector<FootPart> feet() {
 
 // ---- Bones
 
-// Shell thickness and density, core density.
+// Shell thickness and density, core density, ground-truth label.
 struct ShellMaterial {
   double shellMm;
   double shellHu;
   double coreHu;
+  int label = kBoneLabel;
 };
 constexpr ShellMaterial kVertebra{1.5, 800, 220};
 constexpr ShellMaterial kFlatBone{2.0, 1000, 200};  // pelvis
@@ -82,7 +108,7 @@ constexpr ShellMaterial kFibulaShaft{2.5, 1400, 40};
 constexpr ShellMaterial kMetatarsal{1.5, 1200, 60};
 
 // Arterial phase: the renal cortex enhances, the medulla not yet.
-constexpr ShellMaterial kKidney{7.0, 190, 110};
+constexpr ShellMaterial kKidney{7.0, 190, 110, 0};
 
 constexpr double kDiscHu = 90;
 
@@ -90,7 +116,8 @@ Capsule capsule(glm::dvec3 a, glm::dvec3 b, double ra, double rb) { return {a, b
 Ellipsoid ellipsoid(glm::dvec3 centre, glm::dvec3 radii) { return {centre, glm::dmat3(1.0), radii}; }
 
 void addShelled(std::vector<ShelledPart>& bones, Solid solid, const ShellMaterial& material) {
-  bones.push_back({std::move(solid), material.shellMm, material.shellHu, material.coreHu});
+  bones.push_back(
+      {std::move(solid), material.shellMm, material.shellHu, material.coreHu, material.label});
 }
 
 // Lumbar vertebra L1..L5 centred at height z: body (elliptic cylinder) and posterior arch.

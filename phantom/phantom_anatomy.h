@@ -36,6 +36,7 @@ struct ShelledPart {
   double shellMm = 0;
   double shellHu = 0;
   double coreHu = 0;
+  int label = 0;  // ground truth of the whole solid: kBoneLabel for bones, 0 for kidneys
 };
 
 // A cross-section of the body in one axial slice: an ellipse with skin, a subcutaneous fat layer of
@@ -53,7 +54,27 @@ struct FootPart {
   double fatMm = 0;
 };
 
+// The scanner table the patient lies on, the same in every axial slice: a carbon-fibre shell under a
+// foam pad, both curved to follow the back (concave towards the patient, whose back rests on the
+// pad's middle), a little wider than the body. Real tables read about -200..+300 HU in the shell and
+// -800..-600 HU in the pad.
+struct ScannerTable {
+  double padTopMm = 121;  // y of the pad's top under the midline (the torso's back reaches ~125)
+  double padMm = 25;
+  double shellMm = 4;
+  double curvatureRadiusMm = 500;  // of the pad's top; the centre is anterior, on the midline
+  double halfWidthMm = 190;
+  double padHu = -700;
+  double shellHu = 100;
+
+  // Signed distances (mm, negative inside) in the axial plane: to the whole table (pad and shell)
+  // and to the shell alone.
+  double tableDistance(glm::dvec2 p) const;
+  double shellDistance(glm::dvec2 p) const;
+};
+
 struct Anatomy {
+  ScannerTable table;
   std::vector<FootPart> feet;
   std::vector<FilledPart> softParts;  // painted over the body's layers
   std::vector<ShelledPart> shelled;   // bones and kidneys, over the soft parts
