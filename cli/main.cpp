@@ -185,7 +185,8 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--centerlines", o.centerlines,
                   "Centerlines (.vtp, .mrk.json, .csv) for the VesselGlyph panel");
-  cmd->add_option("--labels", o.labels, "Label volume or Slicer .seg.nrrd on VOLUME's grid, read at start");
+  cmd->add_option("--labels", o.labels,
+                  "Label volume or Slicer .seg.nrrd on VOLUME's grid, read at start");
 }
 
 }  // namespace

@@ -179,7 +179,7 @@ class App {
   void startLabelRead(const std::string& file);
   void saveLabels(const std::string& file);
   void changeLabels(const LabelChange& change, bool undo);  // stops the renderer meanwhile
-  void resetLabels();  // a new dataset: its own labels, counted anew
+  void resetLabels();                   // a new dataset: its own labels, counted anew
   std::string exportLabelFile() const;  // the label file exports name ("" = none or unsaved)
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();

@@ -9,7 +9,9 @@
 #include <imgui.h>
 
 #include "core/ray_pick.h"
+#include "core/volume_sampling.h"
 #include "gui/app.h"
+#include "io/input_error.h"
 #include "io/label_volume_file.h"
 #include "io/segmentation_file.h"
 #include "io/volume_reader.h"
@@ -223,7 +225,8 @@ void App::changeLabels(const LabelChange& change, bool undo) {
   apply(change, undo, data_.volume, labels_.voxels);
   labels_.dirty = true;
   std::uint16_t present = 0;  // the labels the change gives
-  for (const std::uint8_t label : undo ? change.before : change.after) present |= std::uint16_t(1u << label);
+  for (const std::uint8_t label : undo ? change.before : change.after)
+    present |= std::uint16_t(1u << label);
   std::vector<LabelStyle> styles = doc().tf.labels;
   for (int label = 1; label <= kMaxLabel; ++label)
     if (present & (1u << label)) addStyle(styles, label);

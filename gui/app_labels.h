@@ -23,8 +23,8 @@ struct LabelsPanel {
   LabelCounts voxels{};
   std::future<LabelCounts> counting;  // after a dataset change
   bool counted = false;
-  bool dirty = false;        // changed since loaded or saved
-  std::string pendingFile;   // a session's label file, read once its dataset is there
+  bool dirty = false;       // changed since loaded or saved
+  std::string pendingFile;  // a session's label file, read once its dataset is there
   std::string error;
 };
 

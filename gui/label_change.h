@@ -13,7 +13,7 @@
 namespace angio {
 
 struct LabelChange {
-  std::string what;  // for the Undo button's tooltip, e.g. "bone and table removal"
+  std::string what;                 // for the Undo button's tooltip, e.g. "bone and table removal"
   std::vector<std::size_t> voxels;  // indices into Volume::voxels, ascending
   std::vector<std::uint8_t> before, after;
 

@@ -80,7 +80,8 @@ void drawGrowTool(LabelsPanelUi& ui, const std::vector<LabelStyle>& styles, Widg
   std::vector<LabelStyle> named = styles;
   if (ImGui::BeginCombo("##growlabel", styleOf(named, ui.growLabel).name.c_str())) {
     for (int label = 1; label <= kMaxLabel; ++label)
-      if (ImGui::Selectable(styleOf(named, label).name.c_str(), ui.growLabel == label)) ui.growLabel = label;
+      if (ImGui::Selectable(styleOf(named, label).name.c_str(), ui.growLabel == label))
+        ui.growLabel = label;
     ImGui::EndCombo();
   }
   ImGui::SameLine();

@@ -21,7 +21,7 @@ struct LabelsPanelUi {
   GrowTarget target = GrowTarget::label;
   int growLabel = 1;  // the label the grown voxels get
   double lowHu = 500, highHu = 3071;
-  bool fillHoles = true;  // marrow inside the grown cortex joins it
+  bool fillHoles = true;                 // marrow inside the grown cortex joins it
   std::string path = "labels.seg.nrrd";  // the save / load field
 };
 
@@ -29,12 +29,12 @@ struct LabelsPanelInfo {
   bool hasVolume = false;
   std::array<std::uint64_t, 16> voxels{};  // per label, counted (0 until known)
   bool counted = false;
-  bool busy = false;        // removal, growing or a label file in the works
-  std::string busyWhat;     // e.g. "removing bone and table"
-  double progress = 0;      // of the removal
+  bool busy = false;     // removal, growing or a label file in the works
+  std::string busyWhat;  // e.g. "removing bone and table"
+  double progress = 0;   // of the removal
   bool canUndo = false, canRedo = false;
   std::string undoWhat, redoWhat;
-  std::string file;         // the label volume as loaded or saved
+  std::string file;  // the label volume as loaded or saved
   std::string error;
 };
 

@@ -83,10 +83,9 @@ struct SessionEdit {
   friend bool operator==(const SessionEdit&, const SessionEdit&) = default;
 };
 
-using Edit =
-    std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
-                 CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit, LabelFileEdit,
-                 PanelOpenEdit, SessionEdit>;
+using Edit = std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
+                          CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit,
+                          LabelFileEdit, PanelOpenEdit, SessionEdit>;
 
 class Workstation {
  public:

@@ -6,12 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "core/labels.h"
 #include "core/transfer_function.h"
 
 namespace angio {
-
-constexpr int kBoneLabel = 1;   // written by automatic bone removal
-constexpr int kTableLabel = 2;  // written by automatic table removal
 
 // "bone", "table", "label N" for the user's labels.
 std::string defaultLabelName(int label);
