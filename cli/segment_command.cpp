@@ -1,4 +1,5 @@
 // `angioray segment`: automatic bone and table removal (segment/bone_removal.h) to a label volume.
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -9,7 +10,7 @@
 #include "cli/progress_line.h"
 #include "io/centerline_file.h"
 #include "io/input_error.h"
-#include "io/label_volume_file.h"
+#include "render/label_styles.h"
 #include "segment/bone_removal.h"
 
 namespace angio {
@@ -49,7 +50,9 @@ int runSegment(const SegmentOptionsCli& options) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   applyLabels(loaded.volume, result.labels);
-  writeLabelVolume(options.out, loaded.volume);
+  std::array<std::uint64_t, kLabelCount> voxels{};
+  for (int label = 0; label < kLabelCount; ++label) voxels[label] = result.voxelsPerLabel[label];
+  writeLabelFile(options.out, loaded.volume, {}, voxels);
   printCounts(result, loaded.volume);
   std::printf("segmented in %.1f s; wrote %s\n", seconds, options.out.c_str());
   return 0;

@@ -485,6 +485,8 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
     throw std::logic_error("renderFast: the tile classification is of another rotation axis");
   if (!classification.classifies(tables))
     throw std::logic_error("renderFast: the tile classification was made for other TFs");
+  if (params.compositing == Compositing::mip && !classification.hasMaxima())
+    throw std::logic_error("renderFast: MIP needs a tile classification with maxima");
   const auto start = std::chrono::steady_clock::now();
   const SliceTiles& tiles = classification.tiles();
   const bool labels = tables.labelsActive();

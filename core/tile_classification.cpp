@@ -3,49 +3,68 @@
 #include <algorithm>
 #include <bit>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace angio {
 
 namespace {
 
-// The densities a reach of one tile reads as the labels say, and the TFs that classify them.
-struct TileReading {
-  int lo = 0xFFFF, hi = -1;  // empty: lo > hi
-  bool regionTfs = false;    // some sample may use the region's TF
-  std::uint16_t ownTfs = 0;  // labels whose own TF some sample may use
+// Which labels do what, as bit masks over the 16 labels (bit L for label L).
+struct LabelMasks {
+  std::uint16_t hidden = 0;  // read as density 0
+  std::uint16_t own = 0;     // classified with their own TF
 
-  void include(int min, int max) { lo = std::min(lo, min), hi = std::max(hi, max); }
+  explicit LabelMasks(const LabelTables& labels) {
+    for (int label = 1; label < kLabelCount; ++label) {
+      if (labels.hidden(label)) hidden |= std::uint16_t(1u << label);
+      if (labels.ownTf(label)) own |= std::uint16_t(1u << label);
+    }
+  }
 };
 
-TileReading readTile(const TileRanges& r, std::size_t n, const LabelTables& labels) {
-  TileReading reading;
+// The densities one reach of a tile reads as the labels say, and whether the region's TF
+// classifies some of its samples. Empty ranges are stored as [0xFFFF, 0], so the union of ranges
+// is a min and a max without branches.
+// Ints throughout: 16-bit fields written one by one and read back as a whole stall the loop.
+struct TileReading {
+  int lo = 0xFFFF, hi = 0;
+  int regionTfs = 0;  // nonzero: some sample uses the region's TF
+  int ownTfs = 0;     // the present labels with their own TF
+};
+
+// Inlined into the loop over millions of tiles: a call per tile costs more than its work.
+[[gnu::always_inline]] inline TileReading readTile(const TileRanges& r, std::size_t n,
+                                                   const LabelMasks& masks) {
   const std::uint16_t bits = r.labelBits[n];
-  if (bits & 1u) reading.include(r.minDensity[n], r.maxDensity[n]), reading.regionTfs = true;
-  for (std::uint16_t rest = bits & ~1u; rest; rest &= rest - 1) {
-    const int label = std::countr_zero(rest);
-    if (labels.hidden(label)) {
-      reading.include(0, 0);  // cut out: reads -1024 HU, classified with the region's TF
-      reading.regionTfs = true;
-      continue;
-    }
+  const std::uint16_t labelled = bits & ~1u;
+  const std::uint16_t hidden = labelled & masks.hidden;
+  const std::uint16_t shown = labelled & ~masks.hidden;  // read their own densities
+  TileReading reading;
+  reading.lo = r.minDensity[n];
+  reading.hi = r.maxDensity[n];
+  if (shown) {
     // The labelled range is shared by the tile's labels: wider than one label's, never narrower.
-    reading.include(r.labelledMin[n], r.labelledMax[n]);
-    if (labels.ownTf(label)) reading.ownTfs |= std::uint16_t(1u << label);
-    else reading.regionTfs = true;
+    reading.lo = std::min<int>(reading.lo, r.labelledMin[n]);
+    reading.hi = std::max<int>(reading.hi, r.labelledMax[n]);
   }
+  if (hidden) reading.lo = 0;  // cut out: reads -1024 HU, classified with the region's TF
+  reading.ownTfs = shown & masks.own;
+  reading.regionTfs = (bits & 1u) | hidden | (shown & ~masks.own);
   return reading;
 }
 
-bool isVisible(const TileReading& reading, const TfTable& anyRegion, const LabelTables& labels) {
+[[gnu::always_inline]] inline bool isVisible(const TileReading& reading, const TfTable& anyRegion,
+                                             const LabelTables& labels) {
   if (reading.regionTfs && anyRegion.anyVisible(reading.lo, reading.hi)) return true;
-  for (std::uint16_t rest = reading.ownTfs; rest; rest &= rest - 1)
+  for (unsigned rest = unsigned(reading.ownTfs); rest; rest &= rest - 1)
     if (labels.ownTf(std::countr_zero(rest))->anyVisible(reading.lo, reading.hi)) return true;
   return false;
 }
 
+// The largest density a sample can read (0 for an empty reading).
 std::uint16_t largestDensity(const TileReading& reading) {
-  return std::uint16_t(std::max(reading.hi, 0));
+  return std::uint16_t(reading.lo <= reading.hi ? reading.hi : 0);
 }
 
 }  // namespace
@@ -56,33 +75,53 @@ TileClassification::UsedTables TileClassification::usedBy(const RegionTables& ta
           tables.labels};
 }
 
-TileClassification::TileClassification(const SliceTiles& tiles, const RegionTables& tables)
-    : tiles_(&tiles), tables_(usedBy(tables)), visible_(tiles.tileCount(), 0) {
+TileClassification::TileClassification(const SliceTiles& tiles, const RegionTables& tables, bool mip,
+                                       TileClassification* recycle)
+    : tiles_(&tiles), tables_(usedBy(tables)) {
+  if (recycle) {
+    visible_ = std::move(recycle->visible_);
+    cellsMax_ = std::move(recycle->cellsMax_);
+    wideMax_ = std::move(recycle->wideMax_);
+  }
+  visible_.resize(tiles.tileCount());  // every entry is written below
+  if (!tiles.labelled || !mip) cellsMax_ = {}, wideMax_ = {};
   const TfTable anyRegion = visibilityUnion({tables_.focus, tables_.context, tables_.outside});
   if (tiles.labelled) {
-    classifyLabelled(anyRegion, tables.labels ? *tables.labels : LabelTables());
+    const LabelTables& labels = tables.labels ? *tables.labels : LabelTables();
+    if (mip) classifyLabelled<true>(anyRegion, labels);
+    else classifyLabelled<false>(anyRegion, labels);
     return;
   }
   const TileRanges &cells = tiles.cells, &wide = tiles.wide;
-  tbb::parallel_for(std::size_t(0), visible_.size(), [&](std::size_t n) {
-    visible_[n] = std::uint8_t(
-        (anyRegion.anyVisible(cells.minDensity[n], cells.maxDensity[n]) ? kCellsVisible : 0) |
-        (anyRegion.anyVisible(wide.minDensity[n], wide.maxDensity[n]) ? kWideVisible : 0));
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, visible_.size(), 1 << 14),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t n = range.begin(); n != range.end(); ++n)
+          visible_[n] = std::uint8_t(
+              (anyRegion.anyVisible(cells.minDensity[n], cells.maxDensity[n]) ? kCellsVisible : 0) |
+              (anyRegion.anyVisible(wide.minDensity[n], wide.maxDensity[n]) ? kWideVisible : 0));
+      });
 }
 
+template <bool Maxima>
 void TileClassification::classifyLabelled(const TfTable& anyRegion, const LabelTables& labels) {
   const TileRanges &cells = tiles_->cells, &wide = tiles_->wide;
-  cellsMax_.resize(visible_.size());
-  wideMax_.resize(visible_.size());
-  tbb::parallel_for(std::size_t(0), visible_.size(), [&](std::size_t n) {
-    const TileReading cellReading = readTile(cells, n, labels);
-    const TileReading wideReading = readTile(wide, n, labels);
-    visible_[n] = std::uint8_t((isVisible(cellReading, anyRegion, labels) ? kCellsVisible : 0) |
-                               (isVisible(wideReading, anyRegion, labels) ? kWideVisible : 0));
-    cellsMax_[n] = largestDensity(cellReading);
-    wideMax_[n] = largestDensity(wideReading);
-  });
+  if (Maxima) cellsMax_.resize(visible_.size()), wideMax_.resize(visible_.size());
+  const LabelMasks masks(labels);
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, visible_.size(), 1 << 14),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t n = range.begin(); n != range.end(); ++n) {
+          const TileReading cellReading = readTile(cells, n, masks);
+          const TileReading wideReading = readTile(wide, n, masks);
+          visible_[n] = std::uint8_t((isVisible(cellReading, anyRegion, labels) ? kCellsVisible : 0) |
+                                     (isVisible(wideReading, anyRegion, labels) ? kWideVisible : 0));
+          if constexpr (Maxima) {
+            cellsMax_[n] = largestDensity(cellReading);
+            wideMax_[n] = largestDensity(wideReading);
+          }
+        }
+      });
 }
 
 const std::vector<std::uint16_t>& TileClassification::maxDensity(Filter filter) const {

@@ -20,7 +20,12 @@ class TileClassification {
  public:
   // A tile is visible if any TF of `tables` shows a density in it (focus and context count only
   // with regions, as the raycaster renders them). `tiles` and the tables must outlive this.
-  TileClassification(const SliceTiles& tiles, const RegionTables& tables);
+  // `mip`: also each tile's largest density as the labels read it, which MIP needs (tiles of a
+  // volume without labels have theirs already). `recycle` (optional): a classification this one
+  // replaces, whose memory it takes over (fresh memory costs page faults that would double a
+  // re-classification's time).
+  TileClassification(const SliceTiles& tiles, const RegionTables& tables, bool mip = false,
+                     TileClassification* recycle = nullptr);
   TileClassification(const SliceTiles& tiles, const TfTable& table)
       : TileClassification(tiles, singleTable(table)) {}
 
@@ -29,8 +34,9 @@ class TileClassification {
   // One byte per tile: kCellsVisible and kWideVisible (core/slice_tiles.h).
   const std::vector<std::uint8_t>& visible() const { return visible_; }
   // Per tile, the largest density a sample of the filter's reach can read (MIP): hidden labels
-  // read 0.
+  // read 0. Only if hasMaxima().
   const std::vector<std::uint16_t>& maxDensity(Filter filter) const;
+  bool hasMaxima() const { return !tiles_->labelled || !cellsMax_.empty(); }
   // True iff made from these TF table objects (the regions themselves do not matter).
   bool classifies(const RegionTables& tables) const;
 
@@ -43,6 +49,7 @@ class TileClassification {
     friend bool operator==(const UsedTables&, const UsedTables&) = default;
   };
   static UsedTables usedBy(const RegionTables& tables);
+  template <bool Maxima>
   void classifyLabelled(const TfTable& anyRegion, const LabelTables& labels);
 
   const SliceTiles* tiles_;

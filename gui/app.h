@@ -136,7 +136,8 @@ class App {
   // The side panel and status bar (gui/app_panels.cpp): the sections are gui/panel_*.h; these
   // give them what they show and act on what they return.
   void drawSidePanel();
-  bool sectionHeader(const char* title);   // a CollapsingHeader whose open state the session keeps
+  // A CollapsingHeader whose open state the session keeps.
+  bool sectionHeader(const char* title, bool openByDefault = true);
   void noteRect(const std::string& name);  // the last widget's rectangle, for report()
   void drawStatusBar();
   void drawTfSection();

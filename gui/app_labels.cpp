@@ -12,8 +12,6 @@
 #include "core/volume_sampling.h"
 #include "gui/app.h"
 #include "io/input_error.h"
-#include "io/label_volume_file.h"
-#include "io/segmentation_file.h"
 #include "io/volume_reader.h"
 #include "render/label_styles.h"
 #include "segment/bone_removal.h"
@@ -26,22 +24,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr float kClickSlopPx = 3;  // a left press that moved less than this is a click, not a drag
-
-bool isSegmentationFile(const std::string& file) {
-  const std::string name = fs::path(file).filename().string();
-  return name.size() > 9 && name.compare(name.size() - 9, 9, ".seg.nrrd") == 0;
-}
-
-std::vector<SegmentInfo> segmentsOf(const std::vector<LabelStyle>& styles, const LabelCounts& voxels) {
-  std::vector<LabelStyle> named = styles;
-  std::vector<SegmentInfo> segments;
-  for (int label = 1; label <= kMaxLabel; ++label) {
-    if (voxels[label] == 0) continue;
-    const LabelStyle& style = styleOf(named, label);
-    segments.push_back({label, style.name, style.color});
-  }
-  return segments;
-}
 
 // A new label's style: hidden for bone and table (what removal is for), shown for the user's.
 void addStyle(std::vector<LabelStyle>& styles, int label) {
@@ -68,7 +50,8 @@ void App::resetLabels() {
 }
 
 void App::drawLabelsSection() {
-  if (!sectionHeader("Labels")) return;
+  // Closed until opened: the sections below it stay in view on a small screen.
+  if (!sectionHeader("Labels", false)) return;
   LabelsPanelInfo info;
   info.hasVolume = data_.volume.voxelCount() > 0;
   info.voxels = labels_.voxels;
@@ -175,9 +158,7 @@ void App::startLabelRead(const std::string& file) {
 
 void App::saveLabels(const std::string& file) {
   try {
-    if (isSegmentationFile(file))
-      writeSegmentation(file, data_.volume, segmentsOf(doc().tf.labels, labels_.voxels));
-    else writeLabelVolume(file, data_.volume);
+    writeLabelFile(file, data_.volume, doc().tf.labels, labels_.voxels);
     commit(LabelFileEdit{fs::absolute(file).lexically_normal().string()});
     labels_.dirty = false;
     message_ = "saved labels " + file;

@@ -50,12 +50,14 @@ void App::applySession(const Document& session) {
   else openDataset(session.dataset);
 }
 
-bool App::sectionHeader(const char* title) {
+bool App::sectionHeader(const char* title, bool openByDefault) {
   if (const auto pending = panelsToApply_.find(title); pending != panelsToApply_.end()) {
     ImGui::SetNextItemOpen(pending->second, ImGuiCond_Always);
     panelsToApply_.erase(pending);
   }
-  const bool open = ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen);
+  const bool open = ImGui::CollapsingHeader(
+      title, openByDefault ? ImGuiTreeNodeFlags_DefaultOpen : ImGuiTreeNodeFlags_None);
+  noteRect(std::string("section_") + title);
   commit(PanelOpenEdit{title, open});
   return open;
 }

@@ -90,7 +90,7 @@ void drawGrowTool(LabelsPanelUi& ui, const std::vector<LabelStyle>& styles, Widg
   if (ui.target == GrowTarget::unlabel) return;
   ImGui::SetNextItemWidth(220);
   double range[2] = {ui.lowHu, ui.highHu};
-  if (ImGui::DragScalarN("HU range", ImGuiDataType_Double, range, 2, 5.f)) {
+  if (ImGui::DragScalarN("HU range", ImGuiDataType_Double, range, 2, 5.f, nullptr, nullptr, "%.0f")) {
     ui.lowHu = std::clamp(range[0], -1024.0, 3071.0);
     ui.highHu = std::clamp(range[1], ui.lowHu, 3071.0);
   }

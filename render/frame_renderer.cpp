@@ -4,16 +4,20 @@
 
 namespace angio {
 
-void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis) {
+void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
+                            Compositing compositing) {
+  const bool mip = compositing == Compositing::mip;
   if (!tiles_ || tiles_->axis != axis) {
     classification_.reset();
     tiles_.reset();  // free the old tiles before building the new ones
     tiles_ = buildSliceTiles(volume_, axis);
   }
-  if (classification_ && classifiedScene_ == scene) return;
+  if (classification_ && classifiedScene_ == scene && (!mip || classification_->hasMaxima())) return;
   // The classification needs the region TFs only, not the regions: any non-null regions stand
   // for "VesselGlyph" here.
-  classification_.emplace(*tiles_, scene->tables(scene->hasRegions() ? &regions_ : nullptr));
+  std::optional<TileClassification> previous = std::move(classification_);
+  classification_.emplace(*tiles_, scene->tables(scene->hasRegions() ? &regions_ : nullptr), mip,
+                          previous ? &*previous : nullptr);
   classifiedScene_ = scene;
 }
 
@@ -36,7 +40,7 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
     s = {};
     image = renderReference(volume_, tables, params, control.progress);
   } else {
-    prepare(scene, params.axis);
+    prepare(scene, params.axis, params.compositing);
     FastRenderOptions options = techniques;
     options.cancel = control.cancel;
     options.recycle = control.recycle;

@@ -46,7 +46,9 @@ class FrameRenderer {
 
   // Builds the tiles of `axis` and classifies them for `scene` now rather than in the next
   // render (the progressive renderer does this before a request's first level).
-  void prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis);
+  // MIP needs the tiles' maxima as the scene's labels read them (`compositing`).
+  void prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
+               Compositing compositing = Compositing::dvr);
 
   // Memory of the slice tiles (four 16-bit ranges per tile) and their classification, MiB.
   double structureMiB() const;

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "core/voxel.h"
+#include "io/label_volume_file.h"
 #include "io/lowercase.h"
 
 namespace angio {
@@ -49,6 +50,28 @@ LabelStyle& styleOf(std::vector<LabelStyle>& styles, int label) {
     if (style.label == label) return style;
   styles.push_back({label, defaultLabelName(label), LabelMode::main, {}, defaultLabelColor(label)});
   return styles.back();
+}
+
+std::vector<SegmentInfo> segmentsOf(const std::vector<LabelStyle>& styles,
+                                    const std::array<std::uint64_t, kLabelCount>& voxels) {
+  std::vector<LabelStyle> named = styles;
+  std::vector<SegmentInfo> segments;
+  for (int label = 1; label <= kMaxLabel; ++label) {
+    if (voxels[label] == 0) continue;
+    const LabelStyle& style = styleOf(named, label);
+    segments.push_back({label, style.name, style.color});
+  }
+  return segments;
+}
+
+void writeLabelFile(const std::filesystem::path& file, const Volume& volume,
+                    const std::vector<LabelStyle>& styles,
+                    const std::array<std::uint64_t, kLabelCount>& voxels) {
+  const std::string name = file.filename().string();
+  const std::string suffix = ".seg.nrrd";
+  if (name.size() > suffix.size() && lowercase(name.substr(name.size() - suffix.size())) == suffix)
+    writeSegmentation(file, volume, segmentsOf(styles, voxels));
+  else writeLabelVolume(file, volume);
 }
 
 std::vector<LabelStyle> withRemovedShown(std::vector<LabelStyle> styles) {

@@ -2,12 +2,17 @@
 // Editing the label styles of a recipe's TF (rendering model, "Labels"): labels by name or number,
 // a label's mode, and the "show removed" view in which hidden labels render translucent so the
 // user sees what was cut. Shared by the command line and the workstation.
+#include <array>
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/labels.h"
 #include "core/transfer_function.h"
+#include "core/volume.h"
+#include "io/segmentation_file.h"
 
 namespace angio {
 
@@ -20,6 +25,17 @@ std::optional<int> findLabel(const std::vector<LabelStyle>& styles, const std::s
 
 // The style of `label`, added with its default name and color where the list has none.
 LabelStyle& styleOf(std::vector<LabelStyle>& styles, int label);
+
+// The Slicer segments of the labels a volume has (`voxels` per label), named and colored by
+// their styles (or the defaults).
+std::vector<SegmentInfo> segmentsOf(const std::vector<LabelStyle>& styles,
+                                    const std::array<std::uint64_t, kLabelCount>& voxels);
+
+// Writes the volume's labels: a .seg.nrrd as a Slicer segmentation with those segments, any other
+// name as a plain label volume (io/label_volume_file.h). Throws InputError naming the file.
+void writeLabelFile(const std::filesystem::path& file, const Volume& volume,
+                    const std::vector<LabelStyle>& styles,
+                    const std::array<std::uint64_t, kLabelCount>& voxels);
 
 // Hidden labels as translucent ones: each gets an own TF in its color, faint above -500 HU, so
 // the removed structures stay in place as a ghost around what remains.

@@ -155,7 +155,7 @@ void ProgressiveRenderer::workerLoop() {
 
 // Slice tiles per axis (rebuilt when it changes, not cancellable) and tile visibility per scene.
 void ProgressiveRenderer::prepare(const Job& job) {
-  frames_.prepare(job.request.scene, job.request.params.axis);
+  frames_.prepare(job.request.scene, job.request.params.axis, job.request.params.compositing);
 }
 
 // A level whose image the newest frame already shows for the same view and TF is not rendered

@@ -137,8 +137,14 @@ TEST(LabelRendering, AHiddenLabelLeavesNoTileVisible) {
   };
   EXPECT_GT(visibleTiles(shown), 0);
   EXPECT_EQ(visibleTiles(cut), 0);
-  const TileClassification c(tiles, RegionTables{nullptr, nullptr, nullptr, &table, &cut});
+  const TileClassification c(tiles, RegionTables{nullptr, nullptr, nullptr, &table, &cut}, true);
   for (std::uint16_t d : c.maxDensity(Filter::trilinear)) EXPECT_EQ(d, 0);
+  // MIP refuses a classification made without the maxima rather than skip by wrong ones.
+  RenderParams mip;
+  mip.compositing = Compositing::mip;
+  const RegionTables tables{nullptr, nullptr, nullptr, &table, &cut};
+  EXPECT_THROW(renderFast(volume, TileClassification(tiles, tables), tables, mip), std::logic_error);
+  EXPECT_NO_THROW(renderFast(volume, TileClassification(tiles, tables, true), tables, mip));
 }
 
 // The fast raycaster against the reference with labels hidden, with own TFs, and both, over
@@ -158,7 +164,8 @@ TEST(LabelRendering, FastMatchesReferenceWithLabels) {
           const RenderParams p = paramsFor(axis, 12.5 + 37.0 * n++, quality, compositing);
           const RegionTables tables{nullptr, nullptr, nullptr, &table, &labels};
           const Image reference = renderReference(volume, tables, p);
-          const Image fast = renderFast(volume, TileClassification(tiles, tables), tables, p);
+          const TileClassification classification(tiles, tables, compositing == Compositing::mip);
+          const Image fast = renderFast(volume, classification, tables, p);
           EXPECT_LE(maxChannelDifference(fast, reference), 1.f / 255.f)
               << "axis " << toString(axis) << " " << toString(quality) << " mip "
               << (compositing == Compositing::mip) << " angle " << p.angleDeg;
