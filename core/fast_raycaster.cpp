@@ -37,6 +37,7 @@ struct Frame {
   glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
   bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
   bool shareRows = true;
+  bool ownTfs = false;  // some label has its own TF
   // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
   const TfTable* anyRegionTf = nullptr;
 
@@ -238,7 +239,8 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   Lane& lane = b.lanes[l];
   const double t = double(k) * f.view.sampleMm;
   const Region region = Mode::regions ? lane.regions.at(t) : Region::outside;
-  const int label = Mode::labels && !Mode::mip ? b.sampler.label(bundle.fracA[l]) : 0;
+  // Only own TFs need the sample's label; hidden labels are all in the sampler's reads.
+  const int label = Mode::labels && !Mode::mip && f.ownTfs ? b.sampler.label(bundle.fracA[l]) : 0;
   const SampleTable* table = Mode::labels ? f.tables.of(region, label) : f.tables.of(region);
   if (Mode::regions && !table) {
     // A clipped region (VesselGlyph): leap to just before its end. The sample there is
@@ -510,6 +512,7 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.skipGroups = options.skipEmpty && options.skipGroups;
   f.skipTiles = options.skipEmpty && options.skipTiles;
   f.shareRows = options.shareRows;
+  f.ownTfs = f.labels.ownsAny();
   // Cell skipping pays only with several samples per cell: at osd 1 (about one sample per cell)
   // the test and leap cost more than the interpolation they save (`angioray bench` times both).
   f.skipCells = options.skipEmpty && options.skipCells && params.sampling.osd < 0.75;

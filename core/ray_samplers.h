@@ -115,8 +115,10 @@ class TrilinearRaySampler {
   }
   // The nearest corner (nearestCorner in core/volume_sampling.h) as this row sees the cell.
   int label(float fracA) const {
-    const glm::ivec3 near = nearestCorner(rowCell(fracA)) - cached_;
-    return cornerLabels_[corner(near.x, near.y, near.z)];
+    int index = 0;  // corner(dx, dy, dz) has one bit per axis
+    for (int axis = 0; axis < 3; ++axis)
+      index |= int((axis == axis_ ? fracA : cell_.frac[axis]) >= 0.5f) << axis;
+    return cornerLabels_[index];
   }
 
  private:
