@@ -37,6 +37,8 @@ int runSegment(const SegmentOptionsCli& options) {
     centerlines = loadCenterlines(options.centerlines, load);
     checkCenterlinesInside(*centerlines, loaded.volume, load);
   }
+  if (const std::string warning = calibrationWarning(loaded.volume); !warning.empty())
+    printWarning(options.volume + ": " + warning);
   BoneRemovalOptions removal;
   // Neither flag: both, the usual request.
   removal.bone = options.bone || !options.table;

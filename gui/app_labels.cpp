@@ -92,7 +92,7 @@ void App::startBoneRemoval() {
   } catch (const std::exception&) {
     // Centerlines that do not fit the dataset protect nothing; the VesselGlyph panel says why.
   }
-  labels_.error.clear();
+  labels_.error = calibrationWarning(data_.volume);  // shown while it runs, and after
   labels_.jobWhat = "removing bone and table";
   labels_.fileRead.clear();
   labels_.job.start([this, protect = std::move(protect)](JobControl& control) {

@@ -1,6 +1,7 @@
 #include "segment/bone_removal.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
@@ -184,6 +185,15 @@ LabelResult removeBoneAndTable(const Volume& volume, const Centerlines* protect,
     return {.labels = {}, .voxelsPerLabel = {}, .cancelled = true};
   }
   return result;
+}
+
+std::string calibrationWarning(const Volume& volume) {
+  const DensityHistogram histogram = densityHistogram(volume);
+  const std::size_t below =
+      std::accumulate(histogram.begin(), histogram.begin() + densityOfHu(-500), std::size_t(0));
+  if (below * 1000 >= volume.voxelCount()) return "";
+  return "almost no voxel below -500 HU (air, lung): the values may not be calibrated HU, and "
+         "bone removal's HU thresholds may label vessels";
 }
 
 void applyLabels(Volume& volume, const std::vector<std::uint8_t>& labels) {

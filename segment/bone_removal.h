@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "core/labels.h"
@@ -60,6 +61,12 @@ struct LabelResult {
 LabelResult removeBoneAndTable(const Volume& volume, const Centerlines* protect,
                                const BoneRemovalOptions& options = {},
                                const SegmentationProgress& progress = {});
+
+// Why the thresholds (in HU) may not fit the volume, or "": a CT scan always holds air or lung
+// (below -500 HU) around or in the body; a volume with almost none is not calibrated in HU (an
+// MR angiogram, a crop inside the body, a volume scaled on export), and bone found there is not
+// to be trusted.
+std::string calibrationWarning(const Volume& volume);
 
 // Writes labels (one per voxel, as LabelResult::labels) into the volume's label bits.
 void applyLabels(Volume& volume, const std::vector<std::uint8_t>& labels);

@@ -251,5 +251,12 @@ TEST(BoneRemoval, ApplyLabelsWritesTheLabelBitsOnly) {
   EXPECT_EQ(volume.voxels[6], before[6]);
 }
 
+TEST(BoneRemoval, WarnsWhenTheVolumeHoldsNoAirAsUncalibratedDataDoes) {
+  Volume volume = makeVolume({20, 20, 20}, {1, 1, 1}, encodeVoxel(300));
+  EXPECT_NE(calibrationWarning(volume), "");  // e.g. an MR angiogram: nothing near -1000 HU
+  for (int n = 0; n < 400; ++n) volume.voxels[n] = encodeVoxel(-1000);  // 5 % air
+  EXPECT_EQ(calibrationWarning(volume), "");
+}
+
 }  // namespace
 }  // namespace angio
