@@ -192,6 +192,7 @@ class App {
   // The state report's parts (gui/app_report.cpp).
   nlohmann::json dataReport() const;
   nlohmann::json vesselReport() const;
+  nlohmann::json labelsReport() const;
   nlohmann::json cprReport() const;
   nlohmann::json hybridReport() const;
 

@@ -44,7 +44,8 @@ void App::openDataset(const std::string& path) {
 }
 
 bool App::backgroundBusy() const {
-  return load_.running() || seriesJob_.running() || vessel_.load.running() || cprView_.job.running();
+  return load_.running() || seriesJob_.running() || vessel_.load.running() || cprView_.job.running() ||
+         labels_.job.running() || labels_.counting.valid();
 }
 
 void App::pollBackgroundJobs() {

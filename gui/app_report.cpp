@@ -82,8 +82,18 @@ nlohmann::json App::report() const {
         {"message", message_},
         {"data", dataReport()},
         {"vessel_glyph", vesselReport()},
+        {"labels", labelsReport()},
         {"layout", layout}}},
   };
+}
+
+nlohmann::json App::labelsReport() const {
+  return {{"voxels", labels_.counted ? nlohmann::json(labels_.voxels) : nlohmann::json(nullptr)},
+          {"busy", labels_.job.running()},
+          {"dirty", labels_.dirty},
+          {"undo", labels_.undo.size()},
+          {"redo", labels_.redo.size()},
+          {"error", labels_.error}};
 }
 
 nlohmann::json App::dataReport() const {

@@ -148,6 +148,7 @@ LabelsPanelResult drawLabelsPanel(const Document& document, LabelsPanelUi& ui,
   drawGrowTool(ui, styles, rects);
   ImGui::BeginDisabled(!info.canUndo || info.busy);
   result.undo = ImGui::Button("Undo##labels");
+  noteRect(rects, "labels_undo");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && info.canUndo)
     ImGui::SetTooltip("undo %s", info.undoWhat.c_str());

@@ -57,6 +57,9 @@ Document unusualSession() {
   s.tf.modulators = {0.75, 35};
   s.tf.mipWindow = 900;
   s.tf.mipLevel = 320;
+  s.tf.labels = {{1, "bone", LabelMode::hidden, {}, {0.9f, 0.8f, 0.7f}},
+                 {4, "left kidney", LabelMode::tf, {{0, {0, 1, 0}, 0.25}}, {0, 1, 0}}};
+  s.labels = {"/data/cta/aorta-labels.seg.nrrd", true};
   s.tfPreset = "";
   s.mode = Compositing::mip;
   s.shading = {false, 0.45, 0.55};
@@ -133,6 +136,8 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_DOUBLE_EQ(loaded.tf.modulators.huShift, 35);
   EXPECT_DOUBLE_EQ(loaded.tf.mipWindow, 900);
   EXPECT_DOUBLE_EQ(loaded.tf.mipLevel, 320);
+  EXPECT_EQ(loaded.tf.labels, saved.tf.labels);
+  EXPECT_EQ(loaded.labels, saved.labels);
   EXPECT_EQ(loaded.mode, Compositing::mip);
   EXPECT_FALSE(loaded.shading.enabled);
   EXPECT_DOUBLE_EQ(loaded.shading.ka, 0.45);

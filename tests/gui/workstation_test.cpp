@@ -155,6 +155,31 @@ TEST(GuiWorkstation, ALoadedCenterlineFileIsRecordedAndNothingElseChanges) {
   EXPECT_EQ(workstation.document(), start);
 }
 
+TEST(GuiWorkstation, LabelStylesLiveInTheMainTfAndAPresetWithoutLabelsKeepsThem) {
+  Workstation workstation;
+  const std::vector<LabelStyle> styles = {{1, "bone", LabelMode::hidden, {}, {1, 1, 1}}};
+  workstation.apply(LabelStylesEdit{styles, true});
+  EXPECT_EQ(workstation.document().tf.labels, styles);
+  EXPECT_TRUE(workstation.document().labels.showRemoved);
+  // A preset (no labels) replaces the points, not the labels: removed bone stays removed.
+  workstation.apply(TfChange{TfTarget::main, twoPointTf(200), "cta-vessels"});
+  EXPECT_EQ(workstation.document().tf.points, twoPointTf(200).points);
+  EXPECT_EQ(workstation.document().tf.labels, styles);
+  // A TF file with labels brings its own.
+  TransferFunction withLabels = twoPointTf(300);
+  withLabels.labels = {{3, "kidney", LabelMode::tf, twoPointTf(0).points, {0, 1, 0}}};
+  workstation.apply(TfChange{TfTarget::main, withLabels, ""});
+  EXPECT_EQ(workstation.document().tf.labels, withLabels.labels);
+}
+
+TEST(GuiWorkstation, ANewDatasetDropsTheOldLabelFile) {
+  Workstation workstation;
+  workstation.apply(LabelFileEdit{"/data/a-labels.seg.nrrd"});
+  EXPECT_EQ(workstation.document().labels.file, "/data/a-labels.seg.nrrd");
+  workstation.apply(DatasetOpened{"/data/b.nrrd"});
+  EXPECT_EQ(workstation.document().labels.file, "");
+}
+
 TEST(GuiWorkstation, EachTfTargetKeepsItsOwnUndoStack) {
   TfTargets targets;
   EXPECT_EQ(targets.editing(), TfTarget::main);

@@ -1,0 +1,108 @@
+// The Labels section end to end in the headless app: labels read at start and counted, automatic
+// removal hides bone and table, undo gives the labels back, a saved .seg.nrrd reads back the same.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/phantom_folder_test.h"
+
+namespace angio {
+namespace {
+
+using Json = nlohmann::json;
+using test_support::runAngioray;
+
+const std::string kWindow = " --size 1000x1400 --timeout 120";
+
+std::string middleOf(const Json& rect) {
+  return "[" + std::to_string((rect[0].get<float>() + rect[2].get<float>()) / 2) + ", " +
+         std::to_string((rect[1].get<float>() + rect[3].get<float>()) / 2) + "]";
+}
+
+class GuiLabels : public test_support::PhantomFolderTest {
+ protected:
+  const char* folderPrefix() const override { return "gui-labels"; }
+  void SetUp() override {
+    PhantomFolderTest::SetUp();
+    const auto truth =
+        runAngioray("phantom " + file("p.nrrd") + " --size 96x96x200 --labels " + file("truth.nrrd"));
+    ASSERT_EQ(truth.exitCode, 0) << truth.output;
+  }
+  test_support::ProgramRun run(const std::string& steps, const std::string& extra = "") {
+    std::ofstream(dir / "script.json") << steps;
+    return runAngioray("gui " + file("p.nrrd") + " --headless" + kWindow + extra + " --script " +
+                       file("script.json"));
+  }
+  // The layout with the Labels section open (it starts closed).
+  Json openLayout(const std::string& extra) {
+    auto first = run(R"([{"wait_level": "high"}, {"state": ")" + file("closed.json") + "\"}]", extra);
+    EXPECT_EQ(first.exitCode, 0) << first.output;
+    const Json header = readJson("closed.json")["runtime"]["layout"]["section_Labels"];
+    openClick = R"({"click": )" + middleOf(header) + R"(}, {"wait_ms": 100})";
+    auto second =
+        run("[" + openClick + R"(, {"wait_level": "high"}, {"state": ")" + file("open.json") + "\"}]",
+            extra);
+    EXPECT_EQ(second.exitCode, 0) << second.output;
+    return readJson("open.json")["runtime"]["layout"];
+  }
+  std::string openClick;
+};
+
+TEST_F(GuiLabels, LabelsReadAtStartAreCountedRemovalHidesBoneAndTableAndUndoGivesThemBack) {
+  const std::string labels = " --labels " + file("truth.nrrd");
+  const Json layout = openLayout(labels);
+  const Json start = readJson("open.json");
+  const Json& counted = start["runtime"]["labels"]["voxels"];
+  ASSERT_FALSE(counted.is_null());
+  EXPECT_GT(counted[1].get<double>(), 0);  // bone
+  EXPECT_GT(counted[2].get<double>(), 0);  // table
+  EXPECT_FALSE(start["runtime"]["labels"]["dirty"].get<bool>());
+  EXPECT_NE(start["state"]["labels"]["file"].get<std::string>().find("truth.nrrd"), std::string::npos);
+
+  const auto removal = run("[" + openClick + R"(, {"wait_level": "high"}, {"click": )" +
+                               middleOf(layout["labels_remove_bone"]) +
+                               R"(}, {"wait_ms": 300}, {"wait_level": "high"}, {"state": ")" +
+                               file("removed.json") + "\"}]",
+                           labels);
+  ASSERT_EQ(removal.exitCode, 0) << removal.output;
+  const Json removed = readJson("removed.json");
+  // Two steps to undo: reading the file at start, then the removal.
+  EXPECT_EQ(removed["runtime"]["labels"]["undo"], 2) << removed["runtime"]["labels"];
+  EXPECT_TRUE(removed["runtime"]["labels"]["dirty"].get<bool>());
+  const Json& styles = removed["state"]["transfer_function"]["labels"];
+  ASSERT_GE(styles.size(), 2u) << styles;
+  for (const Json& style : styles) EXPECT_EQ(style["mode"], "hidden") << style;
+
+  // Undo after the removal gives back the file's labels, voxel for voxel in the counts.
+  const auto undone = run("[" + openClick + R"(, {"wait_level": "high"}, {"click": )" +
+                              middleOf(layout["labels_remove_bone"]) +
+                              R"(}, {"wait_ms": 300}, {"wait_level": "high"}, {"click": )" +
+                              middleOf(layout["labels_undo"]) +
+                              R"(}, {"wait_level": "high"}, {"state": ")" + file("undone.json") + "\"}]",
+                          labels);
+  ASSERT_EQ(undone.exitCode, 0) << undone.output;
+  const Json after = readJson("undone.json")["runtime"]["labels"];
+  EXPECT_EQ(after["voxels"], counted) << after;
+  EXPECT_EQ(after["redo"], 1);
+}
+
+TEST_F(GuiLabels, SavedSegmentationReadsBackWithTheSameCounts) {
+  const std::string labels = " --labels " + file("truth.nrrd");
+  const Json layout = openLayout(labels);
+  const Json counts = readJson("open.json")["runtime"]["labels"]["voxels"];
+  const auto save = run("[" + openClick + R"(, {"wait_level": "high"}, {"click": )" +
+                            middleOf(layout["labels_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" +
+                            file("saved.seg.nrrd") + R"("}, {"key": "Enter"}, {"click": )" +
+                            middleOf(layout["labels_save"]) + R"(}, {"wait_ms": 100}])",
+                        labels);
+  ASSERT_EQ(save.exitCode, 0) << save.output;
+  ASSERT_TRUE(std::filesystem::exists(file("saved.seg.nrrd")));
+  openLayout(" --labels " + file("saved.seg.nrrd"));
+  EXPECT_EQ(readJson("open.json")["runtime"]["labels"]["voxels"], counts);
+}
+
+}  // namespace
+}  // namespace angio
