@@ -220,21 +220,19 @@ TEST(BoneRemoval, ReportsProgressUpToOne) {
 }
 
 TEST(BoneRemoval, CancelReturnsPromptlyWithNoLabels) {
+  // Promptly, measured in work rather than time: once cancelled a fifth of the way, the run stops
+  // within the step it is in (no progress beyond half) and returns no labels.
   const PhantomCase c = phantomCase({128, 128, 300});
   std::atomic<bool> cancel{false};
-  std::chrono::steady_clock::time_point cancelledAt;
-  const auto cancelHalfway = [&](double fraction) {
-    if (fraction >= 0.2 && !cancel) {
-      cancelledAt = std::chrono::steady_clock::now();
-      cancel = true;
-    }
+  double furthest = 0;
+  const auto cancelAtAFifth = [&](double fraction) {
+    if (cancel) furthest = std::max(furthest, fraction);
+    if (fraction >= 0.2) cancel = true;
   };
-  const LabelResult result = removeBoneAndTable(c.input, nullptr, {}, {cancelHalfway, &cancel});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - cancelledAt).count();
+  const LabelResult result = removeBoneAndTable(c.input, nullptr, {}, {cancelAtAFifth, &cancel});
   EXPECT_TRUE(result.cancelled);
   EXPECT_TRUE(result.labels.empty());
-  EXPECT_LT(seconds, 1.0);
+  EXPECT_LT(furthest, 0.5);
   // Cancelled before it starts: nothing happens at all.
   const std::atomic<bool> already{true};
   EXPECT_TRUE(removeBoneAndTable(c.input, nullptr, {}, {{}, &already}).cancelled);
