@@ -17,6 +17,6 @@ ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
 # run in Release.
 "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DANGIORAY_SANITIZE=ON -- core_tests vessel_tests io_tests phantom_tests segment_tests render_tests
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions="$root/tests/ubsan.supp" \
 LSAN_OPTIONS=suppressions="$root/tests/lsan.supp" \
   ctest --test-dir "$root/build-asan" --output-on-failure -j"$jobs" -E '(gui|cli)_tests_NOT_BUILT'
