@@ -25,6 +25,7 @@
 #include "gui/latency_trace.h"
 #include "render/series_export.h"
 #include "gui/app_cpr.h"
+#include "gui/app_export.h"
 #include "gui/app_labels.h"
 #include "gui/app_vessel.h"
 #include "gui/panel_export.h"
@@ -182,6 +183,7 @@ class App {
   void changeLabels(const LabelChange& change, bool undo);  // stops the renderer meanwhile
   void resetLabels();                   // a new dataset: its own labels, counted anew
   std::string exportLabelFile() const;  // the label file exports name ("" = none or unsaved)
+  std::optional<UnsavedLabels> unsavedLabels() const;  // labels an export must write beside it
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();
   void drawCprView();

@@ -1,9 +1,12 @@
 #pragma once
 // "Export image": the current view rendered at the high level's sampling with a chosen image
 // sampling distance (e.g. 0.25 for print), as the window shows it (render/export.h writes it).
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "gui/document.h"
+#include "gui/label_change.h"
 #include "render/recipe_json.h"
 
 namespace angio {
@@ -12,5 +15,16 @@ namespace angio {
 // sampling with image sampling distance `isd`; plain DVR/MIP (the app adds its VesselGlyph and
 // hybrid recipes when it shows them).
 RenderRecipe exportSidecar(const Document& state, const std::string& dataset, double isd);
+
+// Labels changed since they were loaded or saved: an export writes them beside itself, so its
+// sidecar names a label file that reproduces the image (`render --params`).
+struct UnsavedLabels {
+  std::vector<LabelStyle> styles;
+  LabelCounts voxels{};
+};
+
+// Writes `labels` to `file` (a .seg.nrrd) and makes `recipe` name it.
+void saveLabelsFor(RenderRecipe& recipe, const Volume& volume, const UnsavedLabels& labels,
+                   const std::filesystem::path& file);
 
 }  // namespace angio

@@ -215,6 +215,11 @@ void App::changeLabels(const LabelChange& change, bool undo) {
   renderer_ = makeRenderer();
 }
 
+std::optional<UnsavedLabels> App::unsavedLabels() const {
+  if (!labels_.dirty) return std::nullopt;
+  return UnsavedLabels{doc().tf.labels, labels_.voxels};
+}
+
 std::string App::exportLabelFile() const {
   if (labels_.dirty || doc().labels.file.empty()) return "";
   return doc().labels.file;

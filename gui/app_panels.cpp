@@ -44,10 +44,12 @@ void App::drawExportSection() {
   export_.cancel = std::make_shared<std::atomic<bool>>(false);
   export_.started = Clock::now();
   export_.job =
-      std::async(std::launch::async, [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
-                                      path = export_.ui.path, cancel = export_.cancel] {
-        return exportView(data_.volume, centerlines, recipe, path, cancel.get());
-      });
+      std::async(std::launch::async,
+                 [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
+                  path = export_.ui.path, cancel = export_.cancel, labels = unsavedLabels()]() mutable {
+                   if (labels) saveLabelsFor(recipe, data_.volume, *labels, path + ".labels.seg.nrrd");
+                   return exportView(data_.volume, centerlines, recipe, path, cancel.get());
+                 });
   message_ = "exporting " + export_.ui.path;
 }
 

@@ -1,5 +1,7 @@
 // "Export rotation series" in the Export section of App: the settings (gui/panel_export.h), and
 // the series rendered by exportRotationSeries (render/series_export.h) in a BackgroundJob.
+#include <filesystem>
+
 #include "gui/app.h"
 #include "gui/app_export.h"
 #include "gui/panel_export.h"
@@ -17,13 +19,18 @@ void App::drawSeriesExport() {
   if (requests.cancel) seriesJob_.cancel();
   if (!requests.start) return;
   seriesJob_.start([this, base = exportRecipe(), centerlines = exportCenterlines(), spec = series_.spec,
-                    folder = series_.folder](JobControl& control) {
+                    folder = series_.folder, labels = unsavedLabels()](JobControl& control) {
+    RenderRecipe recipe = base;
+    if (labels) {
+      std::filesystem::create_directories(folder);
+      saveLabelsFor(recipe, data_.volume, *labels, std::filesystem::path(folder) / "labels.seg.nrrd");
+    }
     SeriesCallbacks callbacks;
     callbacks.cancel = &control.cancel;
     callbacks.progress = [&control](int done, int total) {
       control.progress.store(double(done) / total);
     };
-    return exportRotationSeries(data_.volume, centerlines, base, spec, folder, callbacks);
+    return exportRotationSeries(data_.volume, centerlines, recipe, spec, folder, callbacks);
   });
   message_ = "exporting a rotation series to " + series_.folder;
 }

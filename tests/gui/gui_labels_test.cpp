@@ -2,6 +2,7 @@
 // removal hides bone and table, undo gives the labels back, a saved .seg.nrrd reads back the same.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -102,6 +103,34 @@ TEST_F(GuiLabels, SavedSegmentationReadsBackWithTheSameCounts) {
   ASSERT_TRUE(std::filesystem::exists(file("saved.seg.nrrd")));
   openLayout(" --labels " + file("saved.seg.nrrd"));
   EXPECT_EQ(readJson("open.json")["runtime"]["labels"]["voxels"], counts);
+}
+
+TEST_F(GuiLabels, AnExportWithUnsavedLabelsWritesThemBesideItAndItsSidecarRendersTheSameBytes) {
+  const std::string labels = " --labels " + file("truth.nrrd");
+  const Json layout = openLayout(labels);
+  // Give a piece back (the labels change and are not saved), then export the view.
+  const auto exported = run(
+      "[" + openClick + R"(, {"wait_level": "high"}, {"click": )" +
+          middleOf(layout["labels_remove_bone"]) +
+          R"(}, {"wait_ms": 300}, {"wait_level": "high"}, {"click": )" +
+          middleOf(layout["export_path"]) + R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("view.png") +
+          R"("}, {"key": "Enter"}, {"click": )" + middleOf(layout["export_button"]) +
+          R"(}, {"wait_level": "high"}, {"state": ")" + file("exported.json") + "\"}]",
+      labels);
+  ASSERT_EQ(exported.exitCode, 0) << exported.output;
+  ASSERT_TRUE(readJson("exported.json")["runtime"]["labels"]["dirty"].get<bool>());
+  ASSERT_TRUE(std::filesystem::exists(file("view.png")))
+      << readJson("exported.json")["runtime"]["message"];
+  const Json sidecar = readJson("view.png.json");
+  EXPECT_EQ(sidecar["labels"], file("view.png.labels.seg.nrrd"));
+  ASSERT_TRUE(std::filesystem::exists(file("view.png.labels.seg.nrrd")));
+  const auto again =
+      runAngioray("render --params " + file("view.png.json") + " -o " + file("again.png"));
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  std::ifstream a(file("view.png"), std::ios::binary), b(file("again.png"), std::ios::binary);
+  const std::string first{std::istreambuf_iterator<char>(a), {}},
+      second{std::istreambuf_iterator<char>(b), {}};
+  EXPECT_EQ(first, second);
 }
 
 }  // namespace
