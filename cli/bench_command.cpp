@@ -72,11 +72,7 @@ int runGlyphIntervalBench(const BenchOptionsCli& options, const Volume& volume) 
 // The styles of the label rows: each of `hide` (default: bone) hidden.
 std::vector<LabelStyle> hiddenLabels(const std::vector<std::string>& hide) {
   std::vector<LabelStyle> styles;
-  for (const std::string& name : hide.empty() ? std::vector<std::string>{"bone"} : hide) {
-    const std::optional<int> label = findLabel(styles, name);
-    if (!label) throw std::invalid_argument("--hide " + name + ": no such label (bone, table, 1-15)");
-    styleOf(styles, *label).mode = LabelMode::hidden;
-  }
+  hideLabels(styles, hide.empty() ? std::vector<std::string>{"bone"} : hide);
   return styles;
 }
 

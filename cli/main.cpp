@@ -118,7 +118,10 @@ void addSegment(CLI::App& app, angio::SegmentOptionsCli& o) {
   cmd->add_option("--labels", o.labels, "Existing label volume on the same grid (user labels kept)");
   cmd->add_option("--centerlines", o.centerlines,
                   "Centerlines (.vtp, .mrk.json, .csv) whose lumen never becomes bone");
-  cmd->add_option("--out,-o", o.out, "Output label volume (uint8; .nrrd, .mha, .nii.gz)")->required();
+  cmd->add_option("--out,-o", o.out,
+                  "Output labels: .seg.nrrd (3D Slicer, named segments) or a uint8 label volume "
+                  "(.nrrd, .mha, .nii.gz)")
+      ->required();
 }
 
 void addBench(CLI::App& app, angio::BenchOptionsCli& o) {

@@ -44,16 +44,10 @@ std::string absolutePath(const std::string& path) {
   return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
 }
 
-void hideLabels(const RenderOptions& o, std::vector<LabelStyle>& styles) {
+void applyLabelOptions(const RenderOptions& o, std::vector<LabelStyle>& styles) {
   if (!o.hide.empty() && o.labels.empty())
     throw std::invalid_argument("--hide needs --labels (a label volume)");
-  for (const std::string& name : o.hide) {
-    const std::optional<int> label = findLabel(styles, name);
-    if (!label)
-      throw std::invalid_argument("--hide " + name +
-                                  ": no such label (bone, table, 1-15 or a name from the TF's labels)");
-    styleOf(styles, *label).mode = LabelMode::hidden;
-  }
+  hideLabels(styles, o.hide);
   if (o.showRemoved) styles = withRemovedShown(std::move(styles));
 }
 
@@ -69,7 +63,7 @@ RenderRecipe sidecarFrom(const RenderOptions& o) {
   s.quality = parseQuality(o.quality);
   s.raycaster = o.reference ? Raycaster::reference : Raycaster::fast;
   s.tf = loadPresetOrFile(o.tf);
-  hideLabels(o, s.tf.labels);
+  applyLabelOptions(o, s.tf.labels);
   s.params = paramsFrom(o, s.tf);
   return s;
 }

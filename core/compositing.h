@@ -40,6 +40,8 @@ struct RegionTables {
 
   // True iff some label renders differently from unlabelled voxels.
   bool labelsActive() const { return labels && labels->active(); }
+  // How voxels read: hidden labels as density 0 (none without labels).
+  MaskedDensity density() const { return labels ? labels->density() : LabelTables().density(); }
 };
 
 inline RegionTables singleTable(const TfTable& table) { return {nullptr, nullptr, nullptr, &table}; }

@@ -240,7 +240,9 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   const double t = double(k) * f.view.sampleMm;
   const Region region = Mode::regions ? lane.regions.at(t) : Region::outside;
   // Only own TFs need the sample's label; hidden labels are all in the sampler's reads.
-  const int label = Mode::labels && !Mode::mip && f.ownTfs ? b.sampler.label(bundle.fracA[l]) : 0;
+  int label = 0;
+  if constexpr (Mode::labels && !Mode::mip)
+    if (f.ownTfs) label = b.sampler.label(bundle.fracA[l]);
   const SampleTable* table = Mode::labels ? f.tables.of(region, label) : f.tables.of(region);
   if (Mode::regions && !table) {
     // A clipped region (VesselGlyph): leap to just before its end. The sample there is

@@ -25,7 +25,7 @@ std::optional<PickedPoint> pickPoint(const Volume& volume, const RegionTables& t
   const ViewGeometry view = makeViewGeometry(volume, params);
   const RegionTables outsideOnly{nullptr, nullptr, nullptr, tables.outside, tables.labels};
   const FrameTables frame = frameTables(outsideOnly, params.sampling.osd);
-  const MaskedDensity read = tables.labels ? tables.labels->density() : LabelTables().density();
+  const MaskedDensity read = tables.density();
   const RayScene scene{volume, view, frame, read, params};
   const glm::dvec3 origin = originAt(view, imagePoint);
   if (params.compositing == Compositing::mip) {

@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include <glm/glm.hpp>
 
@@ -115,6 +116,7 @@ class TrilinearRaySampler {
   }
   // The nearest corner (nearestCorner in core/volume_sampling.h) as this row sees the cell.
   int label(float fracA) const {
+    static_assert(!std::is_same_v<Read, PlainDensity>, "labels are read only on the labelled path");
     int index = 0;  // corner(dx, dy, dz) has one bit per axis
     for (int axis = 0; axis < 3; ++axis)
       index |= int((axis == axis_ ? fracA : cell_.frac[axis]) >= 0.5f) << axis;
@@ -169,7 +171,9 @@ class TrilinearRaySampler {
           const Voxel v = base[dx * steps_.x + dy * steps_.y + dz * steps_.z];
           const int d = read_(v);
           corners_[corner(dx, dy, dz)] = float(d);
-          cornerLabels_[corner(dx, dy, dz)] = std::uint8_t(labelOf(v));
+          // Labels pick TFs only on the labelled path; the plain one does not pay for them.
+          if constexpr (!std::is_same_v<Read, PlainDensity>)
+            cornerLabels_[corner(dx, dy, dz)] = std::uint8_t(labelOf(v));
           lo = std::min(lo, d);
           hi = std::max(hi, d);
         }

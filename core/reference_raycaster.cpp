@@ -36,8 +36,7 @@ Image renderReference(const Volume& volume, const RegionTables& regionTables, co
   const ViewGeometry view = makeViewGeometry(volume, params);
   Image image = makeImage(view.width, view.height);
   const FrameTables tables = frameTables(regionTables, params.sampling.osd);
-  const MaskedDensity read =
-      regionTables.labels ? regionTables.labels->density() : LabelTables().density();
+  const MaskedDensity read = regionTables.density();
   const RayScene scene{volume, view, tables, read, params};
   std::atomic<int> rowsDone{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const tbb::blocked_range<int>& rows) {

@@ -1,6 +1,7 @@
 #include "render/label_styles.h"
 
 #include <charconv>
+#include <stdexcept>
 
 #include "core/voxel.h"
 #include "io/label_volume_file.h"
@@ -50,6 +51,16 @@ LabelStyle& styleOf(std::vector<LabelStyle>& styles, int label) {
     if (style.label == label) return style;
   styles.push_back({label, defaultLabelName(label), LabelMode::main, {}, defaultLabelColor(label)});
   return styles.back();
+}
+
+void hideLabels(std::vector<LabelStyle>& styles, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    const std::optional<int> label = findLabel(styles, name);
+    if (!label)
+      throw std::invalid_argument("--hide " + name +
+                                  ": no such label (bone, table, 1-15 or a name from the TF's labels)");
+    styleOf(styles, *label).mode = LabelMode::hidden;
+  }
 }
 
 std::vector<SegmentInfo> segmentsOf(const std::vector<LabelStyle>& styles,

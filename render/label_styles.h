@@ -26,6 +26,10 @@ std::optional<int> findLabel(const std::vector<LabelStyle>& styles, const std::s
 // The style of `label`, added with its default name and color where the list has none.
 LabelStyle& styleOf(std::vector<LabelStyle>& styles, int label);
 
+// Hides each label `names` names (as findLabel reads them), adding a style where there is none.
+// Throws std::invalid_argument ("--hide NAME: no such label ...") for one that names no label.
+void hideLabels(std::vector<LabelStyle>& styles, const std::vector<std::string>& names);
+
 // The Slicer segments of the labels a volume has (`voxels` per label), named and colored by
 // their styles (or the defaults).
 std::vector<SegmentInfo> segmentsOf(const std::vector<LabelStyle>& styles,

@@ -3,23 +3,18 @@
 // again; bad label input gets one line naming the file.
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <OpenImageIO/imagebuf.h>
 #include <gtest/gtest.h>
 
 #include "tests/support/phantom_folder_test.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
 using test_support::runAngioray;
-
-std::string bytesOf(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // The decoded pixels (the file's metadata names the label file, the pixels do not).
 std::vector<unsigned char> pixelsOf(const std::string& png) {
@@ -36,18 +31,13 @@ int lineCount(const std::string& text) { return int(std::count(text.begin(), tex
 class LabelsCli : public test_support::PhantomFolderTest {
  protected:
   const char* folderPrefix() const override { return "labels-cli"; }
-  void SetUp() override {
-    PhantomFolderTest::SetUp();
-    const auto run =
-        runAngioray("phantom " + file("p.nrrd") + " --size 96x96x200 --labels " + file("truth.nrrd"));
-    ASSERT_EQ(run.exitCode, 0) << run.output;
-  }
+  bool withLabels() const override { return true; }
   std::string render(const std::string& out, const std::string& extra) {
     const auto run =
-        runAngioray("render " + file("p.nrrd") + " --quality medium --tf cta-vessels-bone -o " +
+        runAngioray("render " + file("phantom.nrrd") + " --quality medium --tf cta-vessels-bone -o " +
                     file(out) + " " + extra);
     EXPECT_EQ(run.exitCode, 0) << run.output;
-    return bytesOf(file(out));
+    return test_support::fileContents(file(out));
   }
 };
 
@@ -66,14 +56,14 @@ TEST_F(LabelsCli, HidingBoneChangesTheImageAndTheSidecarRendersItAgainByteForByt
   const auto again =
       runAngioray("render --params " + file("hidden.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
-  EXPECT_EQ(bytesOf(file("again.png")), hidden);
+  EXPECT_EQ(test_support::fileContents(file("again.png")), hidden);
 }
 
 TEST_F(LabelsCli, SegmentWritesLabelsThatRenderLikeTheGroundTruthsAndSlicerSegmentations) {
-  const auto run = runAngioray("segment " + file("p.nrrd") + " --out " + file("auto.seg.nrrd"));
+  const auto run = runAngioray("segment " + file("phantom.nrrd") + " --out " + file("auto.seg.nrrd"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   // The header of a Slicer segmentation names the segments.
-  const std::string header = bytesOf(file("auto.seg.nrrd")).substr(0, 4000);
+  const std::string header = test_support::fileContents(file("auto.seg.nrrd")).substr(0, 4000);
   EXPECT_NE(header.find("Segment0_Name:=bone"), std::string::npos) << header.substr(0, 600);
   const std::string hidden = render("auto.png", "--labels " + file("auto.seg.nrrd") + " --hide bone");
   EXPECT_NE(hidden, render("none.png", ""));
@@ -87,17 +77,18 @@ TEST_F(LabelsCli, BadLabelInputIsOneLineNamingTheFile) {
        {std::pair{file("small-labels.nrrd"), std::string("not on the volume's grid")},
         {file("missing.nrrd"), std::string("does not exist")}}) {
     const auto run =
-        runAngioray("render " + file("p.nrrd") + " --labels " + labels + " -o " + file("x.png"));
+        runAngioray("render " + file("phantom.nrrd") + " --labels " + labels + " -o " + file("x.png"));
     EXPECT_NE(run.exitCode, 0);
     EXPECT_EQ(lineCount(run.output), 1) << run.output;
     EXPECT_NE(run.output.find(labels), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(problem), std::string::npos) << run.output;
   }
-  const auto unknown = runAngioray("render " + file("p.nrrd") + " --labels " + file("truth.nrrd") +
+  const auto unknown = runAngioray("render " + file("phantom.nrrd") + " --labels " + file("truth.nrrd") +
                                    " --hide kidney -o " + file("x.png"));
   EXPECT_NE(unknown.exitCode, 0);
   EXPECT_NE(unknown.output.find("kidney"), std::string::npos) << unknown.output;
-  const auto noLabels = runAngioray("render " + file("p.nrrd") + " --hide bone -o " + file("x.png"));
+  const auto noLabels =
+      runAngioray("render " + file("phantom.nrrd") + " --hide bone -o " + file("x.png"));
   EXPECT_NE(noLabels.exitCode, 0);
   EXPECT_NE(noLabels.output.find("--labels"), std::string::npos) << noLabels.output;
   EXPECT_FALSE(std::filesystem::exists(file("x.png")));

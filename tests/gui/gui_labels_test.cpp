@@ -2,13 +2,13 @@
 // removal hides bone and table, undo gives the labels back, a saved .seg.nrrd reads back the same.
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/support/phantom_folder_test.h"
+#include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
@@ -26,15 +26,10 @@ std::string middleOf(const Json& rect) {
 class GuiLabels : public test_support::PhantomFolderTest {
  protected:
   const char* folderPrefix() const override { return "gui-labels"; }
-  void SetUp() override {
-    PhantomFolderTest::SetUp();
-    const auto truth =
-        runAngioray("phantom " + file("p.nrrd") + " --size 96x96x200 --labels " + file("truth.nrrd"));
-    ASSERT_EQ(truth.exitCode, 0) << truth.output;
-  }
+  bool withLabels() const override { return true; }
   test_support::ProgramRun run(const std::string& steps, const std::string& extra = "") {
     std::ofstream(dir / "script.json") << steps;
-    return runAngioray("gui " + file("p.nrrd") + " --headless" + kWindow + extra + " --script " +
+    return runAngioray("gui " + file("phantom.nrrd") + " --headless" + kWindow + extra + " --script " +
                        file("script.json"));
   }
   // The layout with the Labels section open (it starts closed).
@@ -127,10 +122,7 @@ TEST_F(GuiLabels, AnExportWithUnsavedLabelsWritesThemBesideItAndItsSidecarRender
   const auto again =
       runAngioray("render --params " + file("view.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
-  std::ifstream a(file("view.png"), std::ios::binary), b(file("again.png"), std::ios::binary);
-  const std::string first{std::istreambuf_iterator<char>(a), {}},
-      second{std::istreambuf_iterator<char>(b), {}};
-  EXPECT_EQ(first, second);
+  EXPECT_EQ(test_support::fileContents(file("view.png")), test_support::fileContents(file("again.png")));
 }
 
 }  // namespace
