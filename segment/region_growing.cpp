@@ -4,7 +4,6 @@
 #include <limits>
 
 #include <itkBinaryFillholeImageFilter.h>
-#include <itkCommand.h>
 #include <itkConnectedThresholdImageFilter.h>
 #include <itkImageAdaptor.h>
 #include <itkImageRegionConstIteratorWithIndex.h>
@@ -13,6 +12,7 @@
 #include <itkRegionOfInterestImageFilter.h>
 
 #include "core/voxel.h"
+#include "vessel/itk_cancel.h"
 
 namespace angio {
 
@@ -57,29 +57,6 @@ class LabelOnly {
   ExternalType Get(const InternalType& voxel) const { return labelOf(voxel); }
   bool operator!=(const LabelOnly&) const { return false; }
 };
-
-// Aborts a filter from its progress events once `cancel` is set.
-void abortOnCancel(itk::ProcessObject& filter, const std::atomic<bool>* cancel) {
-  if (!cancel) return;
-  auto observer = itk::CStyleCommand::New();
-  observer->SetCallback([](itk::Object* caller, const itk::EventObject&, void* flag) {
-    if (static_cast<const std::atomic<bool>*>(flag)->load())
-      static_cast<itk::ProcessObject*>(caller)->AbortGenerateDataOn();
-  });
-  observer->SetClientData(const_cast<std::atomic<bool>*>(cancel));
-  filter.AddObserver(itk::ProgressEvent(), observer);
-}
-
-// filter.Update(), or false once cancelled (ITK reports an abort as ProcessAborted).
-bool updateUnlessCancelled(itk::ProcessObject& filter, const std::atomic<bool>* cancel) {
-  abortOnCancel(filter, cancel);
-  try {
-    filter.Update();
-  } catch (const itk::ProcessAborted&) {
-    return false;
-  }
-  return true;
-}
 
 template <class Adaptor>
 MaskImage::Pointer connectedThreshold(Adaptor* image, glm::ivec3 seed, int lo, int hi,
