@@ -90,6 +90,24 @@ Centerlines toVolumeFrame(const Centerlines& centerlines, const Volume& volume) 
   return mapped;
 }
 
+glm::dvec3 physicalFrameMm(const Volume& volume, glm::dvec3 volumeMm) {
+  return indexToPhysical(volume, volumeMm / volume.spacing);
+}
+
+Centerlines toPhysicalFrame(const Centerlines& centerlines, const Volume& volume) {
+  if (centerlines.frame != CenterlineFrame::volume) {
+    throw std::logic_error("centerlines of " + centerlines.source +
+                           " are already in the physical frame");
+  }
+  Centerlines mapped = centerlines;
+  mapped.frame = CenterlineFrame::physical;
+  for (CenterlinePath& path : mapped.paths) {
+    for (CenterlinePoint& point : path.points)
+      point.positionMm = physicalFrameMm(volume, point.positionMm);
+  }
+  return mapped;
+}
+
 std::vector<double> arcLengthsMm(const CenterlinePath& path) {
   std::vector<double> arc(path.points.size(), 0.0);
   for (std::size_t n = 1; n < path.points.size(); ++n) {

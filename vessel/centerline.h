@@ -56,6 +56,13 @@ glm::ivec3 nearestVoxelToPoint(const Volume& volume, glm::dvec3 physicalMm);
 // `centerlines` is already in the volume frame.
 Centerlines toVolumeFrame(const Centerlines& centerlines, const Volume& volume);
 
+// Volume frame (mm) -> physical (mm, LPS): the inverse of volumeFrameMm.
+glm::dvec3 physicalFrameMm(const Volume& volume, glm::dvec3 volumeMm);
+
+// All points mapped into the physical frame (what files hold); radii unchanged. Throws
+// std::logic_error if `centerlines` is already in the physical frame.
+Centerlines toPhysicalFrame(const Centerlines& centerlines, const Volume& volume);
+
 // --- Geometry (in whichever frame the path is) ---------------------------------------------------
 
 // Cumulative arc length at each point: 0 at the first point, the path length at the last.

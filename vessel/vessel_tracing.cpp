@@ -195,4 +195,9 @@ TracedPath VesselTracer::trace(const std::vector<glm::dvec3>& pointsMm,
   return {centerlineFromVoxels(*volume_, *contrast_, *voxels, wall, settings_.stepMm), ""};
 }
 
+TracedTree VesselTracer::traceDownstream(glm::dvec3, const std::atomic<bool>*,
+                                         const std::function<void(double)>&) {
+  return {{}, "tracing downstream is not there yet"};
+}
+
 }  // namespace angio

@@ -4,6 +4,7 @@
 // the lumen's centre with a radius per point (vessel/lumen_section.h). The contrast range comes
 // from the lumen at the first click, unless given. Everything is in the volume frame (mm).
 #include <atomic>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,13 @@ struct TraceSettings {
 // A click placed on the lumen's centre, or the one-line reason it could not be.
 struct SnappedPoint {
   std::optional<glm::dvec3> positionMm;
+  std::string problem;
+};
+
+// The vessel tree downstream of a click: root-to-leaf paths (volume frame) sharing their trunks
+// point for point (as vmtk writes them), named "1", "2", ... from the longest.
+struct TracedTree {
+  Centerlines centerlines;
   std::string problem;
 };
 
@@ -61,6 +69,11 @@ class VesselTracer {
   SnappedPoint snap(glm::dvec3 pointMm, const std::atomic<bool>* cancel = nullptr);
   // Through the points in order (start, waypoints, end), each snapped first.
   TracedPath trace(const std::vector<glm::dvec3>& pointsMm, const std::atomic<bool>* cancel = nullptr);
+  // Follows the contrast-filled lumen from the click to its ends, branching where it branches.
+  // Needs the field over the whole volume (built here if it is not). progress(fraction) may be
+  // empty.
+  TracedTree traceDownstream(glm::dvec3 seedMm, const std::atomic<bool>* cancel = nullptr,
+                             const std::function<void(double)>& progress = {});
 
  private:
   std::optional<glm::ivec3> nearestLumenVoxel(glm::dvec3 pointMm) const;
