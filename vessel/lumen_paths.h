@@ -24,7 +24,7 @@ std::optional<std::vector<glm::ivec3>> cheapestLumenPath(const LumenField& field
                                                          const std::atomic<bool>* cancel = nullptr);
 
 // The cheapest paths from a root to every lumen voxel it reaches through voxels at least
-// `minWallDistanceMm` from the wall (the vessels' cores: a thin bridge of partial-volume voxels
+// `minWallDistanceMm` from the wall (0: all; above it a thin bridge of partial-volume voxels
 // between a vessel and a bone's cortex does not join them).
 class LumenTree {
  public:

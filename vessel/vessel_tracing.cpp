@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/volume_sampling.h"
+#include "vessel/downstream_tracing.h"
 #include "vessel/lumen_paths.h"
 #include "vessel/lumen_section.h"
 
@@ -32,6 +33,50 @@ glm::ivec3 voxelAt(const Volume& volume, glm::dvec3 pointMm) {
 
 // How much brighter than tissue a lumen must be to count as contrast-filled.
 constexpr double kMinContrastHu = 100;
+
+std::size_t commonPrefix(const std::vector<glm::ivec3>& a, const std::vector<glm::ivec3>& b) {
+  std::size_t n = 0;
+  while (n < a.size() && n < b.size() && a[n] == b[n]) ++n;
+  return n;
+}
+
+std::size_t nearestPointIndex(const CenterlinePath& path, glm::dvec3 point) {
+  std::size_t nearest = 0;
+  for (std::size_t n = 1; n < path.points.size(); ++n)
+    if (glm::distance(path.points[n].positionMm, point) <
+        glm::distance(path.points[nearest].positionMm, point))
+      nearest = n;
+  return nearest;
+}
+
+// Makes `path` (of chains[c]) begin with the points of the earlier path it shares the most voxels
+// with, up to a little before they part (two lumen radii, where the bifurcation does not pull the
+// sections yet): the trunk is then the same points in both, as vmtk's centerlines have it.
+void joinToTrunk(CenterlinePath& path, const std::vector<std::vector<glm::ivec3>>& chains, std::size_t c,
+                 const std::vector<CenterlinePath>& earlier, glm::dvec3 spacing) {
+  std::size_t trunkOf = 0, shared = 0;
+  for (std::size_t e = 0; e < c; ++e) {
+    const std::size_t n = commonPrefix(chains[c], chains[e]);
+    if (n > shared) {
+      shared = n;
+      trunkOf = e;
+    }
+  }
+  if (shared < 2) return;
+  const CenterlinePath& trunk = earlier[trunkOf];
+  const std::size_t parting = nearestPointIndex(trunk, glm::dvec3(chains[c][shared - 1]) * spacing);
+  const std::vector<double> arc = arcLengthsMm(trunk);
+  const double keepToMm = arc[parting] - 2 * trunk.points[parting].radiusMm;
+  if (keepToMm <= 0) return;
+  std::size_t keep = 0;  // the last trunk point taken
+  while (keep + 1 < trunk.points.size() && arc[keep + 1] <= keepToMm) ++keep;
+  const std::size_t resume = nearestPointIndex(path, trunk.points[keep].positionMm) + 1;
+  std::vector<CenterlinePoint> joined(trunk.points.begin(),
+                                      trunk.points.begin() + std::ptrdiff_t(keep) + 1);
+  if (resume < path.points.size())
+    joined.insert(joined.end(), path.points.begin() + std::ptrdiff_t(resume), path.points.end());
+  path.points = std::move(joined);
+}
 
 std::string pointName(std::size_t n) { return "point " + std::to_string(n + 1); }
 
@@ -113,8 +158,9 @@ std::optional<glm::ivec3> VesselTracer::nearestLumenVoxel(glm::dvec3 pointMm) co
   return nearest;
 }
 
-// Up the distance map to its ridge: the lumen's centre in the voxel grid.
-glm::ivec3 VesselTracer::climbToRidge(glm::ivec3 voxel) const {
+// Up the distance map to its ridge: the lumen's centre in the voxel grid. Within the snap radius of
+// the click: along a tapering vessel the map keeps rising towards its wider end.
+glm::ivec3 VesselTracer::climbToRidge(glm::ivec3 voxel, glm::dvec3 clickMm) const {
   for (bool climbed = true; climbed;) {
     climbed = false;
     glm::ivec3 best = voxel;
@@ -124,6 +170,8 @@ glm::ivec3 VesselTracer::climbToRidge(glm::ivec3 voxel) const {
         for (int di = -1; di <= 1; ++di) {
           const glm::ivec3 next = voxel + glm::ivec3(di, dj, dk);
           const float wall = field_.wallDistanceMm(next);
+          if (glm::length(glm::dvec3(next) * volume_->spacing - clickMm) > settings_.snapRadiusMm)
+            continue;
           if (wall > bestWall) {
             bestWall = wall;
             best = next;
@@ -155,7 +203,7 @@ SnappedPoint VesselTracer::snap(glm::dvec3 pointMm, const std::atomic<bool>* can
                   contrast_->lowHu, contrast_->highHu, settings_.snapRadiusMm);
     return {std::nullopt, problem};
   }
-  return {glm::dvec3(climbToRidge(*nearest)) * volume_->spacing, ""};
+  return {glm::dvec3(climbToRidge(*nearest, pointMm)) * volume_->spacing, ""};
 }
 
 std::optional<std::vector<glm::ivec3>> VesselTracer::joinThroughLumen(
@@ -176,6 +224,7 @@ TracedPath VesselTracer::trace(const std::vector<glm::dvec3>& pointsMm,
   std::vector<glm::ivec3> ends;
   for (std::size_t n = 0; n < pointsMm.size(); ++n) {
     const SnappedPoint snapped = snap(pointsMm[n], cancel);
+    if (cancel && cancel->load()) return {std::nullopt, "cancelled"};
     if (!snapped.positionMm) return {std::nullopt, pointName(n) + ": " + snapped.problem};
     ends.push_back(voxelAt(*volume_, *snapped.positionMm));
   }
@@ -190,14 +239,39 @@ TracedPath VesselTracer::trace(const std::vector<glm::dvec3>& pointsMm,
   }
   if (cancel && cancel->load()) return {std::nullopt, "cancelled"};
   if (!voxels) return {std::nullopt, "the points are not joined by contrast-filled lumen"};
-  std::vector<float> wall;
-  for (const glm::ivec3& v : *voxels) wall.push_back(field_.wallDistanceMm(v));
-  return {centerlineFromVoxels(*volume_, *contrast_, *voxels, wall, settings_.stepMm), ""};
+  return {centerlineOf(*voxels), ""};
 }
 
-TracedTree VesselTracer::traceDownstream(glm::dvec3, const std::atomic<bool>*,
-                                         const std::function<void(double)>&) {
-  return {{}, "tracing downstream is not there yet"};
+TracedTree VesselTracer::traceDownstream(glm::dvec3 seedMm, const std::atomic<bool>* cancel,
+                                         const std::function<void(double)>& progress) {
+  const SnappedPoint snapped = snap(seedMm, cancel);
+  if (!snapped.positionMm) return {{}, snapped.problem};
+  if (progress) progress(0.05);
+  if (!prepare(wholeVolume(*volume_), cancel)) return {{}, "cancelled"};
+  if (progress) progress(0.6);
+  const auto chains = downstreamChains(field_, voxelAt(*volume_, *snapped.positionMm),
+                                       settings_.downstream, cancel, [&](double f) {
+                                         if (progress) progress(0.6 + 0.2 * f);
+                                       });
+  if (cancel && cancel->load()) return {{}, "cancelled"};
+  if (chains.empty()) return {{}, "no vessel leaves the click"};
+  TracedTree tree;
+  tree.centerlines.source = "traced";
+  tree.centerlines.frame = CenterlineFrame::volume;
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    CenterlinePath path = centerlineOf(chains[c]);
+    joinToTrunk(path, chains, c, tree.centerlines.paths, volume_->spacing);
+    path.name = std::to_string(c + 1);
+    tree.centerlines.paths.push_back(std::move(path));
+    if (progress) progress(0.8 + 0.2 * double(c + 1) / double(chains.size()));
+  }
+  return tree;
+}
+
+CenterlinePath VesselTracer::centerlineOf(const std::vector<glm::ivec3>& voxels) const {
+  std::vector<float> wall;
+  for (const glm::ivec3& v : voxels) wall.push_back(field_.wallDistanceMm(v));
+  return centerlineFromVoxels(*volume_, *contrast_, voxels, wall, settings_.stepMm);
 }
 
 }  // namespace angio

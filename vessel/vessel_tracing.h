@@ -13,6 +13,7 @@
 
 #include "core/volume.h"
 #include "vessel/centerline.h"
+#include "vessel/downstream_tracing.h"
 #include "vessel/lumen_field.h"
 
 namespace angio {
@@ -24,6 +25,7 @@ struct TraceSettings {
   double snapRadiusMm = 6;          // how far from a click a lumen is looked for
   double marginMm = 30;             // the lumen field's box around the points
   std::optional<ContrastRange> contrast;  // none: from the first click's lumen
+  DownstreamSettings downstream;
 
   friend bool operator==(const TraceSettings&, const TraceSettings&) = default;
 };
@@ -77,7 +79,8 @@ class VesselTracer {
 
  private:
   std::optional<glm::ivec3> nearestLumenVoxel(glm::dvec3 pointMm) const;
-  glm::ivec3 climbToRidge(glm::ivec3 voxel) const;
+  glm::ivec3 climbToRidge(glm::ivec3 voxel, glm::dvec3 clickMm) const;
+  CenterlinePath centerlineOf(const std::vector<glm::ivec3>& voxels) const;
   std::optional<std::vector<glm::ivec3>> joinThroughLumen(const std::vector<glm::ivec3>& ends,
                                                           const std::atomic<bool>* cancel);
 

@@ -76,6 +76,40 @@ TEST_F(PhantomTracing, RefusesAClickOnAirAndVesselsNotJoinedByContrast) {
   EXPECT_GT(pathLengthMm(*acrossFeet.path), 1500.0);  // up one leg, over the bifurcation, down the other
 }
 
+// Which ground-truth path a traced one follows (the one it lies nearest to on average), how much
+// of it it covers, and how far it lies from it.
+TEST_F(PhantomTracing, OneClickInTheAortaTracesTheWholeRunOff) {
+  VesselTracer tracer(phantom_->volume);
+  const auto start = std::chrono::steady_clock::now();
+  const TracedTree tree = tracer.traceDownstream(truth_->paths.front().points.front().positionMm);
+  std::printf("downstream: %zu paths in %.1f s %s\n", tree.centerlines.paths.size(), secondsSince(start),
+              tree.problem.c_str());
+  ASSERT_FALSE(tree.centerlines.paths.empty()) << tree.problem;
+  std::vector<bool> found(truth_->paths.size(), false);
+  for (const CenterlinePath& path : tree.centerlines.paths) {
+    std::size_t best = 0;
+    CenterlineDeviation bestDeviation;
+    for (std::size_t t = 0; t < truth_->paths.size(); ++t) {
+      const CenterlineDeviation d = deviationFrom(path, truth_->paths[t]);
+      if (t == 0 || d.meanMm < bestDeviation.meanMm) {
+        best = t;
+        bestDeviation = d;
+      }
+    }
+    const CenterlineDeviation back = deviationFrom(truth_->paths[best], path);
+    std::printf(
+        "  path %s %.0f mm follows %s (%.0f mm): mean %.2f mm, p95 %.2f, max %.2f; truth to path max "
+        "%.1f mm; radius %.1f%%\n",
+        path.name.c_str(), pathLengthMm(path), truth_->paths[best].name.c_str(),
+        pathLengthMm(truth_->paths[best]), bestDeviation.meanMm, bestDeviation.p95Mm,
+        bestDeviation.maxMm, back.maxMm, 100 * bestDeviation.meanRadiusError);
+    // Along the truth (mean within half a millimetre) and all of it (no truth point further than
+    // 3 mm from the path: the leaves reach the ends of the contrast).
+    if (bestDeviation.meanMm < 0.5 && back.maxMm < 3.0) found[best] = true;
+  }
+  for (std::size_t t = 0; t < truth_->paths.size(); ++t) EXPECT_TRUE(found[t]) << truth_->paths[t].name;
+}
+
 TEST(AortaTracing, MatchesTheReferenceCenterlinesWithinAVoxel) {
   const std::string data = ANGIORAY_SHARED_DATA;
   const Volume volume = readVolume(data + "/aorta.mha").volume;
