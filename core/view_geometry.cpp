@@ -43,6 +43,12 @@ glm::dvec3 ViewGeometry::rayOrigin(int x, int y) const {
   return centre + h * right + v * up;
 }
 
+glm::dvec2 imagePointOf(const ViewGeometry& view, glm::dvec3 pointMm) {
+  const glm::dvec3 offset = pointMm - view.centre;
+  return {glm::dot(offset, view.right) / view.pixelMm + view.width * 0.5,
+          view.height * 0.5 - glm::dot(offset, view.up) / view.pixelMm};
+}
+
 SampleRange sampleRange(const ViewGeometry& view, glm::dvec3 origin) {
   // Slab test against the closed box [0, E]; a tiny tolerance keeps samples that sit exactly on a
   // face (e.g. theta = 0, where rays run along voxel rows) inside despite rounding.

@@ -28,6 +28,10 @@ struct ViewGeometry {
 
 ViewGeometry makeViewGeometry(const Volume& volume, const RenderParams& params);
 
+// Where a point (volume frame, mm) lies on the image, in pixels: the inverse of rayOrigin for the
+// point's ray (pixel x covers [x, x + 1), row 0 at the top).
+glm::dvec2 imagePointOf(const ViewGeometry& view, glm::dvec3 pointMm);
+
 // The integer sample range [first, last] of a ray: the k with p(k * delta) inside the closed
 // domain box [0, E]. Empty (first > last) when the ray misses the box.
 struct SampleRange {

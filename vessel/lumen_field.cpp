@@ -22,6 +22,11 @@ using DistanceImage = itk::Image<float, 3>;
 // shell has contrast-like density.
 bool isRemovedLabel(int label) { return label == kBoneLabel || label == kTableLabel; }
 
+bool isLumenVoxel(Voxel v, int low, int high) {
+  const int d = densityOf(v);
+  return d >= low && d <= high && !isRemovedLabel(labelOf(v));
+}
+
 // 1 where the box's voxel is NOT lumen: the distance map measures to these.
 MaskImage::Pointer wallMask(const Volume& volume, ContrastRange range, const VoxelBox& box) {
   const glm::ivec3 size = sizeOf(box);
@@ -39,14 +44,39 @@ MaskImage::Pointer wallMask(const Volume& volume, ContrastRange range, const Vox
     for (int j = 0; j < size.y; ++j) {
       std::uint8_t* row = out + (std::size_t(k) * size.y + j) * size.x;
       for (int i = 0; i < size.x; ++i) {
-        const Voxel v = volume.at(box.lo.x + i, box.lo.y + j, box.lo.z + k);
-        const int d = densityOf(v);
-        const bool lumen = d >= low && d <= high && !isRemovedLabel(labelOf(v));
-        row[i] = lumen ? 0 : 1;
+        row[i] = isLumenVoxel(volume.at(box.lo.x + i, box.lo.y + j, box.lo.z + k), low, high) ? 0 : 1;
       }
     }
   });
   return mask;
+}
+
+// The box around the lumen voxels inside `box`, one voxel of wall added on each side where the box
+// allows (the distance map needs the wall beyond the last lumen voxel); empty without lumen.
+VoxelBox lumenBounds(const Volume& volume, ContrastRange range, const VoxelBox& box) {
+  const int low = densityOfHu(range.lowHu), high = densityOfHu(range.highHu);
+  std::vector<VoxelBox> perSlice(std::size_t(sizeOf(box).z));
+  tbb::parallel_for(box.lo.z, box.hi.z + 1, [&](int k) {
+    VoxelBox& slice = perSlice[std::size_t(k - box.lo.z)];
+    slice.lo = glm::ivec3(box.hi.x + 1, box.hi.y + 1, k);
+    slice.hi = glm::ivec3(box.lo.x - 1, box.lo.y - 1, k);
+    for (int j = box.lo.y; j <= box.hi.y; ++j)
+      for (int i = box.lo.x; i <= box.hi.x; ++i) {
+        if (!isLumenVoxel(volume.at(i, j, k), low, high)) continue;
+        slice.lo = glm::min(slice.lo, glm::ivec3(i, j, k));
+        slice.hi = glm::max(slice.hi, glm::ivec3(i, j, k));
+      }
+  });
+  VoxelBox bounds;
+  bool any = false;
+  for (const VoxelBox& slice : perSlice) {
+    if (isEmpty(slice)) continue;
+    bounds.lo = any ? glm::min(bounds.lo, slice.lo) : slice.lo;
+    bounds.hi = any ? glm::max(bounds.hi, slice.hi) : slice.hi;
+    any = true;
+  }
+  if (!any) return {};
+  return {glm::max(bounds.lo - 1, box.lo), glm::min(bounds.hi + 1, box.hi)};
 }
 
 int clampedIndex(double index, int count) { return std::clamp(int(std::floor(index)), 0, count - 1); }
@@ -86,13 +116,21 @@ bool containsBox(const VoxelBox& outer, const VoxelBox& inner) {
 
 LumenField::LumenField(const Volume& volume, ContrastRange range, VoxelBox box,
                        const std::atomic<bool>* cancel)
-    : box_(box), size_(sizeOf(box)), spacing_(volume.spacing), range_(range) {
+    : coverage_(box), spacing_(volume.spacing), range_(range) {
   if (isEmpty(box)) return;
+  // Only where there is lumen: the map of a run-off's arteries and bone rims covers a fifth of the
+  // volume, and Maurer's time and memory grow with the voxels.
+  box_ = lumenBounds(volume, range, box);
+  size_ = sizeOf(box_);
+  if (isEmpty(box_)) {
+    distanceMm_ = std::make_shared<const float>(0.0f);  // ready, with no lumen
+    return;
+  }
   // The distance from each lumen voxel to the nearest wall voxel: the wall is the object, the
   // lumen lies outside it, where Maurer's signed distance is positive.
   using Filter = itk::SignedMaurerDistanceMapImageFilter<MaskImage, DistanceImage>;
   auto filter = Filter::New();
-  filter->SetInput(wallMask(volume, range, box));
+  filter->SetInput(wallMask(volume, range, box_));
   filter->SetInsideIsPositive(false);
   filter->SetSquaredDistance(false);
   filter->SetUseImageSpacing(true);

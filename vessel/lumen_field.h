@@ -54,6 +54,9 @@ class LumenField {
              const std::atomic<bool>* cancel = nullptr);
 
   bool isReady() const { return distanceMm_ != nullptr; }
+  // The box asked for: its voxels outside box() are not lumen.
+  const VoxelBox& coverage() const { return coverage_; }
+  // The box the map is stored for: around the lumen voxels of the coverage.
   const VoxelBox& box() const { return box_; }
   const ContrastRange& range() const { return range_; }
   glm::dvec3 spacing() const { return spacing_; }
@@ -75,7 +78,7 @@ class LumenField {
   float wallDistanceAt(std::size_t offset) const { return distanceMm_.get()[offset]; }
 
  private:
-  VoxelBox box_;
+  VoxelBox coverage_, box_;
   glm::ivec3 size_{0};
   glm::dvec3 spacing_{1.0};
   ContrastRange range_;

@@ -8,6 +8,7 @@
 #include "vessel/downstream_tracing.h"
 #include "vessel/lumen_paths.h"
 #include "vessel/lumen_section.h"
+#include "vessel/trunk_sharing.h"
 
 namespace angio {
 
@@ -33,50 +34,6 @@ glm::ivec3 voxelAt(const Volume& volume, glm::dvec3 pointMm) {
 
 // How much brighter than tissue a lumen must be to count as contrast-filled.
 constexpr double kMinContrastHu = 100;
-
-std::size_t commonPrefix(const std::vector<glm::ivec3>& a, const std::vector<glm::ivec3>& b) {
-  std::size_t n = 0;
-  while (n < a.size() && n < b.size() && a[n] == b[n]) ++n;
-  return n;
-}
-
-std::size_t nearestPointIndex(const CenterlinePath& path, glm::dvec3 point) {
-  std::size_t nearest = 0;
-  for (std::size_t n = 1; n < path.points.size(); ++n)
-    if (glm::distance(path.points[n].positionMm, point) <
-        glm::distance(path.points[nearest].positionMm, point))
-      nearest = n;
-  return nearest;
-}
-
-// Makes `path` (of chains[c]) begin with the points of the earlier path it shares the most voxels
-// with, up to a little before they part (two lumen radii, where the bifurcation does not pull the
-// sections yet): the trunk is then the same points in both, as vmtk's centerlines have it.
-void joinToTrunk(CenterlinePath& path, const std::vector<std::vector<glm::ivec3>>& chains, std::size_t c,
-                 const std::vector<CenterlinePath>& earlier, glm::dvec3 spacing) {
-  std::size_t trunkOf = 0, shared = 0;
-  for (std::size_t e = 0; e < c; ++e) {
-    const std::size_t n = commonPrefix(chains[c], chains[e]);
-    if (n > shared) {
-      shared = n;
-      trunkOf = e;
-    }
-  }
-  if (shared < 2) return;
-  const CenterlinePath& trunk = earlier[trunkOf];
-  const std::size_t parting = nearestPointIndex(trunk, glm::dvec3(chains[c][shared - 1]) * spacing);
-  const std::vector<double> arc = arcLengthsMm(trunk);
-  const double keepToMm = arc[parting] - 2 * trunk.points[parting].radiusMm;
-  if (keepToMm <= 0) return;
-  std::size_t keep = 0;  // the last trunk point taken
-  while (keep + 1 < trunk.points.size() && arc[keep + 1] <= keepToMm) ++keep;
-  const std::size_t resume = nearestPointIndex(path, trunk.points[keep].positionMm) + 1;
-  std::vector<CenterlinePoint> joined(trunk.points.begin(),
-                                      trunk.points.begin() + std::ptrdiff_t(keep) + 1);
-  if (resume < path.points.size())
-    joined.insert(joined.end(), path.points.begin() + std::ptrdiff_t(resume), path.points.end());
-  path.points = std::move(joined);
-}
 
 std::string pointName(std::size_t n) { return "point " + std::to_string(n + 1); }
 
@@ -127,11 +84,12 @@ void VesselTracer::widenContrastFor(glm::dvec3 pointMm) {
 
 bool VesselTracer::prepare(const VoxelBox& box, const std::atomic<bool>* cancel) {
   if (!contrast_) return false;
-  if (field_.isReady() && field_.range() == *contrast_ && containsBox(field_.box(), box)) return true;
+  if (field_.isReady() && field_.range() == *contrast_ && containsBox(field_.coverage(), box))
+    return true;
   VoxelBox wanted = box;
   if (field_.isReady() && field_.range() == *contrast_) {
-    wanted.lo = glm::min(wanted.lo, field_.box().lo);
-    wanted.hi = glm::max(wanted.hi, field_.box().hi);
+    wanted.lo = glm::min(wanted.lo, field_.coverage().lo);
+    wanted.hi = glm::max(wanted.hi, field_.coverage().hi);
   }
   LumenField field(*volume_, *contrast_, wanted, cancel);
   if (!field.isReady()) return false;
@@ -260,7 +218,7 @@ TracedTree VesselTracer::traceDownstream(glm::dvec3 seedMm, const std::atomic<bo
   tree.centerlines.frame = CenterlineFrame::volume;
   for (std::size_t c = 0; c < chains.size(); ++c) {
     CenterlinePath path = centerlineOf(chains[c]);
-    joinToTrunk(path, chains, c, tree.centerlines.paths, volume_->spacing);
+    shareTrunk(path, tree.centerlines.paths);
     path.name = std::to_string(c + 1);
     tree.centerlines.paths.push_back(std::move(path));
     if (progress) progress(0.8 + 0.2 * double(c + 1) / double(chains.size()));

@@ -108,6 +108,29 @@ TEST_F(PhantomTracing, OneClickInTheAortaTracesTheWholeRunOff) {
     if (bestDeviation.meanMm < 0.5 && back.maxMm < 3.0) found[best] = true;
   }
   for (std::size_t t = 0; t < truth_->paths.size(); ++t) EXPECT_TRUE(found[t]) << truth_->paths[t].name;
+  // The trunks are shared point for point, as far as the truth's (up to the bifurcation's
+  // parting, two radii and the truth's own knot spacing short of it).
+  const auto sharedMm = [](const CenterlinePath& a, const CenterlinePath& b) {
+    const std::size_t n = sharedPrefixLength(a, b);
+    return n < 2 ? 0.0 : arcLengthsMm(a)[n - 1];
+  };
+  const auto& paths = tree.centerlines.paths;
+  for (std::size_t a = 0; a < paths.size(); ++a)
+    for (std::size_t b = a + 1; b < paths.size(); ++b) {
+      const auto truthOf = [&](const CenterlinePath& path) {
+        std::size_t best = 0;
+        for (std::size_t t = 1; t < truth_->paths.size(); ++t)
+          if (deviationFrom(path, truth_->paths[t]).meanMm <
+              deviationFrom(path, truth_->paths[best]).meanMm)
+            best = t;
+        return truth_->paths[best];
+      };
+      const double truthShared = sharedMm(truthOf(paths[a]), truthOf(paths[b]));
+      std::printf("  paths %s and %s share %.0f mm (truth %.0f mm)\n", paths[a].name.c_str(),
+                  paths[b].name.c_str(), sharedMm(paths[a], paths[b]), truthShared);
+      EXPECT_GE(sharedMm(paths[a], paths[b]), truthShared - 30.0);
+      EXPECT_LE(sharedMm(paths[a], paths[b]), truthShared + 10.0);
+    }
 }
 
 TEST(AortaTracing, MatchesTheReferenceCenterlinesWithinAVoxel) {
