@@ -1,5 +1,7 @@
 #include "core/volume.h"
 
+#include <numeric>
+
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
@@ -52,6 +54,13 @@ DensityRange densityRange(const Volume& volume) {
     range.maxDensity = std::max(range.maxDensity, d);
   }
   return range;
+}
+
+bool looksHuCalibrated(const Volume& volume) {
+  const DensityHistogram histogram = densityHistogram(volume);
+  const std::size_t below =
+      std::accumulate(histogram.begin(), histogram.begin() + densityOfHu(-500), std::size_t(0));
+  return below * 1000 >= volume.voxelCount();
 }
 
 }  // namespace angio

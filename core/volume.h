@@ -48,6 +48,11 @@ using DensityHistogram = std::array<std::uint64_t, kDensityLevels>;
 // Number of voxels per 12-bit density (labels ignored).
 DensityHistogram densityHistogram(const Volume& volume);
 
+// Whether the densities look like calibrated Hounsfield units: a CT of the body holds air (around
+// it, in the lungs and bowel) below -500 HU, at least 0.1 % of its voxels. Exported and cropped
+// research data (../shared/data/aorta.mha) often hold none.
+bool looksHuCalibrated(const Volume& volume);
+
 struct DensityRange {
   int minDensity = 0;
   int maxDensity = 0;

@@ -188,10 +188,7 @@ LabelResult removeBoneAndTable(const Volume& volume, const Centerlines* protect,
 }
 
 std::string calibrationWarning(const Volume& volume) {
-  const DensityHistogram histogram = densityHistogram(volume);
-  const std::size_t below =
-      std::accumulate(histogram.begin(), histogram.begin() + densityOfHu(-500), std::size_t(0));
-  if (below * 1000 >= volume.voxelCount()) return "";
+  if (looksHuCalibrated(volume)) return "";
   return "almost no voxel below -500 HU (air, lung): the values may not be calibrated HU, and "
          "bone removal's HU thresholds may label vessels";
 }

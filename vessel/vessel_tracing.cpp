@@ -76,7 +76,12 @@ void VesselTracer::widenContrastFor(glm::dvec3 pointMm) {
   const auto lumen = lumenHuNear(pointMm);
   if (!lumen || *lumen < settings_.tissueHu + kMinContrastHu) return;
   if (contrast_ && *lumen >= contrast_->lowHu && *lumen <= contrast_->highHu) return;
-  const ContrastRange here = contrastRangeFor(*lumen, settings_.tissueHu, settings_.calciumHu);
+  // In data that are not calibrated HU (../shared/data/aorta.mha: lumen 900-2400 along one
+  // vessel) calcium has no known density: the range then reaches the top of the 12-bit scale.
+  if (!calibrated_) calibrated_ = looksHuCalibrated(*volume_);
+  std::optional<double> calcium = settings_.calciumHu;
+  if (!calcium && !*calibrated_) calcium = huOfDensity(kDensityLevels - 1);
+  const ContrastRange here = contrastRangeFor(*lumen, settings_.tissueHu, calcium);
   contrast_ = contrast_ ? ContrastRange{std::min(contrast_->lowHu, here.lowHu),
                                         std::max(contrast_->highHu, here.highHu)}
                         : here;

@@ -19,11 +19,13 @@
 namespace angio {
 
 struct TraceSettings {
-  double stepMm = 0.5;              // the centerlines' point spacing
-  double tissueHu = 50;             // what surrounds the vessels (the contrast range's lower half)
-  std::optional<double> calciumHu;  // where calcium begins; none: twice the lumen's margin above it
-  double snapRadiusMm = 6;          // how far from a click a lumen is looked for
-  double marginMm = 30;             // the lumen field's box around the points
+  double stepMm = 0.5;   // the centerlines' point spacing
+  double tissueHu = 50;  // what surrounds the vessels (the contrast range's lower half)
+  // Where calcium begins; none: twice the lumen's margin above it (in data that are not
+  // calibrated HU, core/volume.h looksHuCalibrated, the top of the scale).
+  std::optional<double> calciumHu;
+  double snapRadiusMm = 6;                // how far from a click a lumen is looked for
+  double marginMm = 30;                   // the lumen field's box around the points
   std::optional<ContrastRange> contrast;  // none: from the first click's lumen
   DownstreamSettings downstream;
 
@@ -87,6 +89,7 @@ class VesselTracer {
   const Volume* volume_;
   TraceSettings settings_;
   std::optional<ContrastRange> contrast_;
+  std::optional<bool> calibrated_;  // looksHuCalibrated, once needed
   LumenField field_;
 };
 

@@ -29,14 +29,15 @@ double distanceToSegment(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b) {
   return glm::length(p - (a + t * ab));
 }
 
-// Tubes in tissue, the wall a linear ramp one voxel wide (the scanner's blur), like the phantom.
+// Tubes in tissue, the wall a linear ramp one voxel wide (the scanner's blur), like the phantom;
+// air in the row j = 0, as around a patient (the values look like calibrated HU).
 Volume tubes(glm::ivec3 dims, const std::vector<Tube>& list) {
   Volume volume = makeVolume(dims, glm::dvec3(kSpacingMm), encodeVoxel(kTissueHu));
   for (int k = 0; k < dims.z; ++k)
     for (int j = 0; j < dims.y; ++j)
       for (int i = 0; i < dims.x; ++i) {
         const glm::dvec3 p = glm::dvec3(i, j, k) * kSpacingMm;
-        double hu = kTissueHu;
+        double hu = j == 0 ? -1000 : kTissueHu;
         for (const Tube& tube : list) {
           const double d = distanceToSegment(p, tube.from, tube.to);
           const double inside = std::clamp(0.5 - (d - tube.radiusMm) / kSpacingMm, 0.0, 1.0);

@@ -137,12 +137,9 @@ TEST(AortaTracing, MatchesTheReferenceCenterlinesWithinAVoxel) {
   const std::string data = ANGIORAY_SHARED_DATA;
   const Volume volume = readVolume(data + "/aorta.mha").volume;
   const Centerlines reference = toVolumeFrame(loadCenterlines(data + "/aorta-centerlines.vtp"), volume);
-  // The data are not calibrated HU (shared/data/README.md): tissue around the lumen is about
-  // 300 there, the lumen 900-2400, and nothing is calcium below the 12-bit range's top.
-  TraceSettings settings;
-  settings.tissueHu = 300;
-  settings.calciumHu = 3000;
-  VesselTracer tracer(volume, settings);
+  // The data are not calibrated HU (shared/data/README.md: lumen 900-2400); the default settings
+  // see that from the lumen's density.
+  VesselTracer tracer(volume);
   for (const CenterlinePath& path : reference.paths) {
     const TracedPath traced =
         tracer.trace({path.points.front().positionMm, path.points.back().positionMm});
