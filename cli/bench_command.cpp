@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "bench/frame_bench.h"
+#include "bench/trace_bench.h"
 #include "bench/vessel_glyph_bench.h"
 #include "phantom/phantom.h"
 #include "phantom/phantom_anatomy.h"
@@ -89,6 +90,15 @@ int runBench(const BenchOptionsCli& options) {
   const Phantom data = benchVolume(options);
   const Volume& volume = data.volume;
   if (options.glyphIntervals) return runGlyphIntervalBench(options, volume);
+  if (options.trace) {
+    const auto centerlines = benchCenterlines(options, data);
+    if (!centerlines)
+      throw std::invalid_argument("--trace needs --centerlines for VOLUME (their ends are the clicks)");
+    std::printf(
+        "%s",
+        formatTraceBench(runTraceBench(volume, *centerlines, tf, {.threads = options.threads})).c_str());
+    return 0;
+  }
   BenchSettings settings;
   settings.vesselTree = benchCenterlines(options, data);
   settings.angles = options.angles;

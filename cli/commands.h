@@ -81,6 +81,19 @@ struct SegmentOptionsCli {
 };
 int runSegment(const SegmentOptionsCli& options);
 
+// `angioray trace`: centerlines between points (start, waypoints, end) or downstream of one.
+struct TraceOptionsCli {
+  std::string volume;
+  std::string labels;  // bone and table labels: never lumen
+  std::string points;  // "x,y,z;x,y,z;..." physical (LPS mm)
+  std::string voxels;  // the same as voxel indices
+  bool downstream = false;
+  std::optional<double> tissueHu, calciumHu, stepMm;
+  std::string out;      // .mrk.json, .vtp or .csv
+  std::string compare;  // a reference centerline file: print how far the traced paths lie from it
+};
+int runTrace(const TraceOptionsCli& options);
+
 // `angioray bench`: frame times of the raycasters (bench/frame_bench.h); no VOLUME = the phantom.
 struct BenchOptionsCli {
   std::string volume;
@@ -97,7 +110,8 @@ struct BenchOptionsCli {
   std::vector<std::string> hide;    // the labels those rows hide (default: bone)
   std::string json;
   bool glyphIntervals =
-      false;  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
+      false;           // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
+  bool trace = false;  // time only vessel tracing (bench/trace_bench.h)
 };
 int runBench(const BenchOptionsCli& options);
 

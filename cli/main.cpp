@@ -124,6 +124,28 @@ void addSegment(CLI::App& app, angio::SegmentOptionsCli& o) {
       ->required();
 }
 
+void addTrace(CLI::App& app, angio::TraceOptionsCli& o) {
+  auto* cmd = app.add_subcommand(
+      "trace", "Trace vessel centerlines through the contrast-filled lumen, to a centerline file");
+  cmd->add_option("VOLUME", o.volume, "Volume file or DICOM folder")->required();
+  cmd->add_option(
+      "--points", o.points,
+      "Points \"x,y,z;x,y,z[;...]\" in mm (LPS, as centerline files): start, waypoints, end");
+  cmd->add_option("--voxels", o.voxels, "The points as voxel indices \"i,j,k;i,j,k[;...]\"");
+  cmd->add_flag("--downstream", o.downstream,
+                "From the one point, follow the lumen to all its ends (a whole run-off tree)");
+  cmd->add_option("--labels", o.labels, "Label volume: labelled bone and table are never lumen");
+  cmd->add_option("--tissue-hu", o.tissueHu, "Density around the vessels (default 50 HU)");
+  cmd->add_option(
+      "--calcium-hu", o.calciumHu,
+      "Density where calcium begins (default: as far above the lumen as tissue is below, twice)");
+  cmd->add_option("--step", o.stepMm, "Point spacing in mm (default 0.5)");
+  cmd->add_option("--compare", o.compare,
+                  "Reference centerlines: print how far the traced ones lie from them");
+  cmd->add_option("--out,-o", o.out, "Output centerlines: .mrk.json (3D Slicer), .vtp (vmtk) or .csv")
+      ->required();
+}
+
 void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   auto* cmd = app.add_subcommand("bench", "Time the raycasters over many angles (median, min, max)");
   cmd->add_option("VOLUME", o.volume, "Volume (default: the generated phantom)");
@@ -148,6 +170,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--glyph-intervals", o.glyphIntervals,
                 "Time only VesselGlyph interval construction at medium quality: 20 synthetic "
                 "paths of 1000 points, or --centerlines");
+  cmd->add_flag("--trace", o.trace,
+                "Time only vessel tracing: the lumen field, traces between the ends of the phantom's "
+                "paths (or --centerlines) cut to 600 mm, the 3-D pick");
 }
 
 void addDemo(CLI::App& app, angio::DemoOptions& o) {
@@ -204,6 +229,7 @@ int main(int argc, char** argv) {
   angio::DemoOptions demo;
   angio::BenchOptionsCli bench;
   angio::SegmentOptionsCli segment;
+  angio::TraceOptionsCli trace;
   angio::GuiOptions gui;
   addInfo(app, info);
   addRender(app, render);
@@ -211,6 +237,7 @@ int main(int argc, char** argv) {
   addPhantom(app, phantom);
   addDemo(app, demo);
   addSegment(app, segment);
+  addTrace(app, trace);
   addBench(app, bench);
   addGui(app, gui);
   app.require_subcommand(0, 1);
@@ -222,6 +249,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("cpr")) return angio::runCpr(cpr);
     if (app.got_subcommand("phantom")) return angio::runPhantom(phantom);
     if (app.got_subcommand("segment")) return angio::runSegment(segment);
+    if (app.got_subcommand("trace")) return angio::runTrace(trace);
     if (app.got_subcommand("bench")) return angio::runBench(bench);
     if (app.got_subcommand("gui")) return angio::runGui(gui);
     if (app.got_subcommand("demo")) return angio::runDemo(demo);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/voxel.h"
 #include "vessel/lumen_paths.h"
 
 namespace angio {
@@ -65,15 +66,36 @@ std::size_t branchStart(const LumenTree& tree, const Coverage& coverage, std::si
   return node;
 }
 
+// The mean distance to the wall along a chain's voxels from `first` on.
+double meanWallMm(const LumenField& field, const std::vector<glm::ivec3>& chain, std::size_t first) {
+  double sum = 0;
+  for (std::size_t n = first; n < chain.size(); ++n) sum += field.wallDistanceMm(chain[n]);
+  return chain.size() > first ? sum / double(chain.size() - first) : 0.0;
+}
+
+// The median density along a chain's voxels from `first` on.
+double medianDensity(const Volume& volume, const std::vector<glm::ivec3>& chain, std::size_t first) {
+  std::vector<int> densities;
+  for (std::size_t n = first; n < chain.size(); ++n)
+    densities.push_back(volume.densityAt(chain[n].x, chain[n].y, chain[n].z));
+  if (densities.empty()) return 0;
+  std::nth_element(densities.begin(), densities.begin() + densities.size() / 2, densities.end());
+  return densities[densities.size() / 2];
+}
+
 }  // namespace
 
-std::vector<std::vector<glm::ivec3>> downstreamChains(const LumenField& field, glm::ivec3 root,
+std::vector<std::vector<glm::ivec3>> downstreamChains(const Volume& volume, const LumenField& field,
+                                                      glm::ivec3 root,
                                                       const DownstreamSettings& settings,
                                                       const std::atomic<bool>* cancel,
                                                       const std::function<void(double)>& progress) {
   const LumenTree tree(field, root, settings.coreWallMm, cancel);
   if (tree.isCancelled() || tree.nodes().empty()) return {};
   Coverage coverage(field, tree, settings.coverRadii);
+  const double low = densityOfHu(field.range().lowHu);
+  const double minDensity =
+      low + settings.minContrastFraction * (volume.densityAt(root.x, root.y, root.z) - low);
   std::vector<std::vector<glm::ivec3>> chains;
   for (std::optional<std::size_t> leaf = coverage.farthestUncovered();
        leaf && int(chains.size()) < settings.maxPaths; leaf = coverage.farthestUncovered()) {
@@ -85,7 +107,10 @@ std::vector<std::vector<glm::ivec3>> downstreamChains(const LumenField& field, g
     // The new part only: the trunk before `start` was covered with its own branch.
     const std::size_t trunk = tree.pathTo(start).size() - 1;
     coverage.coverAround({chain.begin() + std::ptrdiff_t(trunk), chain.end()});
-    const bool isVessel = chains.empty() || beyondMm - parentRadiusMm >= settings.minBranchMm;
+    const double outsideParentMm = beyondMm - parentRadiusMm;
+    const bool isVessel =
+        chains.empty() || (outsideParentMm >= settings.minBranchMm &&
+                           outsideParentMm >= settings.minElongation * meanWallMm(field, chain, trunk));
     if (isVessel) chains.push_back(std::move(chain));
     if (progress) progress(double(chains.size()) / settings.maxPaths);
   }

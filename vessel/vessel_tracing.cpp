@@ -34,6 +34,17 @@ glm::ivec3 voxelAt(const Volume& volume, glm::dvec3 pointMm) {
 
 // How much brighter than tissue a lumen must be to count as contrast-filled.
 constexpr double kMinContrastHu = 100;
+constexpr double kSoftTissueHu = 50;
+
+double medianHu(const Volume& volume) {
+  const DensityHistogram histogram = densityHistogram(volume);
+  std::uint64_t seen = 0;
+  for (int d = 0; d < kDensityLevels; ++d) {
+    seen += histogram[d];
+    if (2 * seen >= volume.voxelCount()) return huOfDensity(d);
+  }
+  return kSoftTissueHu;
+}
 
 std::string pointName(std::size_t n) { return "point " + std::to_string(n + 1); }
 
@@ -70,18 +81,28 @@ std::optional<double> VesselTracer::lumenHuNear(glm::dvec3 pointMm) const {
   return huOfDensity(here);
 }
 
+// What the data say surrounds the vessels, unless the settings say: soft tissue's 50 HU in
+// calibrated CT; in data that are not calibrated HU (../shared/data/aorta.mha: tissue 0-500, lumen
+// 900-2400 along one vessel) the volume's median density (a cropped scan is mostly tissue), and
+// calcium has no known density there, so the range reaches the top of the 12-bit scale.
+void VesselTracer::learnTheData() {
+  if (calibrated_) return;
+  calibrated_ = looksHuCalibrated(*volume_);
+  tissueHu_ = settings_.tissueHu ? *settings_.tissueHu
+              : *calibrated_     ? kSoftTissueHu
+                                 : medianHu(*volume_);
+  calciumHu_ = settings_.calciumHu;
+  if (!calciumHu_ && !*calibrated_) calciumHu_ = huOfDensity(kDensityLevels - 1);
+}
+
 void VesselTracer::widenContrastFor(glm::dvec3 pointMm) {
   if (settings_.contrast) return;
+  learnTheData();
   // Only a lumen brighter than tissue counts: a click on air or fat must not set the range.
   const auto lumen = lumenHuNear(pointMm);
-  if (!lumen || *lumen < settings_.tissueHu + kMinContrastHu) return;
+  if (!lumen || *lumen < tissueHu_ + kMinContrastHu) return;
   if (contrast_ && *lumen >= contrast_->lowHu && *lumen <= contrast_->highHu) return;
-  // In data that are not calibrated HU (../shared/data/aorta.mha: lumen 900-2400 along one
-  // vessel) calcium has no known density: the range then reaches the top of the 12-bit scale.
-  if (!calibrated_) calibrated_ = looksHuCalibrated(*volume_);
-  std::optional<double> calcium = settings_.calciumHu;
-  if (!calcium && !*calibrated_) calcium = huOfDensity(kDensityLevels - 1);
-  const ContrastRange here = contrastRangeFor(*lumen, settings_.tissueHu, calcium);
+  const ContrastRange here = contrastRangeFor(*lumen, tissueHu_, calciumHu_);
   contrast_ = contrast_ ? ContrastRange{std::min(contrast_->lowHu, here.lowHu),
                                         std::max(contrast_->highHu, here.highHu)}
                         : here;
@@ -212,7 +233,7 @@ TracedTree VesselTracer::traceDownstream(glm::dvec3 seedMm, const std::atomic<bo
   if (progress) progress(0.05);
   if (!prepare(wholeVolume(*volume_), cancel)) return {{}, "cancelled"};
   if (progress) progress(0.6);
-  const auto chains = downstreamChains(field_, voxelAt(*volume_, *snapped.positionMm),
+  const auto chains = downstreamChains(*volume_, field_, voxelAt(*volume_, *snapped.positionMm),
                                        settings_.downstream, cancel, [&](double f) {
                                          if (progress) progress(0.6 + 0.2 * f);
                                        });

@@ -19,8 +19,10 @@
 namespace angio {
 
 struct TraceSettings {
-  double stepMm = 0.5;   // the centerlines' point spacing
-  double tissueHu = 50;  // what surrounds the vessels (the contrast range's lower half)
+  double stepMm = 0.5;  // the centerlines' point spacing
+  // What surrounds the vessels (the contrast range's lower half); none: 50 HU in calibrated data,
+  // else the volume's median.
+  std::optional<double> tissueHu;
   // Where calcium begins; none: twice the lumen's margin above it (in data that are not
   // calibrated HU, core/volume.h looksHuCalibrated, the top of the scale).
   std::optional<double> calciumHu;
@@ -81,6 +83,7 @@ class VesselTracer {
 
  private:
   std::optional<glm::ivec3> nearestLumenVoxel(glm::dvec3 pointMm) const;
+  void learnTheData();
   glm::ivec3 climbToRidge(glm::ivec3 voxel, glm::dvec3 clickMm) const;
   CenterlinePath centerlineOf(const std::vector<glm::ivec3>& voxels) const;
   std::optional<std::vector<glm::ivec3>> joinThroughLumen(const std::vector<glm::ivec3>& ends,
@@ -90,6 +93,8 @@ class VesselTracer {
   TraceSettings settings_;
   std::optional<ContrastRange> contrast_;
   std::optional<bool> calibrated_;  // looksHuCalibrated, once needed
+  double tissueHu_ = 0;
+  std::optional<double> calciumHu_;
   LumenField field_;
 };
 
