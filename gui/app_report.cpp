@@ -83,6 +83,7 @@ nlohmann::json App::report() const {
         {"data", dataReport()},
         {"vessel_glyph", vesselReport()},
         {"labels", labelsReport()},
+        {"vessels", vesselsReport()},
         {"layout", layout}}},
   };
 }
@@ -121,6 +122,7 @@ nlohmann::json App::vesselReport() const {
   const VesselGlyphState& set = doc().vesselGlyph;
   return {{"enabled", set.enabled},
           {"rendering", scene_ && scene_->hasRegions()},
+          {"rendered_paths", scene_ && scene_->hasRegions() ? sceneCenterlines_.paths.size() : 0},
           {"overlay", set.overlay},
           {"centerlines", vg.file},
           {"paths", vg.physical ? vg.physical->paths.size() : 0},

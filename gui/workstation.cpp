@@ -41,6 +41,7 @@ void change(Document& d, const CenterlineFileEdit& edit) {
 void change(Document& d, const DatasetOpened& edit) {
   d.dataset = edit.dataset;
   d.labels.file.clear();  // the labels of the old dataset do not fit the new one
+  d.vessels = {{}, "", false, d.vessels.revision + 1};  // nor do its vessels
   d.view.zoom = 1;
   d.view.panPx = glm::dvec2(0.0);
   addRecentFile(d.recentFiles, edit.dataset);
@@ -51,11 +52,24 @@ void change(Document& d, const LabelStylesEdit& edit) {
   d.labels.showRemoved = edit.showRemoved;
 }
 void change(Document& d, const LabelFileEdit& edit) { d.labels.file = edit.file; }
+void change(Document& d, const VesselPathsEdit& edit) {
+  d.vessels.paths = edit.paths;
+  d.vessels.unsaved = true;
+  ++d.vessels.revision;
+}
+void change(Document& d, const VesselFileEdit& edit) {
+  d.vessels.paths = edit.paths;
+  d.vessels.file = edit.file;
+  d.vessels.unsaved = false;
+  ++d.vessels.revision;
+}
 void change(Document& d, const PanelOpenEdit& edit) { d.panelsOpen[edit.title] = edit.open; }
 void change(Document& d, const SessionEdit& edit) {
   std::string dataset = std::move(d.dataset);
   std::vector<std::string> recent = std::move(d.recentFiles);
+  const std::uint64_t revision = d.vessels.revision;
   d = edit.session;
+  d.vessels.revision = revision + 1;
   d.dataset = std::move(dataset);
   d.recentFiles = std::move(recent);
 }
