@@ -75,13 +75,13 @@ void App::dropCenterlines() {
 // they change (their revision) or the dataset does.
 void App::syncVesselCenterlines() {
   VesselGlyphPanel& vg = vessel_;
+  vg.file = doc().vessels.file;
   if (vg.revision == doc().vessels.revision && vg.revisionKnown) return;
   vg.revision = doc().vessels.revision;
   vg.revisionKnown = true;
   Centerlines centerlines = centerlinesOf(doc().vessels);
   if (centerlines.paths.empty()) vg.physical.reset();
   else vg.physical = std::move(centerlines);
-  vg.file = doc().vessels.file;
   vg.inVolume.reset();
 }
 
@@ -154,7 +154,7 @@ void App::drawVesselSection() {
   info.loading = vg.load.running();
   info.loadingFile = vg.loading.given;
   info.physical = vg.physical ? &*vg.physical : nullptr;
-  info.file = vg.file;
+  info.file = vg.file.empty() ? "traced in the Vessels section" : vg.file;
   info.warnings = vg.warnings;
   info.error = vg.error;
   info.problem = vg.problem;

@@ -34,7 +34,8 @@ TraceSettings traceSettings(const VesselsPanelUi& ui) {
 
 void App::drawVesselsSection() {
   const ImVec2 top = ImGui::GetCursorScreenPos();
-  if (!sectionHeader("Vessels")) return;
+  // Closed until opened (as Labels): the sections below it stay in view on a small screen.
+  if (!sectionHeader("Vessels", false)) return;
   VesselsPanel& v = vessels_;
   VesselsPanelInfo info;
   info.hasVolume = data_.volume.voxelCount() > 0;

@@ -77,7 +77,6 @@ void drawPathRow(const VesselPath& path, int index, VesselsPanelUi& ui, bool& re
   if (ImGui::Selectable(label, ui.selectedPath == index, 0, ImVec2(330, 0))) {
     ui.selectedPath = index;
     ui.selectedPoint = -1;
-    ui.rename = path.name;
   }
   noteRect(rects, "vessels_path_" + std::to_string(index));
   ImGui::SameLine();
@@ -106,10 +105,12 @@ void drawSelectedPath(const VesselsState& vessels, VesselsPanelUi& ui, VesselsPa
                       WidgetRects& rects) {
   if (ui.selectedPath < 0 || ui.selectedPath >= int(vessels.paths.size())) return;
   const VesselPath& path = vessels.paths[ui.selectedPath];
+  if (!ui.renaming) ui.rename = path.name;  // the field shows the name unless being typed in
   char name[96];
   std::snprintf(name, sizeof name, "%s", ui.rename.c_str());
   ImGui::SetNextItemWidth(200);
   if (ImGui::InputText("name##vesselpath", name, sizeof name)) ui.rename = name;
+  ui.renaming = ImGui::IsItemActive();
   noteRect(rects, "vessels_rename");
   if (ImGui::IsItemDeactivatedAfterEdit() && !ui.rename.empty() && ui.rename != path.name) {
     std::vector<VesselPath> renamed = vessels.paths;

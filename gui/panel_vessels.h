@@ -26,6 +26,7 @@ struct VesselsPanelUi {
   double calciumHu = 3000;
   std::string path = "vessels.mrk.json";  // the save / load field
   std::string rename;                     // the selected path's name as typed
+  bool renaming = false;                  // the name field has the keyboard
 };
 
 struct VesselsPanelInfo {
