@@ -202,6 +202,7 @@ class App {
   void startNextTrace();
   void pollVesselJobs();
   void changeVessels(std::vector<VesselPath> paths, const std::string& what);  // one undo step
+  void stepVessels(std::vector<VesselsStep>& from, std::vector<VesselsStep>& to, const char* done);
   void undoVessels();
   void redoVessels();
   void resetTracer();   // new settings or dataset: the next click starts a new tracer

@@ -42,7 +42,7 @@ void App::applySession(const Document& session) {
   vessels_.redo.clear();
   vessels_.ui.selectedPath = -1;
   const bool sameDataset = session.dataset == data_.name || session.dataset.empty();
-  if (!sameDataset && !session.vessels.paths.empty()) vessels_.pending = session.vessels;
+  if (!sameDataset && session.vessels.unsaved) vessels_.pending = session.vessels;
   loadSessionCenterlines();  // checked against the session's dataset once that is there
   panelsToApply_ = session.panelsOpen;
   labels_.pendingFile = session.labels.file;  // read once its dataset is there

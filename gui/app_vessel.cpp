@@ -54,13 +54,14 @@ void App::loadVesselCenterlines(const CenterlineLoad& request) {
   });
 }
 
-// The document's centerline file, loaded in the background; none, or paths kept inline (a
-// session's): nothing to read.
+// The document's centerline file, loaded in the background. Paths a session keeps inline that no
+// file holds (traced, unsaved) are the session's own; saved ones are read again from their file,
+// so a file changed since is what opens, and a missing one says so.
 void App::loadSessionCenterlines() {
   const VesselGlyphState& set = doc().vesselGlyph;
   vessel_.load.stop();
   dropCenterlines();
-  if (!doc().vessels.paths.empty()) return;
+  if (doc().vessels.unsaved && !doc().vessels.paths.empty()) return;
   if (set.centerlines.empty() && set.centerlinesAbsolute.empty()) return;
   vessel_.ui.path = set.centerlines.empty() ? set.centerlinesAbsolute : set.centerlines;
   loadVesselCenterlines({vessel_.ui.path, set.centerlinesAbsolute, CenterlineLoad::From::session});
@@ -113,6 +114,7 @@ void App::pollCenterlineLoad() {
     message_ = error.what();
     // A session's file that is gone or broken: the rest of the session stands, VesselGlyph is off.
     if (vg.loading.from == CenterlineLoad::From::session) {
+      commit(VesselFileEdit{});
       VesselGlyphState off = doc().vesselGlyph;
       off.enabled = false;
       commit(VesselGlyphEdit{off});

@@ -170,23 +170,18 @@ void App::changeVessels(std::vector<VesselPath> paths, const std::string& what) 
   commit(VesselPathsEdit{std::move(paths)});
 }
 
-void App::undoVessels() {
-  if (vessels_.undo.empty()) return;
-  VesselsStep step = std::move(vessels_.undo.back());
-  vessels_.undo.pop_back();
-  vessels_.redo.push_back({doc().vessels.paths, step.what});
+// Undo and redo: the top of one stack becomes the list, the list goes onto the other.
+void App::stepVessels(std::vector<VesselsStep>& from, std::vector<VesselsStep>& to, const char* done) {
+  if (from.empty()) return;
+  VesselsStep step = std::move(from.back());
+  from.pop_back();
+  to.push_back({doc().vessels.paths, step.what});
   commit(VesselPathsEdit{std::move(step.paths)});
-  message_ = "undid " + step.what;
+  message_ = done + (" " + step.what);
 }
 
-void App::redoVessels() {
-  if (vessels_.redo.empty()) return;
-  VesselsStep step = std::move(vessels_.redo.back());
-  vessels_.redo.pop_back();
-  vessels_.undo.push_back({doc().vessels.paths, step.what});
-  commit(VesselPathsEdit{std::move(step.paths)});
-  message_ = "redid " + step.what;
-}
+void App::undoVessels() { stepVessels(vessels_.undo, vessels_.redo, "undid"); }
+void App::redoVessels() { stepVessels(vessels_.redo, vessels_.undo, "redid"); }
 
 void App::resetTracer() {
   vessels_.job.stop();

@@ -140,30 +140,14 @@ void drawSelectedPath(const VesselsState& vessels, VesselsPanelUi& ui, VesselsPa
 
 void drawUndoAndFiles(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsPanelResult& result,
                       WidgetRects& rects) {
-  ImGui::BeginDisabled(!info.canUndo);
-  result.undo = ImGui::Button("Undo##vessels");
-  noteRect(rects, "vessels_undo");
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && info.canUndo)
-    ImGui::SetTooltip("undo %s (Ctrl+Z)", info.undoWhat.c_str());
+  result.undo = drawStepButton("Undo##vessels", "vessels_undo", info.canUndo,
+                               "undo " + info.undoWhat + " (Ctrl+Z)", rects);
   ImGui::SameLine();
-  ImGui::BeginDisabled(!info.canRedo);
-  result.redo = ImGui::Button("Redo##vessels");
-  noteRect(rects, "vessels_redo");
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && info.canRedo)
-    ImGui::SetTooltip("redo %s (Ctrl+Shift+Z)", info.redoWhat.c_str());
-  char path[512];
-  std::snprintf(path, sizeof path, "%s", ui.path.c_str());
-  ImGui::SetNextItemWidth(230);
-  if (ImGui::InputText("##vesselspath", path, sizeof path)) ui.path = path;
-  noteRect(rects, "vessels_path");
-  ImGui::SameLine();
-  result.save = ImGui::Button("Save##vessels");
-  noteRect(rects, "vessels_save");
-  ImGui::SameLine();
-  result.load = ImGui::Button("Load##vessels");
-  noteRect(rects, "vessels_load");
+  result.redo = drawStepButton("Redo##vessels", "vessels_redo", info.canRedo,
+                               "redo " + info.redoWhat + " (Ctrl+Shift+Z)", rects);
+  const SaveLoadClicks clicks = drawSaveLoad(ui.path, "vessels", 230, "Save", "Load", rects);
+  result.save = clicks.save;
+  result.load = clicks.load;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip(".mrk.json (3D Slicer), .vtp (vmtk), .csv");
   if (!info.file.empty())
     ImGui::TextDisabled("%s%s", info.file.c_str(), info.unsaved ? " (changed)" : "");

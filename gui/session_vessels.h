@@ -2,7 +2,8 @@
 // The Vessels section in a session file: "vessels": {"file", "unsaved", "paths": [{"name",
 // "control_points_mm": [[x, y, z], ...], "points": [[x, y, z, radius_mm], ...]}]}, physical mm
 // (LPS), inline so a session keeps traced paths that were never saved to a file. Numbers are
-// written so they read back as the same doubles.
+// written so they read back as the same doubles. On restore the app uses the inline paths when
+// they were unsaved, else reads their file again (gui/app_vessel.cpp).
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
