@@ -208,7 +208,9 @@ class App {
   void resetTracer();   // new settings or dataset: the next click starts a new tracer
   void resetVessels();  // a new dataset: its paths went with the old one
   void saveVessels(const std::string& file);
-  std::optional<Centerlines> unsavedCenterlines() const;  // physical; exports write them beside
+  void browseVesselFiles(BrowserPurpose purpose);            // the file browser, from ui.path's folder
+  void chooseVesselFile(const std::filesystem::path& file);  // what it chose: save or load
+  std::optional<Centerlines> unsavedCenterlines() const;     // physical; exports write them beside
   nlohmann::json vesselsReport() const;
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();

@@ -109,7 +109,10 @@ void App::replaceDataset(LoadedDataset dataset) {
 
 void App::drawDataSection() {
   drawSessionBanner();
-  if (const auto chosen = drawFileBrowser(browser_)) openDataset(chosen->string());
+  if (const auto chosen = drawFileBrowser(browser_)) {
+    if (browser_.purpose == BrowserPurpose::openVolume) openDataset(chosen->string());
+    else chooseVesselFile(*chosen);
+  }
   if (!sectionHeader("Data")) return;
   DataPanelInfo info;
   info.volume = &data_.volume;

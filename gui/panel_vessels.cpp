@@ -149,6 +149,11 @@ void drawUndoAndFiles(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsP
   result.save = clicks.save;
   result.load = clicks.load;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip(".mrk.json (3D Slicer), .vtp (vmtk), .csv");
+  result.browseSave = ImGui::Button("Save as...");
+  noteRect(rects, "vessels_save_as");
+  ImGui::SameLine();
+  result.browseLoad = ImGui::Button("Open...##vessels");
+  noteRect(rects, "vessels_open");
   if (!info.file.empty())
     ImGui::TextDisabled("%s%s", info.file.c_str(), info.unsaved ? " (changed)" : "");
 }

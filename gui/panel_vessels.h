@@ -52,7 +52,8 @@ struct VesselsPanelResult {
   bool settingsChanged = false;         // tissue or calcium HU: a new tracer
   bool cancel = false;
   bool undo = false, redo = false;
-  bool save = false, load = false;  // ui.path
+  bool save = false, load = false;              // ui.path
+  bool browseSave = false, browseLoad = false;  // the file browser first
 };
 
 VesselsPanelResult drawVesselsPanel(const VesselsState& vessels, VesselsPanelUi& ui,
