@@ -51,6 +51,7 @@ nlohmann::json App::report() const {
   const OrientationLetters letters = orientationLetters(doc().view.axis, doc().view.angleDeg);
   nlohmann::json layout = {{"viewport", rectJson(viewport_.min, viewport_.max)},
                            {"tf_plot", rectJson(tfPanel_.editor.plotMin, tfPanel_.editor.plotMax)}};
+  if (viewport_.hasImage) layout["viewport_image"] = rectJson(viewport_.imageMin, viewport_.imageMax);
   for (const auto& [name, rect] : widgetRects_) layout[name] = rectJson(rect.first, rect.second);
   return {
       {"state", nlohmann::json::parse(toJson(doc()))},
