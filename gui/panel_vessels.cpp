@@ -52,14 +52,17 @@ void drawContrast(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsPanel
     ImGui::Text("contrast %.0f .. %.0f HU", info.contrast->lowHu, info.contrast->highHu);
   else ImGui::TextDisabled("contrast: from the first click");
   ImGui::SetNextItemWidth(90);
-  result.settingsChanged |= ImGui::InputDouble("tissue HU", &ui.tissueHu, 0, 0, "%.0f");
+  // Typed values count once the field lets go: every keystroke would start the tracer over.
+  ImGui::InputDouble("tissue HU", &ui.tissueHu, 0, 0, "%.0f");
+  result.settingsChanged |= ImGui::IsItemDeactivatedAfterEdit();
   noteRect(rects, "vessels_tissue_hu");
   ImGui::SameLine();
   result.settingsChanged |= ImGui::Checkbox("calcium from", &ui.fixedCalcium);
   ImGui::SameLine();
   ImGui::BeginDisabled(!ui.fixedCalcium);
   ImGui::SetNextItemWidth(80);
-  result.settingsChanged |= ImGui::InputDouble("HU##calcium", &ui.calciumHu, 0, 0, "%.0f");
+  ImGui::InputDouble("HU##calcium", &ui.calciumHu, 0, 0, "%.0f");
+  result.settingsChanged |= ImGui::IsItemDeactivatedAfterEdit();
   noteRect(rects, "vessels_calcium_hu");
   ImGui::EndDisabled();
   helpMarker(
