@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_angioray.h"
+#include "tests/support/widget_points.h"
 
 namespace angio {
 namespace {
@@ -30,18 +31,9 @@ using test_support::runAngioray;
 // Tall enough for the side panel down to the Export section with the Vessels section open.
 const std::string kWindow = " --size 1200x1800 --timeout 120";
 
-std::string middleOf(const Json& rect) {
-  char text[64];
-  std::snprintf(text, sizeof text, "[%.1f, %.1f]", (rect[0].get<float>() + rect[2].get<float>()) / 2,
-                (rect[1].get<float>() + rect[3].get<float>()) / 2);
-  return text;
-}
-std::string leftEndOf(const Json& rect) {
-  char text[64];
-  std::snprintf(text, sizeof text, "[%.1f, %.1f]", rect[0].get<float>() + 8,
-                (rect[1].get<float>() + rect[3].get<float>()) / 2);
-  return text;
-}
+using test_support::leftEnd;
+using test_support::middleOf;
+
 std::string mmText(const glm::dvec3& p) {
   char text[96];
   std::snprintf(text, sizeof text, "[%.3f, %.3f, %.3f]", p.x, p.y, p.z);
@@ -104,7 +96,7 @@ class GuiVessels : public ::testing::Test {
                              middleOf(closed["section_Vessels"]) + R"(}, {"wait_ms": 100})";
     const Json opened = suiteState(open, "open.json")["runtime"]["layout"];
     suite_->openTool =
-        open + R"(, {"click": )" + leftEndOf(opened["vessels_trace_tool"]) + R"(}, {"wait_ms": 50})";
+        open + R"(, {"click": )" + leftEnd(opened["vessels_trace_tool"]) + R"(}, {"wait_ms": 50})";
     suite_->traced = suiteState(traceSteps(), "traced.json");
     suite_->selected = suiteState(traceSteps() + ", " + selectSecond(), "selected.json");
   }
@@ -206,8 +198,8 @@ TEST_F(GuiVessels, AMovedPointIsSnappedAndThePathTracedAgainADeletedOneLeavesThe
   const Json& rows = suite_->selected["runtime"]["layout"];
   const auto run = runIn(
       dir, "[" + traceSteps() + ", " + selectSecond() + R"(, {"click": )" +
-               leftEndOf(rows["vessels_move_point"]) + R"(}, {"wait_ms": 50}, )" + clickAt(lower) +
-               ", " + stateStep("moved.json") + ", " + selectSecond() + R"(, {"click": )" +
+               leftEnd(rows["vessels_move_point"]) + R"(}, {"wait_ms": 50}, )" + clickAt(lower) + ", " +
+               stateStep("moved.json") + ", " + selectSecond() + R"(, {"click": )" +
                middleOf(rows["vessels_delete_point"]) +
                R"(}, {"wait_ms": 50}, {"wait_level": "high"}, )" + stateStep("deleted.json") + "]");
   ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -250,7 +242,7 @@ TEST_F(GuiVessels, ASessionKeepsTheTracedPath) {
 
 TEST_F(GuiVessels, VesselGlyphRendersTheTracedPathAndAnExportWritesItBesideItself) {
   const Json& layout = suite_->traced["runtime"]["layout"];
-  const std::string vesselGlyph = traceSteps() + R"(, {"click": )" + leftEndOf(layout["vg_enable"]) +
+  const std::string vesselGlyph = traceSteps() + R"(, {"click": )" + leftEnd(layout["vg_enable"]) +
                                   R"(}, {"move": [5, 5]}, {"wait_level": "high"})";
   const std::string exportSteps = R"({"click": )" + middleOf(layout["export_path"]) +
                                   R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("view.png") +
