@@ -35,7 +35,10 @@ TraceSettings traceSettings(const VesselsPanelUi& ui) {
 void App::drawVesselsSection() {
   const ImVec2 top = ImGui::GetCursorScreenPos();
   // Closed until opened (as Labels): the sections below it stay in view on a small screen.
-  if (!sectionHeader("Vessels", false)) return;
+  if (!sectionHeader("Vessels", false)) {
+    vessels_.focused = false;  // keys go to the TF editor again
+    return;
+  }
   VesselsPanel& v = vessels_;
   VesselsPanelInfo info;
   info.hasVolume = data_.volume.voxelCount() > 0;
