@@ -269,6 +269,36 @@ TEST_F(GuiVessels, VesselGlyphRendersTheTracedPathAndAnExportWritesItBesideItsel
   EXPECT_EQ(first, second);
 }
 
+TEST_F(GuiVessels, ARotationSeriesWritesTheTracedPathIntoItsFolderAndEachViewRendersAgain) {
+  const Json& layout = suite_->traced["runtime"]["layout"];
+  const std::string folder = file("series");
+  const std::string vesselGlyph =
+      R"({"click": )" + leftEnd(layout["vg_enable"]) + R"(}, {"move": [5, 5]}, {"wait_level": "high"})";
+  const std::string twoViews = R"({"click": )" + middleOf(layout["series_count"]) +
+                               R"(}, {"key": "Ctrl+A"}, {"text": "2"}, {"key": "Enter"})";
+  const std::string intoFolder = R"({"click": )" + middleOf(layout["series_folder"]) +
+                                 R"(}, {"key": "Ctrl+A"}, {"text": ")" + folder +
+                                 R"("}, {"key": "Enter"})";
+  const std::string start = R"({"click": )" + middleOf(layout["series_button"]) +
+                            R"(}, {"wait_ms": 100}, {"wait_level": "high"})";
+  const std::string steps =
+      traceSteps() + ", " + vesselGlyph + ", " + twoViews + ", " + intoFolder + ", " + start;
+  const auto run = runIn(dir, "[" + steps + "]");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const fs::path beside = fs::path(folder) / "vessels.centerlines.csv";
+  ASSERT_TRUE(fs::exists(beside));
+  std::ifstream sidecarFile(fs::path(folder) / "view-001.png.json");
+  ASSERT_TRUE(sidecarFile) << run.output;
+  EXPECT_EQ(Json::parse(sidecarFile)["vessel_glyph"]["centerlines"], beside.string());
+  const auto again =
+      runAngioray("render --params " + folder + "/view-001.png.json -o " + file("again.png"));
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  std::ifstream a(folder + "/view-001.png", std::ios::binary), b(file("again.png"), std::ios::binary);
+  const std::string first((std::istreambuf_iterator<char>(a)), {}),
+      second((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_TRUE(first == second);
+}
+
 TEST_F(GuiVessels, ANewDatasetDropsThePathsAndSaysSo) {
   const Json after = state(traceSteps() + R"(, {"open": ")" + at("phantom.nrrd") +
                                R"("}, {"wait_ms": 100}, {"wait_level": "high"})",
