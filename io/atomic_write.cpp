@@ -1,6 +1,7 @@
 #include "io/atomic_write.h"
 
 #include <atomic>
+#include <fstream>
 #include <string>
 
 #include <unistd.h>
@@ -35,6 +36,21 @@ void writeAtomically(const std::filesystem::path& target,
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
     throw;
+  }
+}
+
+void writeBytesAtomically(const std::filesystem::path& target, const std::string& bytes) {
+  try {
+    writeAtomically(target, [&](const std::filesystem::path& temp) {
+      std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+      if (!out) throw InputError(target, "cannot open for writing");
+      out << bytes;
+      out.close();
+      if (!out) throw InputError(target, "write failed");
+    });
+  } catch (const std::filesystem::filesystem_error& error) {
+    // The rename over the target failed (a folder of that name, another file system).
+    throw InputError(target, "cannot write: " + error.code().message());
   }
 }
 

@@ -1,15 +1,13 @@
 #include "io/centerline_csv.h"
 
 #include <charconv>
-#include <cstdio>
-#include <fstream>
 #include <map>
-#include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "io/atomic_write.h"
 #include "io/input_error.h"
+#include "io/number_text.h"
 
 namespace angio {
 
@@ -19,49 +17,117 @@ namespace {
 
 constexpr std::string_view kHeader = "path,x_mm,y_mm,z_mm,radius_mm";
 
-void writeRows(const Centerlines& centerlines, std::ostream& out) {
-  out << kHeader << '\n';
-  char row[160];
-  for (std::size_t p = 0; p < centerlines.paths.size(); ++p) {
-    for (const CenterlinePoint& point : centerlines.paths[p].points) {
-      // Three decimals (micrometres), as in the reference file; snprintf is locale-independent
-      // for the "C" locale the program runs in.
-      std::snprintf(row, sizeof row, "%zu,%.3f,%.3f,%.3f,%.3f\n", p, point.positionMm.x,
-                    point.positionMm.y, point.positionMm.z, point.radiusMm);
-      out << row;
-    }
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string lineText(int line) { return "line " + std::to_string(line); }
+
+// --- Writing ------------------------------------------------------------------------------------
+
+// RFC 4180 quoting where a field needs it; also for leading or trailing spaces, which the reader
+// trims from unquoted fields.
+std::string csvField(const std::string& text) {
+  const bool plain = !text.empty() && text.find_first_of(",\"\r\n") == std::string::npos &&
+                     !isSpace(text.front()) && !isSpace(text.back());
+  if (plain) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
   }
+  return quoted + '"';
 }
 
-std::string_view trimmed(std::string_view text) {
-  const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-  while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
-  while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
+// Each path's id, the name or else the index; two equal ids would merge the paths on reading.
+std::vector<std::string> pathIds(const Centerlines& centerlines, const fs::path& file) {
+  std::vector<std::string> ids;
+  std::map<std::string, std::size_t> pathOfId;
+  for (std::size_t p = 0; p < centerlines.paths.size(); ++p) {
+    const std::string& name = centerlines.paths[p].name;
+    ids.push_back(name.empty() ? std::to_string(p) : name);
+    const auto [found, added] = pathOfId.emplace(ids.back(), p);
+    if (!added) {
+      throw InputError(file, "paths " + std::to_string(found->second) + " and " + std::to_string(p) +
+                                 " would both be written as path '" + ids.back() +
+                                 "' (a CSV file groups rows by path, so each needs a name of its own)");
+    }
+  }
+  return ids;
+}
+
+std::string csvText(const Centerlines& centerlines, const fs::path& file) {
+  const std::vector<std::string> ids = pathIds(centerlines, file);
+  std::string text = std::string(kHeader) + '\n';
+  for (std::size_t p = 0; p < centerlines.paths.size(); ++p) {
+    const std::string id = csvField(ids[p]);
+    for (const CenterlinePoint& point : centerlines.paths[p].points) {
+      text += id + ',' + numberText(point.positionMm.x) + ',' + numberText(point.positionMm.y) + ',' +
+              numberText(point.positionMm.z) + ',' + numberText(point.radiusMm) + '\n';
+    }
+  }
   return text;
 }
 
-std::vector<std::string_view> splitFields(std::string_view line) {
-  std::vector<std::string_view> fields;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trimmed(line.substr(start, comma - start)));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
+// --- Reading ------------------------------------------------------------------------------------
+
+struct Record {
+  int line = 0;  // 1-based, where the record starts
+  std::vector<std::string> fields;
+};
+
+void skipSpaces(std::string_view text, std::size_t& position) {
+  while (position < text.size() && isSpace(text[position])) ++position;
 }
 
-// Lines with their 1-based numbers, blank lines left out.
-std::vector<std::pair<int, std::string_view>> nonBlankLines(std::string_view text) {
-  std::vector<std::pair<int, std::string_view>> lines;
-  int number = 0;
-  for (std::size_t start = 0; start <= text.size();) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    ++number;
-    const std::string_view line = trimmed(text.substr(start, end - start));
-    if (!line.empty()) lines.emplace_back(number, line);
-    start = end + 1;
+// A field in double quotes, from its opening quote; "" is a quote, line breaks are kept (and
+// counted in `line`).
+std::string quotedField(std::string_view text, std::size_t& position, int& line,
+                        const fs::path& source) {
+  const int startLine = line;
+  std::string field;
+  for (++position;; ++position) {
+    if (position >= text.size())
+      throw InputError(source, lineText(startLine) + ": quoted field not closed");
+    if (text[position] == '"') {
+      if (position + 1 == text.size() || text[position + 1] != '"') break;
+      ++position;
+    }
+    if (text[position] == '\n') ++line;
+    field += text[position];
   }
-  return lines;
+  ++position;  // the closing quote
+  skipSpaces(text, position);
+  if (position < text.size() && text[position] != ',' && text[position] != '\n') {
+    throw InputError(source, lineText(line) + ": text after the closing quote");
+  }
+  return field;
+}
+
+// One field from `position`, which is left at the comma, line break or end after it. Unquoted
+// fields are trimmed of spaces (and of the '\r' of CRLF line ends).
+std::string nextField(std::string_view text, std::size_t& position, int& line, const fs::path& source) {
+  skipSpaces(text, position);
+  if (position < text.size() && text[position] == '"') return quotedField(text, position, line, source);
+  const std::size_t end = std::min(text.find_first_of(",\n", position), text.size());
+  std::size_t last = end;
+  while (last > position && isSpace(text[last - 1])) --last;
+  std::string field(text.substr(position, last - position));
+  position = end;
+  return field;
+}
+
+// The records of RFC 4180 text, blank lines left out.
+std::vector<Record> csvRecords(std::string_view text, const fs::path& source) {
+  std::vector<Record> records;
+  int line = 1;
+  for (std::size_t position = 0; position < text.size(); ++position, ++line) {
+    Record record{line, {nextField(text, position, line, source)}};
+    while (position < text.size() && text[position] == ',') {
+      ++position;
+      record.fields.push_back(nextField(text, position, line, source));
+    }
+    if (record.fields.size() > 1 || !record.fields.front().empty()) records.push_back(std::move(record));
+  }
+  return records;
 }
 
 // from_chars takes "nan" and "inf" too; the model's validation reports those with the path.
@@ -72,64 +138,54 @@ double parseNumber(std::string_view field, const fs::path& source, int line) {
   if (!field.empty() && *first == '+') ++first;
   const auto [end, error] = std::from_chars(first, last, value);
   if (error != std::errc() || end != last || field.empty()) {
-    throw InputError(source,
-                     "line " + std::to_string(line) + ": '" + std::string(field) + "' is not a number");
+    throw InputError(source, lineText(line) + ": '" + std::string(field) + "' is not a number");
   }
   return value;
 }
 
-void checkHeader(std::string_view header, const fs::path& source, int line) {
+void checkHeader(const Record& header, const fs::path& source) {
   std::string columns;
-  for (std::string_view field : splitFields(header)) {
-    if (!columns.empty()) columns += ',';
-    columns += field;
-  }
+  for (const std::string& field : header.fields) columns += (columns.empty() ? "" : ",") + field;
   if (columns != kHeader) {
-    throw InputError(
-        source, "line " + std::to_string(line) + ": expected the header '" + std::string(kHeader) + "'");
+    throw InputError(source,
+                     lineText(header.line) + ": expected the header '" + std::string(kHeader) + "'");
   }
+}
+
+CenterlinePoint parsePoint(const Record& record, const fs::path& source) {
+  const glm::dvec3 position{parseNumber(record.fields[1], source, record.line),
+                            parseNumber(record.fields[2], source, record.line),
+                            parseNumber(record.fields[3], source, record.line)};
+  return {position, parseNumber(record.fields[4], source, record.line)};
 }
 
 }  // namespace
 
 void writeCenterlinesCsv(const Centerlines& centerlines, const fs::path& file) {
-  if (centerlines.frame != CenterlineFrame::physical) {
-    throw std::logic_error("centerline CSV holds physical coordinates, not volume-frame ones");
-  }
-  writeAtomically(file, [&](const fs::path& temp) {
-    std::ofstream out(temp, std::ios::binary);
-    if (!out) throw InputError(file, "cannot open for writing");
-    writeRows(centerlines, out);
-    out.flush();
-    if (!out) throw InputError(file, "write failed");
-  });
+  requirePhysicalFrame(centerlines, "centerline CSV");
+  writeBytesAtomically(file, csvText(centerlines, file));
 }
 
 Centerlines parseCenterlinesCsv(const std::string& text, const fs::path& source,
                                 const CenterlineLoadOptions& options) {
-  const auto lines = nonBlankLines(text);
-  if (lines.empty()) throw InputError(source, "empty file (no header line)");
-  checkHeader(lines.front().second, source, lines.front().first);
+  const std::vector<Record> records = csvRecords(text, source);
+  if (records.empty()) throw InputError(source, "empty file (no header line)");
+  checkHeader(records.front(), source);
 
   Centerlines centerlines;
   centerlines.source = source.string();
   std::map<std::string, std::size_t, std::less<>> pathOfId;
-  for (std::size_t n = 1; n < lines.size(); ++n) {
-    const auto [line, row] = lines[n];
-    const std::vector<std::string_view> fields = splitFields(row);
-    if (fields.size() != 5) {
-      throw InputError(source, "line " + std::to_string(line) + ": " + std::to_string(fields.size()) +
+  for (std::size_t n = 1; n < records.size(); ++n) {
+    const Record& record = records[n];
+    if (record.fields.size() != 5) {
+      throw InputError(source, lineText(record.line) + ": " + std::to_string(record.fields.size()) +
                                    " fields, expected 5");
     }
-    if (fields[0].empty()) throw InputError(source, "line " + std::to_string(line) + ": no path id");
-    auto found = pathOfId.find(fields[0]);
-    if (found == pathOfId.end()) {
-      found = pathOfId.emplace(std::string(fields[0]), centerlines.paths.size()).first;
-      centerlines.paths.push_back({std::string(fields[0]), {}});
-    }
-    const glm::dvec3 position{parseNumber(fields[1], source, line), parseNumber(fields[2], source, line),
-                              parseNumber(fields[3], source, line)};
-    centerlines.paths[found->second].points.push_back({position, parseNumber(fields[4], source, line)});
+    const std::string& id = record.fields[0];
+    if (id.empty()) throw InputError(source, lineText(record.line) + ": no path id");
+    const auto [found, added] = pathOfId.emplace(id, centerlines.paths.size());
+    if (added) centerlines.paths.push_back({id, {}});
+    centerlines.paths[found->second].points.push_back(parsePoint(record, source));
   }
   checkLoadedCenterlines(centerlines, source, options);
   return centerlines;

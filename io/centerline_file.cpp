@@ -1,7 +1,9 @@
 #include "io/centerline_file.h"
 
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "io/centerline_csv.h"
 #include "io/centerline_markups.h"
@@ -20,6 +22,16 @@ bool endsWith(const std::string& text, const std::string& suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+enum class CenterlineFormat { vtp, markups, csv };
+
+std::optional<CenterlineFormat> formatOf(const fs::path& file) {
+  const std::string name = lowercase(file.filename().string());
+  if (endsWith(name, ".vtp")) return CenterlineFormat::vtp;
+  if (endsWith(name, ".json")) return CenterlineFormat::markups;  // .mrk.json too
+  if (endsWith(name, ".csv")) return CenterlineFormat::csv;
+  return std::nullopt;
+}
+
 void warnEach(const Centerlines& centerlines, const std::vector<CenterlineIssue>& issues,
               const CenterlineLoadOptions& options) {
   if (!options.warn) return;
@@ -31,11 +43,19 @@ void warnEach(const Centerlines& centerlines, const std::vector<CenterlineIssue>
 }  // namespace
 
 Centerlines loadCenterlines(const fs::path& file, const CenterlineLoadOptions& options) {
-  const std::string name = lowercase(file.filename().string());
-  if (endsWith(name, ".vtp")) return readCenterlinesVtp(file, options);
-  if (endsWith(name, ".json")) return readCenterlinesMarkups(file, options);  // .mrk.json too
-  if (endsWith(name, ".csv")) return readCenterlinesCsv(file, options);
+  const std::optional<CenterlineFormat> format = formatOf(file);
+  if (format == CenterlineFormat::vtp) return readCenterlinesVtp(file, options);
+  if (format == CenterlineFormat::markups) return readCenterlinesMarkups(file, options);
+  if (format == CenterlineFormat::csv) return readCenterlinesCsv(file, options);
   throw InputError(file, "unknown centerline format (expected .vtp, .mrk.json, .json or .csv)");
+}
+
+void saveCenterlines(const Centerlines& centerlines, const fs::path& file) {
+  const std::optional<CenterlineFormat> format = formatOf(file);
+  if (format == CenterlineFormat::vtp) return writeCenterlinesVtp(centerlines, file);
+  if (format == CenterlineFormat::markups) return writeCenterlinesMarkups(centerlines, file);
+  if (format == CenterlineFormat::csv) return writeCenterlinesCsv(centerlines, file);
+  throw InputError(file, "unknown centerline format (use .mrk.json, .vtp or .csv)");
 }
 
 void checkLoadedCenterlines(const Centerlines& centerlines, const fs::path& file,
@@ -62,6 +82,12 @@ std::string readCenterlineFileBytes(const fs::path& file) {
   bytes << in.rdbuf();
   if (in.bad()) throw InputError(file, "cannot read the file");
   return bytes.str();
+}
+
+void requirePhysicalFrame(const Centerlines& centerlines, const std::string& format) {
+  if (centerlines.frame != CenterlineFrame::physical) {
+    throw std::logic_error(format + " holds physical coordinates, not volume-frame ones");
+  }
 }
 
 }  // namespace angio

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/atomic_write.h"
 #include "io/input_error.h"
 #include "io/lowercase.h"
 
@@ -13,6 +14,7 @@ namespace angio {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
+using OrderedJson = nlohmann::ordered_json;
 
 namespace {
 
@@ -119,7 +121,98 @@ CenterlinePath readCurve(const Json& markup, std::size_t index, const fs::path& 
   return path;
 }
 
+// --- Writing ------------------------------------------------------------------------------------
+
+// Slicer reads any markups-schema-v1.x.y; this is the version whose fields are written here.
+constexpr const char* kSchema =
+    "https://raw.githubusercontent.com/slicer/slicer/main/Modules/Loadable/Markups/Resources/Schema/"
+    "markups-schema-v1.0.3.json#";
+
+OrderedJson controlPointJson(const CenterlinePath& path, std::size_t index) {
+  const glm::dvec3& p = path.points[index].positionMm;
+  const std::string id = std::to_string(index + 1);
+  return {{"id", id},
+          {"label", path.name + "-" + id},  // Slicer's default label format, "%N-%d"
+          {"position", OrderedJson::array({p.x, p.y, p.z})},
+          // The identity in RAS, written in LPS as Slicer writes it (its first two rows negated).
+          {"orientation", OrderedJson::array({-1.0, -0.0, -0.0, -0.0, -1.0, -0.0, 0.0, 0.0, 1.0})},
+          {"selected", true},
+          {"locked", false},
+          {"visibility", true},
+          {"positionStatus", "defined"}};
+}
+
+// SlicerVMTK's centerline curves carry the lumen radius as a static per-point measurement
+// (vtkMRMLStaticMeasurement: enabled, units mm, no value, no print format).
+OrderedJson radiusJson(const CenterlinePath& path) {
+  OrderedJson radii = OrderedJson::array();
+  for (const CenterlinePoint& point : path.points) radii.push_back(point.radiusMm);
+  return {{"name", "Radius"}, {"enabled", true}, {"units", "mm"}, {"controlPointValues", radii}};
+}
+
+OrderedJson curveJson(const CenterlinePath& path) {
+  OrderedJson controlPoints = OrderedJson::array();
+  for (std::size_t n = 0; n < path.points.size(); ++n)
+    controlPoints.push_back(controlPointJson(path, n));
+  return {{"type", "Curve"},
+          {"name", path.name},
+          {"coordinateSystem", "LPS"},
+          {"coordinateUnits", "mm"},
+          {"locked", false},
+          {"fixedNumberOfControlPoints", false},
+          {"labelFormat", "%N-%d"},
+          {"lastUsedControlPointNumber", path.points.size()},
+          {"controlPoints", controlPoints},
+          {"measurements", OrderedJson::array({radiusJson(path)})}};
+}
+
+// Objects and arrays that hold objects are spread one member per line; everything else (a control
+// point, a position, the radius values) stays on one line, as in Slicer's own files. dump(2) would
+// give every number a line of its own.
+bool holdsObjects(const OrderedJson& value) {
+  for (const OrderedJson& member : value) {
+    if (member.is_object() || (member.is_array() && !member.empty() && member.front().is_object())) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void appendLaidOut(const OrderedJson& value, const std::string& indent, std::string& out) {
+  // Invalid UTF-8 in a name is replaced rather than throwing halfway through a save (as tf_file).
+  const auto compact = [](const OrderedJson& json) {
+    return json.dump(-1, ' ', false, OrderedJson::error_handler_t::replace);
+  };
+  if (!value.is_structured() || !holdsObjects(value)) {
+    out += compact(value);
+    return;
+  }
+  const std::string inner = indent + "  ";
+  out += value.is_object() ? "{\n" : "[\n";
+  std::size_t left = value.size();
+  for (auto member = value.begin(); member != value.end(); ++member) {
+    out += inner;
+    if (value.is_object()) out += compact(member.key()) + ": ";
+    appendLaidOut(*member, inner, out);
+    out += --left > 0 ? ",\n" : "\n";
+  }
+  out += indent + (value.is_object() ? "}" : "]");
+}
+
+std::string markupsText(const Centerlines& centerlines) {
+  OrderedJson markups = OrderedJson::array();
+  for (const CenterlinePath& path : centerlines.paths) markups.push_back(curveJson(path));
+  std::string text;
+  appendLaidOut({{"@schema", kSchema}, {"markups", markups}}, "", text);
+  return text + "\n";
+}
+
 }  // namespace
+
+void writeCenterlinesMarkups(const Centerlines& centerlines, const fs::path& file) {
+  requirePhysicalFrame(centerlines, "a Slicer markups file");
+  writeBytesAtomically(file, markupsText(centerlines));
+}
 
 Centerlines parseCenterlinesMarkups(const std::string& text, const fs::path& source,
                                     const CenterlineLoadOptions& options) {

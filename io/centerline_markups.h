@@ -16,6 +16,14 @@
 
 namespace angio {
 
+// Writes atomically one "Curve" markup per path, as Slicer and SlicerVMTK write centerline curves:
+// "name" the path's name, LPS millimetres, control points with id, label ("<name>-<n>"), position,
+// Slicer's identity orientation, selected/locked/visibility and positionStatus "defined", and the
+// radii as the measurement "Radius" (controlPointValues). Numbers are the shortest text that reads
+// back as the same double. Throws InputError naming the file if it cannot be written;
+// `centerlines` must be in the physical frame (std::logic_error otherwise).
+void writeCenterlinesMarkups(const Centerlines& centerlines, const std::filesystem::path& file);
+
 // Throws InputError naming the file and the problem: bad JSON, no "markups" array, a position that
 // is not 3 numbers, an unknown coordinate system or unit, a radius measurement whose length does
 // not match the control points, and the model's errors (negative radius, empty path, no paths).

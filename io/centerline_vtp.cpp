@@ -17,7 +17,9 @@
 
 #include <pugixml.hpp>
 
+#include "io/atomic_write.h"
 #include "io/input_error.h"
+#include "io/number_text.h"
 
 namespace angio {
 
@@ -338,7 +340,7 @@ std::string_view elementText(const pugi::xml_node& node) {
 }
 
 // from_chars accepts "nan" and "inf"; the model's validation reports those with the path.
-std::vector<double> parseAscii(std::string_view text, std::size_t expectedValues) {
+std::vector<double> parseAsciiNumbers(std::string_view text, std::size_t expectedValues) {
   std::vector<double> values;
   values.reserve(std::min(expectedValues, text.size() / 2 + 1));
   std::size_t position = 0;
@@ -356,6 +358,11 @@ std::vector<double> parseAscii(std::string_view text, std::size_t expectedValues
     values.push_back(value);
     position = end;
   }
+  return values;
+}
+
+std::vector<double> parseAscii(std::string_view text, std::size_t expectedValues) {
+  std::vector<double> values = parseAsciiNumbers(text, expectedValues);
   if (values.size() != expectedValues) {
     throw ArrayProblem("has " + std::to_string(values.size()) + " values, expected " +
                        std::to_string(expectedValues));
@@ -423,8 +430,10 @@ std::vector<double> readDataArray(const pugi::xml_node& array, std::size_t tuple
   }
 }
 
-pugi::xml_node namedArray(const pugi::xml_node& parent, const char* name) {
-  for (const pugi::xml_node array : parent.children("DataArray")) {
+// The child `element` (VTK 9 writes a String array as <Array>, numbers as <DataArray>) named `name`.
+pugi::xml_node namedArray(const pugi::xml_node& parent, const char* name,
+                          const char* element = "DataArray") {
+  for (const pugi::xml_node array : parent.children(element)) {
     if (attribute(array, "Name") == name) return array;
   }
   return {};
@@ -480,11 +489,84 @@ std::vector<std::size_t> readLineEnds(const pugi::xml_node& lines, std::size_t c
   return ends;
 }
 
-void readPiece(const pugi::xml_node& piece, const ArrayContext& context, Centerlines& centerlines) {
+// --- Path names ---------------------------------------------------------------------------------
+
+constexpr const char* kNameArray = "CenterlineName";
+
+// VTK's ascii strings: each byte as a number (VTK writes a char as a short, so bytes above 127 are
+// negative where char is signed), each string ended by a 0.
+std::vector<std::string> asciiStrings(std::string_view text) {
+  std::vector<std::string> strings(1);
+  for (const double code : parseAsciiNumbers(text, text.size() / 2 + 1)) {
+    if (!(code >= -128 && code <= 255) || code != std::floor(code)) {
+      throw ArrayProblem("'" + formatNumber(code) + "' is not a character code");
+    }
+    if (code == 0) {
+      strings.emplace_back();
+    } else {
+      strings.back() += char(int(code));
+    }
+  }
+  if (strings.back().empty()) strings.pop_back();  // what follows the last string's 0
+  return strings;
+}
+
+// The names of a piece's line cells, or nothing (named by index) without an ascii name array.
+std::optional<std::vector<std::string>> readCellNames(const pugi::xml_node& piece, std::size_t cells,
+                                                      const ArrayContext& context,
+                                                      const CenterlineLoadOptions& options) {
+  pugi::xml_node array = namedArray(piece.child("CellData"), kNameArray);
+  if (!array) array = namedArray(piece.child("CellData"), kNameArray, "Array");
+  if (!array) return std::nullopt;
+  if (attribute(array, "type") != "String" || attribute(array, "format", "ascii") != "ascii") {
+    if (options.warn) {
+      options.warn(context.source.string() + ": CellData '" + kNameArray +
+                   "' is not an ascii String array; skipped, paths are named by their index");
+    }
+    return std::nullopt;
+  }
+  try {
+    std::vector<std::string> names = asciiStrings(elementText(array));
+    if (names.size() != cells) {
+      throw ArrayProblem("has " + std::to_string(names.size()) + " names, expected " +
+                         std::to_string(cells) + " (one per line cell)");
+    }
+    return names;
+  } catch (const ArrayProblem& problem) {
+    throw InputError(context.source, "DataArray '" + std::string(kNameArray) + "': " + problem.what());
+  }
+}
+
+// --- Line cells ---------------------------------------------------------------------------------
+
+struct PiecePoints {
+  std::vector<glm::dvec3> positions;
+  std::vector<double> radii;
+};
+
+// The points of connectivity[begin, end), each index checked against the piece's points.
+std::vector<CenterlinePoint> cellPoints(const std::vector<double>& connectivity, std::size_t begin,
+                                        std::size_t end, const PiecePoints& points,
+                                        const fs::path& source) {
+  std::vector<CenterlinePoint> cell;
+  for (std::size_t n = begin; n < end; ++n) {
+    const double index = connectivity[n];
+    if (!(index >= 0 && index < double(points.positions.size())) || index != std::floor(index)) {
+      throw InputError(source, "Lines connectivity: point index " + formatNumber(index) +
+                                   " out of range (" + std::to_string(points.positions.size()) +
+                                   " points)");
+    }
+    cell.push_back({points.positions[std::size_t(index)], points.radii[std::size_t(index)]});
+  }
+  return cell;
+}
+
+void readPiece(const pugi::xml_node& piece, const ArrayContext& context,
+               const CenterlineLoadOptions& options, Centerlines& centerlines) {
   const std::size_t pointCount = pieceCount(piece, "NumberOfPoints", context.source);
   const std::size_t cells = pieceCount(piece, "NumberOfLines", context.source);
-  const std::vector<glm::dvec3> points = readPoints(piece, pointCount, context);
-  const std::vector<double> radii = readRadii(piece, pointCount, context);
+  const PiecePoints points{readPoints(piece, pointCount, context),
+                           readRadii(piece, pointCount, context)};
   if (cells == 0) return;
 
   const pugi::xml_node lines = piece.child("Lines");
@@ -493,22 +575,82 @@ void readPiece(const pugi::xml_node& piece, const ArrayContext& context, Centerl
   const pugi::xml_node connectivityArray = namedArray(lines, "connectivity");
   if (!connectivityArray) throw InputError(context.source, "<Lines> has no \"connectivity\" DataArray");
   const std::vector<double> connectivity = readDataArray(connectivityArray, ends.back(), 1, context);
+  const std::optional<std::vector<std::string>> names = readCellNames(piece, cells, context, options);
 
-  std::size_t begin = 0;
   for (std::size_t cell = 0; cell < cells; ++cell) {
-    CenterlinePath& path = centerlines.paths.emplace_back();
-    path.name = std::to_string(centerlines.paths.size() - 1);
-    for (std::size_t n = begin; n < ends[cell]; ++n) {
-      const double index = connectivity[n];
-      if (!(index >= 0 && index < double(pointCount)) || index != std::floor(index)) {
-        throw InputError(context.source, "Lines connectivity: point index " + formatNumber(index) +
-                                             " out of range (" + std::to_string(pointCount) +
-                                             " points)");
-      }
-      path.points.push_back({points[std::size_t(index)], radii[std::size_t(index)]});
-    }
-    begin = ends[cell];
+    const bool named = names && !(*names)[cell].empty();
+    centerlines.paths.push_back(
+        {named ? (*names)[cell] : std::to_string(centerlines.paths.size()),
+         cellPoints(connectivity, cell == 0 ? 0 : ends[cell - 1], ends[cell], points, context.source)});
   }
+}
+
+// --- Writing ------------------------------------------------------------------------------------
+
+// An ascii DataArray, one line of values per entry of `lines`, indented as VTK's writer does.
+std::string asciiDataArray(const std::string& attributes, const std::vector<std::string>& lines) {
+  std::string xml = "        <DataArray " + attributes + " format=\"ascii\">\n";
+  for (const std::string& line : lines) xml += "          " + line + "\n";
+  return xml + "        </DataArray>\n";
+}
+
+void appendWord(std::string& line, const std::string& word) {
+  if (!line.empty()) line += ' ';
+  line += word;
+}
+
+// A string as VTK writes one in ascii: each byte as a (signed) number, then a 0.
+std::string vtkStringText(const std::string& text) {
+  std::string codes;
+  for (const char c : text) appendWord(codes, std::to_string(int(static_cast<signed char>(c))));
+  appendWord(codes, "0");
+  return codes;
+}
+
+// The arrays of the one Piece: each path's points stored in order, so connectivity counts up.
+struct PieceText {
+  std::vector<std::string> points, radii, connectivity, names;
+  std::string offsets;  // one line: the end offset of each cell
+};
+
+PieceText pieceText(const Centerlines& centerlines) {
+  PieceText text;
+  std::size_t pointCount = 0;
+  for (const CenterlinePath& path : centerlines.paths) {
+    std::string cell;
+    for (const CenterlinePoint& point : path.points) {
+      const glm::dvec3& p = point.positionMm;
+      text.points.push_back(numberText(p.x) + ' ' + numberText(p.y) + ' ' + numberText(p.z));
+      text.radii.push_back(numberText(point.radiusMm));
+      appendWord(cell, std::to_string(pointCount++));
+    }
+    text.connectivity.push_back(cell);
+    appendWord(text.offsets, std::to_string(pointCount));
+    text.names.push_back(vtkStringText(path.name));
+  }
+  return text;
+}
+
+std::string vtpText(const Centerlines& centerlines) {
+  const PieceText piece = pieceText(centerlines);
+  const std::string cells = std::to_string(centerlines.paths.size());
+  std::string xml = "<?xml version=\"1.0\"?>\n";
+  xml += "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <PolyData>\n";
+  xml += "    <Piece NumberOfPoints=\"" + std::to_string(piece.points.size()) +
+         "\" NumberOfVerts=\"0\" NumberOfLines=\"" + cells +
+         "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+  xml += "      <PointData Scalars=\"MaximumInscribedSphereRadius\">\n";
+  xml += asciiDataArray("type=\"Float64\" Name=\"MaximumInscribedSphereRadius\"", piece.radii);
+  xml += "      </PointData>\n      <CellData>\n";
+  xml += asciiDataArray(
+      "type=\"String\" Name=\"" + std::string(kNameArray) + "\" NumberOfTuples=\"" + cells + "\"",
+      piece.names);
+  xml += "      </CellData>\n      <Points>\n";
+  xml += asciiDataArray("type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"", piece.points);
+  xml += "      </Points>\n      <Lines>\n";
+  xml += asciiDataArray("type=\"Int64\" Name=\"connectivity\"", piece.connectivity);
+  xml += asciiDataArray("type=\"Int64\" Name=\"offsets\"", {piece.offsets});
+  return xml + "      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
 }
 
 }  // namespace
@@ -534,9 +676,16 @@ Centerlines parseCenterlinesVtp(const std::string& bytes, const fs::path& source
   const ArrayContext context{encoding, appended, source};
   Centerlines centerlines;
   centerlines.source = source.string();
-  for (const pugi::xml_node piece : polyData.children("Piece")) readPiece(piece, context, centerlines);
+  for (const pugi::xml_node piece : polyData.children("Piece")) {
+    readPiece(piece, context, options, centerlines);
+  }
   checkLoadedCenterlines(centerlines, source, options);
   return centerlines;
+}
+
+void writeCenterlinesVtp(const Centerlines& centerlines, const fs::path& file) {
+  requirePhysicalFrame(centerlines, "a centerline .vtp");
+  writeBytesAtomically(file, vtpText(centerlines));
 }
 
 Centerlines readCenterlinesVtp(const fs::path& file, const CenterlineLoadOptions& options) {

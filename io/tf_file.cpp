@@ -315,18 +315,7 @@ std::string toJson(const TransferFunction& tf) {
 }
 
 void saveTransferFunction(const TransferFunction& tf, const fs::path& path) {
-  const std::string text = toJson(tf);
-  try {
-    writeAtomically(path, [&](const fs::path& tempPath) {
-      std::ofstream out(tempPath, std::ios::binary | std::ios::trunc);
-      if (!out) throw InputError(path, "cannot open for writing");
-      out << text;
-      out.close();
-      if (!out) throw InputError(path, "write failed");
-    });
-  } catch (const fs::filesystem_error& error) {
-    throw InputError(path, "cannot write: " + error.code().message());
-  }
+  writeBytesAtomically(path, toJson(tf));
 }
 
 std::vector<Preset> listPresets() {

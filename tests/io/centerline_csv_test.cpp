@@ -26,17 +26,21 @@ class CenterlineCsvTest : public test_support::TempFolderTest {
   }
 };
 
-TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathIndex) {
+// Numbers as the shortest text that reads back as the same double: no digits lost (a float
+// widened to double keeps all of its), none padded.
+TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathNameOrIndex) {
   Centerlines centerlines;
   centerlines.paths = {{"a", {{{1.0, -2.5, 3.25}, 10.0}, {{1.0, -2.5, 2.25}, 9.5}}},
-                       {"b", {{{-0.0004, 100.1234, -1199.5}, 1.5}}}};
+                       {"", {{{-0.0004, 100.1234, -1199.5}, 1.5}}},
+                       {"float", {{{double(-218.4904f), 0.1, -0.0}, double(10.3651f)}}}};
   const fs::path file = dir_ / "centerlines.csv";
   writeCenterlinesCsv(centerlines, file);
   EXPECT_EQ(fileContents(file),
             "path,x_mm,y_mm,z_mm,radius_mm\n"
-            "0,1.000,-2.500,3.250,10.000\n"
-            "0,1.000,-2.500,2.250,9.500\n"
-            "1,-0.000,100.123,-1199.500,1.500\n");
+            "a,1,-2.5,3.25,10\n"
+            "a,1,-2.5,2.25,9.5\n"
+            "1,-0.0004,100.1234,-1199.5,1.5\n"
+            "float,-218.4904022216797,0.1,0,10.365099906921387\n");
 }
 
 TEST_F(CenterlineCsvTest, HeaderMatchesTheSharedReferenceFile) {
@@ -63,7 +67,7 @@ TEST_F(CenterlineCsvTest, ReplacesAnExistingFileWhole) {
   const fs::path file = dir_ / "centerlines.csv";
   std::ofstream(file) << "old content that is longer than the new one\n" << std::string(1000, 'x');
   writeCenterlinesCsv(onePoint(), file);
-  EXPECT_EQ(fileContents(file), "path,x_mm,y_mm,z_mm,radius_mm\n0,0.000,0.000,0.000,1.000\n");
+  EXPECT_EQ(fileContents(file), "path,x_mm,y_mm,z_mm,radius_mm\na,0,0,0,1\n");
 }
 
 }  // namespace

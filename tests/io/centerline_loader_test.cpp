@@ -453,6 +453,80 @@ TEST_F(CenterlineVtp, MissingFileAndDirectoryAreInputErrors) {
   EXPECT_NE(loadError(dir_ / "folder.vtp").find("is a directory"), std::string::npos);
 }
 
+// --- .vtp path names ----------------------------------------------------------------------------
+
+// The fixture with a CellData array in its (empty) <CellData>.
+std::string withCellData(const std::string& dataArray) {
+  return replaced(writeVtp(branchingFixture(), style("", "ascii")), "<CellData>\n      </CellData>",
+                  "<CellData>\n" + dataArray + "      </CellData>");
+}
+
+std::string nameArray(const std::string& format, const std::string& values) {
+  return "<DataArray type=\"String\" Name=\"CenterlineName\" NumberOfTuples=\"2\" format=\"" + format +
+         "\">\n" + values + "\n</DataArray>\n";
+}
+
+// As VTK writes a String array in ascii: each byte as a number (a char printed as a short, so
+// UTF-8 bytes are negative where char is signed), each string ended by a 0.
+TEST_F(CenterlineVtp, CellDataNamesNameThePaths) {
+  // "Left é" with signed bytes, "Right é" with unsigned ones.
+  const std::string codes = "76 101 102 116 32 -61 -87 0\n82 105 103 104 116 32 195 169 0";
+  std::vector<std::string> warnings;
+  const Centerlines loaded =
+      loadWarned(write("named.vtp", withCellData(nameArray("ascii", codes))), warnings);
+  ASSERT_EQ(loaded.paths.size(), 2u);
+  EXPECT_EQ(loaded.paths[0].name, "Left \u00e9");
+  EXPECT_EQ(loaded.paths[1].name, "Right \u00e9");
+  EXPECT_EQ(loaded.paths[1].points.size(), 80u);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
+// VTK 9.1's vtkXMLPolyDataWriter in ascii mode writes a String array as an <Array> element.
+TEST_F(CenterlineVtp, NamesInAnArrayElementAsVtk9WritesThemAreRead) {
+  const Centerlines loaded = loadCenterlines(
+      write("vtk9.vtp", withCellData("<Array type=\"String\" Name=\"CenterlineName\" format=\"ascii\">\n"
+                                     "76 0 82 0\n</Array>\n")));
+  ASSERT_EQ(loaded.paths.size(), 2u);
+  EXPECT_EQ(loaded.paths[0].name, "L");
+  EXPECT_EQ(loaded.paths[1].name, "R");
+}
+
+TEST_F(CenterlineVtp, EmptyNamesAreNamedByTheirIndex) {
+  const Centerlines loaded =
+      loadCenterlines(write("unnamed.vtp", withCellData(nameArray("ascii", "0 76 0"))));
+  ASSERT_EQ(loaded.paths.size(), 2u);
+  EXPECT_EQ(loaded.paths[0].name, "0");
+  EXPECT_EQ(loaded.paths[1].name, "L");
+}
+
+// VTK's binary strings are not read; the paths keep their index names and the user is told.
+TEST_F(CenterlineVtp, NamesNotInAsciiAreSkippedWithAWarning) {
+  const fs::path file = write("binary-names.vtp", withCellData(nameArray("binary", "CAAAAAAAAABMAFIA")));
+  std::vector<std::string> warnings;
+  const Centerlines loaded = loadWarned(file, warnings);
+  ASSERT_EQ(loaded.paths.size(), 2u);
+  EXPECT_EQ(loaded.paths[1].name, "1");
+  EXPECT_EQ(warnings, std::vector<std::string>{file.string() +
+                                               ": CellData 'CenterlineName' is not an ascii String "
+                                               "array; skipped, paths are named by their index"});
+}
+
+TEST_F(CenterlineVtp, BadNameArraysGiveAnInputError) {
+  const std::vector<Broken> cases = {
+      {"OneNameForTwoLines", withCellData(nameArray("ascii", "76 0")),
+       "DataArray 'CenterlineName': has 1 names, expected 2 (one per line cell)"},
+      {"NotACharacter", withCellData(nameArray("ascii", "76 300 0 82 0")),
+       "DataArray 'CenterlineName': '300' is not a character code"},
+      {"NotANumber", withCellData(nameArray("ascii", "L 0 R 0")), "'L' is not a number"},
+  };
+  for (const Broken& broken : cases) {
+    const fs::path file = write(broken.name + ".vtp", broken.bytes);
+    const std::string error = loadError(file);
+    EXPECT_EQ(error.rfind(file.string() + ": ", 0), 0u) << broken.name << ": " << error;
+    EXPECT_NE(error.find(broken.expected), std::string::npos) << broken.name << ": " << error;
+  }
+}
+
 // --- Slicer markups -----------------------------------------------------------------------------
 
 using CenterlineMarkups = CenterlineFiles;
@@ -562,26 +636,17 @@ TEST_F(CenterlineMarkups, BrokenFilesGiveAnInputErrorNamingFileAndProblem) {
 
 using CenterlineCsv = CenterlineFiles;
 
-TEST_F(CenterlineCsv, WrittenCentrelinesReadBackToMicrometres) {
+TEST_F(CenterlineCsv, WrittenCentrelinesReadBackExactlyWithTheirNames) {
   Centerlines written;
   written.paths = {
-      {"trunk-left", {{{-218.4904, -316.4061, 24.3194}, 10.3651}, {{-218.5, -315.5, 24.4}, 10.0}}},
-      {"trunk-right", {{{1, 2, 3}, 0.5}}}};
+      {"trunk-left",
+       {{{double(-218.4904f), -316.4061, 1.0 / 3.0}, double(10.3651f)}, {{-218.5, -315.5, 24.4}, 10.0}}},
+      {"trunk, \"right\"", {{{1, 2, 3}, 0.5}}}};
   const fs::path file = dir_ / "round.csv";
   writeCenterlinesCsv(written, file);
   const Centerlines read = readCenterlinesCsv(file);
-  ASSERT_EQ(read.paths.size(), 2u);
-  EXPECT_EQ(read.paths[0].name, "0");  // CSV keeps the index, not the name
-  EXPECT_EQ(read.paths[1].name, "1");
-  for (std::size_t p = 0; p < 2; ++p) {
-    ASSERT_EQ(read.paths[p].points.size(), written.paths[p].points.size());
-    for (std::size_t n = 0; n < read.paths[p].points.size(); ++n) {
-      const CenterlinePoint& a = read.paths[p].points[n];
-      const CenterlinePoint& b = written.paths[p].points[n];
-      EXPECT_NEAR(glm::distance(a.positionMm, b.positionMm), 0.0, 1e-3);
-      EXPECT_NEAR(a.radiusMm, b.radiusMm, 5e-4);
-    }
-  }
+  written.source = file.string();
+  EXPECT_EQ(read, written);
 }
 
 TEST_F(CenterlineCsv, VolumeFrameCentrelinesAreNotWritten) {
@@ -606,6 +671,25 @@ TEST_F(CenterlineCsv, IdsGroupRowsAndBlankLinesAndSpacesAreIgnored) {
   EXPECT_EQ(loaded.paths[1].points[0].positionMm, glm::dvec3(5, 6, 7));
 }
 
+// RFC 4180 quoting as spreadsheets write it: commas, doubled quotes, a line break and the spaces
+// inside the quotes are the name's; spaces outside are not. Each id's two rows make one path.
+TEST_F(CenterlineCsv, QuotedIdsKeepCommasQuotesLineBreaksAndSpaces) {
+  const std::vector<std::pair<std::string, std::string>> fieldAndName = {
+      {"\"left, \"\"iliac\"\"\"", "left, \"iliac\""},
+      {" \"  two\nlines \" ", "  two\nlines "},
+      {"\"\"\"\"", "\""},
+      {"\"Aorta \u2192 (\u53f3)\"", "Aorta \u2192 (\u53f3)"}};
+  std::string text = "path,x_mm,y_mm,z_mm,radius_mm\r\n";
+  for (const auto& [field, name] : fieldAndName) text += field + ",1,2,3,4\r\n" + field + ",5,6,7,8\n";
+  const Centerlines loaded = loadCenterlines(write("quoted.csv", text));
+  ASSERT_EQ(loaded.paths.size(), fieldAndName.size());
+  for (std::size_t p = 0; p < fieldAndName.size(); ++p) {
+    EXPECT_EQ(loaded.paths[p].name, fieldAndName[p].second);
+    ASSERT_EQ(loaded.paths[p].points.size(), 2u) << fieldAndName[p].second;
+    EXPECT_EQ(loaded.paths[p].points[1].positionMm, glm::dvec3(5, 6, 7)) << fieldAndName[p].second;
+  }
+}
+
 TEST_F(CenterlineCsv, BrokenFilesGiveAnInputErrorNamingFileLineAndProblem) {
   const std::string header = "path,x_mm,y_mm,z_mm,radius_mm\n";
   const std::vector<Broken> cases = {
@@ -619,6 +703,11 @@ TEST_F(CenterlineCsv, BrokenFilesGiveAnInputErrorNamingFileLineAndProblem) {
       {"Nan", header + "0,1,2,3,4\n7,1,nan,3,4\n", "path '7': point 0: coordinate is not finite"},
       {"NanRadius", header + "0,1,2,3,NaN\n", "path '0': point 0: radius is not finite"},
       {"NegativeRadius", header + "0,1,2,3,4\n0,1,2,4,-4\n", "path '0': point 1: negative radius"},
+      {"QuoteNotClosed", header + "0,1,2,3,4\n\"left,1,2,3,4\n0,1,2,3,4\n",
+       "line 3: quoted field not closed"},
+      {"TextAfterQuote", header + "\"left\"x,1,2,3,4\n", "line 2: text after the closing quote"},
+      // A line break inside quotes moves the lines that follow.
+      {"LineAfterQuotedBreak", header + "\"a\nb\",1,2,3,4\n0,1,2\n", "line 4: 3 fields, expected 5"},
   };
   for (const Broken& broken : cases) {
     const fs::path file = write(broken.name + ".csv", broken.bytes);
@@ -672,6 +761,11 @@ TEST(CenterlineSharedData, VtpAndCsvGiveTheSameModel) {
   EXPECT_TRUE(warnings.empty()) << warnings.front();
   ASSERT_EQ(vtp.paths.size(), 2u);
   ASSERT_EQ(csv.paths.size(), 2u);
+  // Neither file names its paths: the .vtp's are named by cell index, the CSV's ids are 0 and 1.
+  EXPECT_EQ(vtp.paths[0].name, "0");
+  EXPECT_EQ(vtp.paths[1].name, "1");
+  EXPECT_EQ(csv.paths[0].name, "0");
+  EXPECT_EQ(csv.paths[1].name, "1");
   for (std::size_t p = 0; p < 2; ++p) {
     ASSERT_EQ(vtp.paths[p].points.size(), 331u);
     ASSERT_EQ(csv.paths[p].points.size(), 331u);
