@@ -1,16 +1,11 @@
 #include "gui/vessel_files.h"
 
-#include "io/centerline_csv.h"
 #include "io/centerline_file.h"
-#include "io/input_error.h"
 
 namespace angio {
 
 Centerlines writeAndReadBack(const Centerlines& physical, const std::filesystem::path& file) {
-  const std::string name = file.filename().string();
-  if (name.size() < 4 || name.substr(name.size() - 4) != ".csv")
-    throw InputError(file, "centerlines are written as .csv for now");
-  writeCenterlinesCsv(physical, file);
+  saveCenterlines(physical, file);
   return loadCenterlines(file);
 }
 

@@ -40,21 +40,27 @@ std::string mmText(const glm::dvec3& p) {
   return text;
 }
 
-// The ground truth's paths (physical mm) from the phantom's CSV.
+// The ground truth's paths (physical mm) from the phantom's CSV, in the order they first appear.
 std::vector<std::vector<glm::dvec3>> readTruth(const fs::path& csv) {
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);  // header
+  std::vector<std::string> names;
   std::vector<std::vector<glm::dvec3>> paths;
   while (std::getline(in, line)) {
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream row(line);
-    std::size_t path = 0;
+    const std::size_t comma = line.find(',');
+    const std::string name = line.substr(0, comma);
+    std::string numbers = line.substr(comma + 1);
+    std::replace(numbers.begin(), numbers.end(), ',', ' ');
+    std::istringstream row(numbers);
     glm::dvec3 p;
-    double radius = 0;
-    row >> path >> p.x >> p.y >> p.z >> radius;
-    if (paths.size() <= path) paths.resize(path + 1);
-    paths[path].push_back(p);
+    row >> p.x >> p.y >> p.z;
+    const auto known = std::find(names.begin(), names.end(), name);
+    if (known == names.end()) {
+      names.push_back(name);
+      paths.emplace_back();
+    }
+    paths[std::size_t(std::find(names.begin(), names.end(), name) - names.begin())].push_back(p);
   }
   return paths;
 }
@@ -258,8 +264,8 @@ TEST_F(GuiVessels, VesselGlyphRendersTheTracedPathAndAnExportWritesItBesideItsel
   ASSERT_TRUE(fs::exists(file("view.png")));
   std::ifstream sidecarFile(file("view.png.json"));
   const Json sidecar = Json::parse(sidecarFile);
-  EXPECT_EQ(sidecar["vessel_glyph"]["centerlines"], file("view.png.centerlines.csv"));
-  ASSERT_TRUE(fs::exists(file("view.png.centerlines.csv")));
+  EXPECT_EQ(sidecar["vessel_glyph"]["centerlines"], file("view.png.centerlines.vtp"));
+  ASSERT_TRUE(fs::exists(file("view.png.centerlines.vtp")));
   const auto again =
       runAngioray("render --params " + file("view.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
@@ -285,7 +291,7 @@ TEST_F(GuiVessels, ARotationSeriesWritesTheTracedPathIntoItsFolderAndEachViewRen
       traceSteps() + ", " + vesselGlyph + ", " + twoViews + ", " + intoFolder + ", " + start;
   const auto run = runIn(dir, "[" + steps + "]");
   ASSERT_EQ(run.exitCode, 0) << run.output;
-  const fs::path beside = fs::path(folder) / "vessels.centerlines.csv";
+  const fs::path beside = fs::path(folder) / "vessels.centerlines.vtp";
   ASSERT_TRUE(fs::exists(beside));
   std::ifstream sidecarFile(fs::path(folder) / "view-001.png.json");
   ASSERT_TRUE(sidecarFile) << run.output;
