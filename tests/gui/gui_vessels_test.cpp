@@ -305,6 +305,30 @@ TEST_F(GuiVessels, ARotationSeriesWritesTheTracedPathIntoItsFolderAndEachViewRen
   EXPECT_TRUE(first == second);
 }
 
+TEST_F(GuiVessels, SavedPathsLoadBackWithTheirNamesAndAreNoLongerUnsaved) {
+  const Json& layout = suite_->traced["runtime"]["layout"];
+  const std::string saveAs = R"({"click": )" + middleOf(layout["vessels_path"]) +
+                             R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("traced.mrk.json") +
+                             R"("}, {"key": "Enter"}, {"click": )" + middleOf(layout["vessels_save"]) +
+                             R"(}, {"wait_ms": 50})";
+  const std::string load = R"({"click": )" + middleOf(layout["vessels_load"]) +
+                           R"(}, {"wait_ms": 100}, {"wait_level": "high"})";
+  const auto run = runIn(dir, "[" + traceSteps() + ", " + saveAs + ", " + stateStep("saved.json") +
+                                  ", " + load + ", " + stateStep("loaded.json") + "]");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  ASSERT_TRUE(fs::exists(file("traced.mrk.json")));
+  const Json saved = readJson("saved.json")["state"]["vessels"];
+  EXPECT_EQ(saved["file"], file("traced.mrk.json"));
+  EXPECT_FALSE(saved["unsaved"].get<bool>());
+  const Json loaded = readJson("loaded.json");
+  const Json& paths = loaded["state"]["vessels"]["paths"];
+  ASSERT_EQ(paths.size(), 1u) << loaded["runtime"]["vessels"];
+  EXPECT_EQ(paths[0]["name"], "path 1");
+  EXPECT_TRUE(paths[0]["control_points_mm"].empty());              // read from a file: not traced here
+  EXPECT_TRUE(paths[0]["points"] == saved["paths"][0]["points"]);  // the same numbers
+  EXPECT_EQ(loaded["runtime"]["vessels"]["undo"], 3);              // two clicks and the load
+}
+
 TEST_F(GuiVessels, ANewDatasetDropsThePathsAndSaysSo) {
   const Json after = state(traceSteps() + R"(, {"open": ")" + at("phantom.nrrd") +
                                R"("}, {"wait_ms": 100}, {"wait_level": "high"})",
