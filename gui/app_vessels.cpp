@@ -25,7 +25,7 @@ bool contains(ImVec2 min, ImVec2 max, ImVec2 p) {
 
 TraceSettings traceSettings(const VesselsPanelUi& ui) {
   TraceSettings settings;
-  settings.tissueHu = ui.tissueHu;
+  if (ui.fixedTissue) settings.tissueHu = ui.tissueHu;
   if (ui.fixedCalcium) settings.calciumHu = ui.calciumHu;
   return settings;
 }

@@ -46,28 +46,38 @@ void drawTool(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsPanelResu
   }
 }
 
+// A tracer setting the user may fix (checkbox, then its value) or leave to the tracer; noted as
+// `<name>` (the checkbox) and `<name>_hu`. True once changed: typed values when the field lets go
+// (every keystroke would start the tracer over).
+bool drawFixedHu(const char* label, bool& fixed, double& hu, const std::string& name,
+                 WidgetRects& rects) {
+  ImGui::PushID(label);
+  bool changed = ImGui::Checkbox(label, &fixed);
+  noteRect(rects, name);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!fixed);
+  ImGui::SetNextItemWidth(70);
+  ImGui::InputDouble("HU", &hu, 0, 0, "%.0f");
+  changed |= ImGui::IsItemDeactivatedAfterEdit();
+  noteRect(rects, name + "_hu");
+  ImGui::EndDisabled();
+  ImGui::PopID();
+  return changed;
+}
+
 void drawContrast(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsPanelResult& result,
                   WidgetRects& rects) {
   if (info.contrast)
     ImGui::Text("contrast %.0f .. %.0f HU", info.contrast->lowHu, info.contrast->highHu);
   else ImGui::TextDisabled("contrast: from the first click");
-  ImGui::SetNextItemWidth(90);
-  // Typed values count once the field lets go: every keystroke would start the tracer over.
-  ImGui::InputDouble("tissue HU", &ui.tissueHu, 0, 0, "%.0f");
-  result.settingsChanged |= ImGui::IsItemDeactivatedAfterEdit();
-  noteRect(rects, "vessels_tissue_hu");
+  result.settingsChanged |= drawFixedHu("tissue", ui.fixedTissue, ui.tissueHu, "vessels_tissue", rects);
   ImGui::SameLine();
-  result.settingsChanged |= ImGui::Checkbox("calcium from", &ui.fixedCalcium);
-  ImGui::SameLine();
-  ImGui::BeginDisabled(!ui.fixedCalcium);
-  ImGui::SetNextItemWidth(80);
-  ImGui::InputDouble("HU##calcium", &ui.calciumHu, 0, 0, "%.0f");
-  result.settingsChanged |= ImGui::IsItemDeactivatedAfterEdit();
-  noteRect(rects, "vessels_calcium_hu");
-  ImGui::EndDisabled();
+  result.settingsChanged |=
+      drawFixedHu("calcium from", ui.fixedCalcium, ui.calciumHu, "vessels_calcium", rects);
   helpMarker(
-      "What surrounds the vessels and where calcium begins; uncalibrated data (e.g. the vmtk aorta) "
-      "need about 300 and 3000. A change starts the contrast range over.");
+      "What surrounds the vessels and where calcium begins, unless the tracer's own; uncalibrated "
+      "data (e.g. the vmtk aorta) need about 300 and 3000. A change starts the contrast range "
+      "over.");
 }
 
 void drawPathRow(const VesselPath& path, int index, VesselsPanelUi& ui, bool& remove,

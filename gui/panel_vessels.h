@@ -19,10 +19,11 @@ enum class TraceClick { addPoint, movePoint, downstream };
 struct VesselsPanelUi {
   bool traceTool = false;
   TraceClick click = TraceClick::addPoint;
-  int selectedPath = -1;   // the path clicks extend; -1: the next click starts a new one
-  int selectedPoint = -1;  // of the selected path
-  double tissueHu = 50;
-  bool fixedCalcium = false;  // else calcium begins twice the lumen's margin above it
+  int selectedPath = -1;     // the path clicks extend; -1: the next click starts a new one
+  int selectedPoint = -1;    // of the selected path
+  bool fixedTissue = false;  // else the tracer's (vessel/vessel_tracing.h TraceSettings)
+  double tissueHu = 300;
+  bool fixedCalcium = false;  // else the tracer's: twice the lumen's margin above it
   double calciumHu = 3000;
   std::string path = "vessels.mrk.json";  // the save / load field
   std::string rename;                     // the selected path's name as typed
