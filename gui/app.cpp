@@ -25,6 +25,7 @@ App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& 
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
   ImGui::StyleColorsDark();
+  syncVesselCenterlines();
   startSession();
   labels_.pendingFile = start.labelsFile.empty() ? doc().labels.file : start.labelsFile;
   resetLabels();
@@ -54,7 +55,10 @@ App::~App() {
 
 void App::noteRect(const std::string& name) { angio::noteRect(widgetRects_, name); }
 
-void App::commit(const Edit& edit) { workstation_.apply(edit); }
+void App::commit(const Edit& edit) {
+  workstation_.apply(edit);
+  syncVesselCenterlines();
+}
 
 // Poll the jobs, draw (the panels' edits applied as they return them), ask for a render.
 void App::frame(double previousFrameMs) {
@@ -92,6 +96,7 @@ void App::pollJobs() {
   pollExport();
   pollBackgroundJobs();
   pollLabelJobs();
+  pollVesselJobs();
   status_ = renderer_->status();
 }
 
@@ -114,7 +119,10 @@ void App::handleKeys() {
   // Arrows turn the patient like a drag in their direction (see drawViewport's grab semantics).
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) commit(RotateEdit{step});
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) commit(RotateEdit{-step});
-  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) undoTf();
+  // Ctrl+Z undoes the Vessels section's last change while it has the focus, else the TF's.
+  const bool z = io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false);
+  if (z && vessels_.focused) io.KeyShift ? redoVessels() : undoVessels();
+  else if (z) undoTf();
   if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) redoTf();
 }
 
@@ -138,6 +146,8 @@ void App::drawViewportWindow() {
   drawCenterlineOverlay();
   moveCprCursorOnClick();
   growOnClick();
+  traceOnClick();
+  drawTraceOverlay();
   if (viewport_.rotateDegrees != 0) commit(RotateEdit{viewport_.rotateDegrees});
   ImGui::End();
 }

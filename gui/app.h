@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/progressive_renderer.h"
+#include "core/ray_pick.h"
 #include "core/volume.h"
 #include "gui/app_gl.h"
 #include "gui/background_job.h"
@@ -28,6 +29,7 @@
 #include "gui/app_export.h"
 #include "gui/app_labels.h"
 #include "gui/app_vessel.h"
+#include "gui/app_vessels.h"
 #include "gui/panel_export.h"
 #include "gui/panel_session.h"
 #include "gui/panel_tf.h"
@@ -104,6 +106,9 @@ class App {
   // browser, recent files, scripts).
   void openDataset(const std::string& path);
   Document session() const;  // what the window saves as the last session when it quits
+  // Where a physical point (LPS mm) is on the shown image, in window pixels (none: no image yet);
+  // scripts click there.
+  std::optional<glm::vec2> screenOfPhysical(const glm::dvec3& physicalMm) const;
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -170,6 +175,7 @@ class App {
   void loadSessionCenterlines();  // the document's centerline file (none: the loaded ones go)
   void pollCenterlineLoad();
   void dropCenterlines();
+  void syncVesselCenterlines();  // vessel_'s centerlines from the document's vessel paths
   const Centerlines* framedCenterlines();
   void loadMissingRegionTfs();  // a focus or context TF with no points: its preset
   ImVec2 dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const;
@@ -184,6 +190,28 @@ class App {
   void resetLabels();                   // a new dataset: its own labels, counted anew
   std::string exportLabelFile() const;  // the label file exports name ("" = none or unsaved)
   std::optional<UnsavedLabels> unsavedLabels() const;  // labels an export must write beside it
+  // Clicks on the image (gui/app_pick.cpp): the image point of a left click (not a drag) on the
+  // viewport, right after drawViewport; the visible point under it (volume frame).
+  std::optional<glm::dvec2> clickedImagePoint() const;
+  std::optional<PickedPoint> pickVisible(glm::dvec2 imagePoint) const;
+  // Vessels (gui/app_vessels.cpp): tracing from clicks, the path list, its undo and files.
+  void drawVesselsSection();
+  void traceOnClick();  // right after drawViewport: a click with the Trace tool on
+  void drawTraceOverlay();
+  void requestTrace(const TraceRequest& request);
+  void startNextTrace();
+  void pollVesselJobs();
+  void changeVessels(std::vector<VesselPath> paths, const std::string& what);  // one undo step
+  void stepVessels(std::vector<VesselsStep>& from, std::vector<VesselsStep>& to, const char* done);
+  void undoVessels();
+  void redoVessels();
+  void resetTracer();   // new settings or dataset: the next click starts a new tracer
+  void resetVessels();  // a new dataset: its paths went with the old one
+  void saveVessels(const std::string& file);
+  void browseVesselFiles(BrowserPurpose purpose);            // the file browser, from ui.path's folder
+  void chooseVesselFile(const std::filesystem::path& file);  // what it chose: save or load
+  std::optional<Centerlines> unsavedCenterlines() const;     // physical; exports write them beside
+  nlohmann::json vesselsReport() const;
   // CPR view (gui/app_cpr.cpp): beside the DVR view, cprViewWidth() wide (0 when hidden).
   void drawCprSection();
   void drawCprView();
@@ -255,7 +283,8 @@ class App {
 
   VesselGlyphPanel vessel_;  // the VesselGlyph panel (gui/app_vessel.cpp)
   CprViewPanel cprView_;     // the CPR view (gui/app_cpr.cpp)
-  LabelsPanel labels_;       // the Labels section (gui/app_labels.cpp); last: its job reads data_
+  LabelsPanel labels_;       // the Labels section (gui/app_labels.cpp); its job reads data_
+  VesselsPanel vessels_;     // the Vessels section (gui/app_vessels.cpp); last: its job reads data_
 };
 
 }  // namespace angio

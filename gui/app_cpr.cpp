@@ -100,7 +100,7 @@ void App::updateCpr() {
   loadMissingRegionTfs();
   const Document& state = doc();
   CprInputs inputs{
-      vessel_.framedFor, vessel_.file, state.view.axis, state.view.angleDeg,
+      vessel_.framedFor, vessel_.file, vessel_.revision, state.view.axis, state.view.angleDeg,
       // The high level's pixel size, so a projected CPR registers with the DVR image.
       std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm),
       state.cpr.mode, state.cpr.path, state.cpr.coloring, std::nullopt};

@@ -3,6 +3,7 @@
 // curved planar reformation of the selected centerline path at the view's axis and angle, shown
 // beside the DVR view; hovering it reads arc length and HU and marks the point on the DVR image.
 // Drawn by gui/app_cpr.cpp.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,8 +26,9 @@ struct CenterlinePlace {
 
 // What a CPR image is computed from: a change computes it again (off the UI thread).
 struct CprInputs {
-  std::string dataset;      // the dataset the centerlines were mapped for
-  std::string centerlines;  // their file
+  std::string dataset;         // the dataset the centerlines were mapped for
+  std::string centerlines;     // their file
+  std::uint64_t revision = 0;  // of the document's vessel paths
   Axis axis = Axis::k;
   double angleDeg = 0;
   double pixelMm = 1;

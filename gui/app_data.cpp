@@ -45,17 +45,21 @@ void App::openDataset(const std::string& path) {
 
 bool App::backgroundBusy() const {
   return load_.running() || seriesJob_.running() || vessel_.load.running() || cprView_.job.running() ||
-         labels_.job.running() || labels_.counting.valid();
+         labels_.job.running() || labels_.counting.valid() || vessels_.job.running() ||
+         !vessels_.queued.empty();
 }
 
 void App::pollBackgroundJobs() {
   if (load_.ready()) {
     try {
       const double seconds = load_.seconds();
+      const std::size_t paths = vessels_.pending ? 0 : doc().vessels.paths.size();
       replaceDataset(load_.take());
       char took[32];
       std::snprintf(took, sizeof took, " (%.2f s)", seconds);
       message_ = "opened " + loadPath_ + took;
+      if (paths > 0)
+        message_ += "; its " + std::to_string(paths) + " vessel paths went with the old dataset";
     } catch (const LoadCancelled&) {
       message_ = "loading " + loadPath_ + " cancelled";
     } catch (const std::exception& error) {
@@ -85,6 +89,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   export_.job = {};
   if (histogramJob_.valid()) histogramJob_.wait();
   histogramJob_ = {};
+  resetTracer();  // it reads the old volume
   renderer_.reset();
   shown_.reset();
   incoming_.reset();
@@ -98,12 +103,16 @@ void App::replaceDataset(LoadedDataset dataset) {
   scene_.reset();  // of the old volume
   renderer_ = makeRenderer();
   resetLabels();
+  resetVessels();
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
 }
 
 void App::drawDataSection() {
   drawSessionBanner();
-  if (const auto chosen = drawFileBrowser(browser_)) openDataset(chosen->string());
+  if (const auto chosen = drawFileBrowser(browser_)) {
+    if (browser_.purpose == BrowserPurpose::openVolume) openDataset(chosen->string());
+    else chooseVesselFile(*chosen);
+  }
   if (!sectionHeader("Data")) return;
   DataPanelInfo info;
   info.volume = &data_.volume;

@@ -1,5 +1,6 @@
 #include "gui/app_export.h"
 
+#include "gui/vessel_files.h"
 #include "render/label_styles.h"
 
 namespace angio {
@@ -19,6 +20,14 @@ void saveLabelsFor(RenderRecipe& recipe, const Volume& volume, const UnsavedLabe
                    const std::filesystem::path& file) {
   writeLabelFile(file, volume, labels.styles, labels.voxels);
   recipe.labels = std::filesystem::absolute(file).lexically_normal().string();
+}
+
+Centerlines saveCenterlinesFor(RenderRecipe& recipe, const Volume& volume, const Centerlines& physical,
+                               const std::filesystem::path& file) {
+  const Centerlines readBack = writeAndReadBack(physical, file);
+  if (recipe.vesselGlyph)
+    recipe.vesselGlyph->centerlines = std::filesystem::absolute(file).lexically_normal().string();
+  return toVolumeFrame(readBack, volume);
 }
 
 }  // namespace angio

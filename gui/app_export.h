@@ -27,4 +27,13 @@ struct UnsavedLabels {
 void saveLabelsFor(RenderRecipe& recipe, const Volume& volume, const UnsavedLabels& labels,
                    const std::filesystem::path& file);
 
+// The suffix of the file an export writes unsaved vessel paths to (IMAGE.centerlines.vtp: vmtk's
+// format, which keeps the names and the radii).
+constexpr const char* kBesideCenterlines = ".centerlines.vtp";
+
+// Writes the unsaved vessel paths (`physical`) to `file`, makes `recipe`'s VesselGlyph name it and
+// returns what the file reads back in the volume frame: what the export and `render --params` use.
+Centerlines saveCenterlinesFor(RenderRecipe& recipe, const Volume& volume, const Centerlines& physical,
+                               const std::filesystem::path& file);
+
 }  // namespace angio

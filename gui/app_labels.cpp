@@ -23,8 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr float kClickSlopPx = 3;  // a left press that moved less than this is a click, not a drag
-
 // A new label's style: hidden for bone and table (what removal is for), shown for the user's.
 void addStyle(std::vector<LabelStyle>& styles, int label) {
   for (const LabelStyle& style : styles)
@@ -107,26 +105,12 @@ void App::startBoneRemoval() {
 }
 
 void App::growOnClick() {
-  if (!labels_.ui.growTool || labels_.job.running() || !shown_ || !viewport_.hasImage) return;
-  if (!ImGui::IsItemHovered() || !ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return;
-  const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
-  if (drag.x * drag.x + drag.y * drag.y > kClickSlopPx * kClickSlopPx) return;  // a drag turns the view
-  const ImVec2 mouse = ImGui::GetIO().MousePos;
-  const RenderParams& params = shown_->params;
-  const ViewGeometry view = makeViewGeometry(data_.volume, params);
-  const glm::dvec2 imagePoint{
-      (mouse.x - viewport_.imageMin.x) / (viewport_.imageMax.x - viewport_.imageMin.x) * view.width,
-      (mouse.y - viewport_.imageMin.y) / (viewport_.imageMax.y - viewport_.imageMin.y) * view.height};
+  if (!labels_.ui.growTool || labels_.job.running()) return;
+  const std::optional<glm::dvec2> imagePoint = clickedImagePoint();
+  if (!imagePoint) return;
   const bool giveBack = labels_.ui.target == GrowTarget::unlabel;
-  std::optional<PickedPoint> picked;
-  if (giveBack) {
-    picked = pickLabelled(data_.volume, params, imagePoint);
-  } else {
-    const TransferFunction tf = renderedTf(doc());
-    const TfTable table = buildTable(tf);
-    const LabelTables labels(tf.labels);
-    picked = pickPoint(data_.volume, {nullptr, nullptr, nullptr, &table, &labels}, params, imagePoint);
-  }
+  const std::optional<PickedPoint> picked =
+      giveBack ? pickLabelled(data_.volume, shown_->params, *imagePoint) : pickVisible(*imagePoint);
   if (!picked) {
     message_ = giveBack ? "no labelled voxel under the cursor" : "nothing visible under the cursor";
     return;
@@ -200,6 +184,7 @@ void App::pollLabelJobs() {
 void App::changeLabels(const LabelChange& change, bool undo) {
   seriesJob_.stop();
   cprView_.job.stop();
+  vessels_.job.stop();  // the tracer reads the label bits
   if (export_.job.valid()) export_.job.wait();
   renderer_.reset();  // joins its worker: nothing reads the voxels now
   lastRequest_.reset();

@@ -25,6 +25,7 @@ void App::drawSidePanel() {
   drawTfSection();
   drawVesselSection();
   drawCprSection();
+  drawVesselsSection();
   drawLabelsSection();
   if (sectionHeader("Rendering")) commit(drawRenderingPanel(doc()));
   drawExportSection();
@@ -43,13 +44,15 @@ void App::drawExportSection() {
   if (!requests.start) return;
   export_.cancel = std::make_shared<std::atomic<bool>>(false);
   export_.started = Clock::now();
-  export_.job =
-      std::async(std::launch::async,
-                 [this, recipe = exportRecipe(), centerlines = exportCenterlines(),
-                  path = export_.ui.path, cancel = export_.cancel, labels = unsavedLabels()]() mutable {
-                   if (labels) saveLabelsFor(recipe, data_.volume, *labels, path + ".labels.seg.nrrd");
-                   return exportView(data_.volume, centerlines, recipe, path, cancel.get());
-                 });
+  export_.job = std::async(
+      std::launch::async,
+      [this, recipe = exportRecipe(), centerlines = exportCenterlines(), path = export_.ui.path,
+       cancel = export_.cancel, labels = unsavedLabels(), traced = unsavedCenterlines()]() mutable {
+        if (labels) saveLabelsFor(recipe, data_.volume, *labels, path + ".labels.seg.nrrd");
+        if (traced)
+          centerlines = saveCenterlinesFor(recipe, data_.volume, *traced, path + kBesideCenterlines);
+        return exportView(data_.volume, centerlines, recipe, path, cancel.get());
+      });
   message_ = "exporting " + export_.ui.path;
 }
 

@@ -51,6 +51,7 @@ nlohmann::json App::report() const {
   const OrientationLetters letters = orientationLetters(doc().view.axis, doc().view.angleDeg);
   nlohmann::json layout = {{"viewport", rectJson(viewport_.min, viewport_.max)},
                            {"tf_plot", rectJson(tfPanel_.editor.plotMin, tfPanel_.editor.plotMax)}};
+  if (viewport_.hasImage) layout["viewport_image"] = rectJson(viewport_.imageMin, viewport_.imageMax);
   for (const auto& [name, rect] : widgetRects_) layout[name] = rectJson(rect.first, rect.second);
   return {
       {"state", nlohmann::json::parse(toJson(doc()))},
@@ -83,6 +84,7 @@ nlohmann::json App::report() const {
         {"data", dataReport()},
         {"vessel_glyph", vesselReport()},
         {"labels", labelsReport()},
+        {"vessels", vesselsReport()},
         {"layout", layout}}},
   };
 }
@@ -121,6 +123,7 @@ nlohmann::json App::vesselReport() const {
   const VesselGlyphState& set = doc().vesselGlyph;
   return {{"enabled", set.enabled},
           {"rendering", scene_ && scene_->hasRegions()},
+          {"rendered_paths", scene_ && scene_->hasRegions() ? sceneCenterlines_.paths.size() : 0},
           {"overlay", set.overlay},
           {"centerlines", vg.file},
           {"paths", vg.physical ? vg.physical->paths.size() : 0},

@@ -51,6 +51,12 @@ struct StepParser {
       step.kind = ScriptStep::Kind::click;
       step.at = point(object["click"], "click");
       step.button = button(object);
+    } else if (object.contains("click_mm")) {
+      step.kind = ScriptStep::Kind::clickMm;
+      const Json& p = object["click_mm"];
+      if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+        fail("click_mm must be [x, y, z] in mm");
+      step.pointMm = {p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
     } else if (object.contains("double_click")) {
       step.kind = ScriptStep::Kind::doubleClick;
       step.at = point(object["double_click"], "double_click");

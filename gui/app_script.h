@@ -3,6 +3,8 @@
 //   {"move": [x, y]}                       mouse to window pixel (x, y)
 //   {"click": [x, y], "button": 0}         press and release (0 left, 1 right, 2 middle)
 //   {"double_click": [x, y]}
+//   {"click_mm": [x, y, z]}                a left click where a physical point (LPS mm, as
+//                                          centerline files hold it) is on the shown image
 //   {"drag": {"from": [x, y], "to": [x, y], "button": 0, "steps": 10}}
 //   {"press": [x, y], "button": 0}         button down (held through later moves and waits)
 //   {"release": [x, y], "button": 0}
@@ -30,6 +32,7 @@ struct ScriptStep {
   enum class Kind {
     move,
     click,
+    clickMm,
     doubleClick,
     drag,
     press,
@@ -44,8 +47,9 @@ struct ScriptStep {
     open
   };
   Kind kind = Kind::move;
-  glm::vec2 at{0.f};  // move, click, wheel position; drag start
-  glm::vec2 to{0.f};  // drag end
+  glm::vec2 at{0.f};        // move, click, wheel position; drag start
+  glm::vec2 to{0.f};        // drag end
+  glm::dvec3 pointMm{0.0};  // click_mm
   int button = 0;
   int steps = 10;    // drag: mouse moves between press and release
   double value = 0;  // wait_ms, wheel delta

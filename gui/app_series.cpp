@@ -19,18 +19,23 @@ void App::drawSeriesExport() {
   if (requests.cancel) seriesJob_.cancel();
   if (!requests.start) return;
   seriesJob_.start([this, base = exportRecipe(), centerlines = exportCenterlines(), spec = series_.spec,
-                    folder = series_.folder, labels = unsavedLabels()](JobControl& control) {
+                    folder = series_.folder, labels = unsavedLabels(),
+                    traced = unsavedCenterlines()](JobControl& control) {
     RenderRecipe recipe = base;
-    if (labels) {
-      std::filesystem::create_directories(folder);
+    if (labels || traced) std::filesystem::create_directories(folder);
+    if (labels)
       saveLabelsFor(recipe, data_.volume, *labels, std::filesystem::path(folder) / "labels.seg.nrrd");
-    }
+    Centerlines used = centerlines;
+    if (traced)
+      used = saveCenterlinesFor(
+          recipe, data_.volume, *traced,
+          std::filesystem::path(folder) / ("vessels" + std::string(kBesideCenterlines)));
     SeriesCallbacks callbacks;
     callbacks.cancel = &control.cancel;
     callbacks.progress = [&control](int done, int total) {
       control.progress.store(double(done) / total);
     };
-    return exportRotationSeries(data_.volume, centerlines, recipe, spec, folder, callbacks);
+    return exportRotationSeries(data_.volume, used, recipe, spec, folder, callbacks);
   });
   message_ = "exporting a rotation series to " + series_.folder;
 }

@@ -38,7 +38,12 @@ Document App::session() const {
 void App::applySession(const Document& session) {
   tfTargets_.history().push(editedTf());
   commit(SessionEdit{session});  // the dataset changes when its load succeeds
-  loadSessionCenterlines();      // checked against the session's dataset once that is there
+  vessels_.undo.clear();
+  vessels_.redo.clear();
+  vessels_.ui.selectedPath = -1;
+  const bool sameDataset = session.dataset == data_.name || session.dataset.empty();
+  if (!sameDataset && session.vessels.unsaved) vessels_.pending = session.vessels;
+  loadSessionCenterlines();  // checked against the session's dataset once that is there
   panelsToApply_ = session.panelsOpen;
   labels_.pendingFile = session.labels.file;  // read once its dataset is there
   if (session.dataset == data_.name || session.dataset.empty()) {

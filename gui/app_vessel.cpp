@@ -12,13 +12,12 @@
 
 #include "core/view_geometry.h"
 #include "gui/app.h"
+#include "gui/vessel_trace_job.h"
 #include "io/centerline_file.h"
 
 namespace angio {
 
 namespace fs = std::filesystem;
-
-namespace {}  // namespace
 
 glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm) {
   const glm::dvec3 offset = pointMm - view.centre;
@@ -55,27 +54,40 @@ void App::loadVesselCenterlines(const CenterlineLoad& request) {
   });
 }
 
-// The document's centerline file, loaded in the background; no file: none.
+// The document's centerline file, loaded in the background. Paths a session keeps inline that no
+// file holds (traced, unsaved) are the session's own; saved ones are read again from their file,
+// so a file changed since is what opens, and a missing one says so.
 void App::loadSessionCenterlines() {
   const VesselGlyphState& set = doc().vesselGlyph;
   vessel_.load.stop();
   dropCenterlines();
+  if (doc().vessels.unsaved && !doc().vessels.paths.empty()) return;
   if (set.centerlines.empty() && set.centerlinesAbsolute.empty()) return;
   vessel_.ui.path = set.centerlines.empty() ? set.centerlinesAbsolute : set.centerlines;
   loadVesselCenterlines({vessel_.ui.path, set.centerlinesAbsolute, CenterlineLoad::From::session});
 }
 
 void App::dropCenterlines() {
-  VesselGlyphPanel& vg = vessel_;
-  vg.physical.reset();
-  vg.file.clear();
-  vg.warnings.clear();
-  vg.error.clear();
-  vg.inVolume.reset();
-  vg.framedFor.clear();
+  vessel_.warnings.clear();
+  vessel_.error.clear();
 }
 
-// Once loaded and no dataset load is running (the points are checked against the shown dataset).
+// The document's vessel paths as the centerlines everything else draws from, mapped again when
+// they change (their revision) or the dataset does.
+void App::syncVesselCenterlines() {
+  VesselGlyphPanel& vg = vessel_;
+  vg.file = doc().vessels.file;
+  if (vg.revision == doc().vessels.revision && vg.revisionKnown) return;
+  vg.revision = doc().vessels.revision;
+  vg.revisionKnown = true;
+  Centerlines centerlines = centerlinesOf(doc().vessels);
+  if (centerlines.paths.empty()) vg.physical.reset();
+  else vg.physical = std::move(centerlines);
+  vg.inVolume.reset();
+}
+
+// Once loaded and no dataset load is running (the points are checked against the shown dataset):
+// the file's paths replace the list (one undo step when the user asked for it).
 void App::pollCenterlineLoad() {
   VesselGlyphPanel& vg = vessel_;
   if (!vg.load.ready() || load_.running()) return;
@@ -88,19 +100,21 @@ void App::pollCenterlineLoad() {
     std::snprintf(summary, sizeof summary, "loaded %zu centerline paths (%zu points) from ",
                   loaded.physical.paths.size(), centerlinePointCount(loaded.physical));
     message_ = summary + loaded.file;
-    vg.physical = std::move(loaded.physical);
-    vg.file = loaded.file;
     vg.warnings = std::move(loaded.warnings);
     vg.error.clear();
-    vg.inVolume.reset();
     std::error_code error;
-    const fs::path absolute = fs::absolute(vg.file, error);
-    commit(CenterlineFileEdit{vg.loading.given, error ? vg.file : absolute.lexically_normal().string()});
+    const fs::path absolute = fs::absolute(loaded.file, error);
+    const std::string file = error ? loaded.file : absolute.lexically_normal().string();
+    if (vg.loading.from == CenterlineLoad::From::panel)
+      vessels_.undo.push_back({doc().vessels.paths, "load " + loaded.file});
+    commit(VesselFileEdit{importedPaths(loaded.physical), file});
+    commit(CenterlineFileEdit{vg.loading.given, file});
   } catch (const std::exception& error) {
     vg.error = error.what();
     message_ = error.what();
     // A session's file that is gone or broken: the rest of the session stands, VesselGlyph is off.
     if (vg.loading.from == CenterlineLoad::From::session) {
+      commit(VesselFileEdit{});
       VesselGlyphState off = doc().vesselGlyph;
       off.enabled = false;
       commit(VesselGlyphEdit{off});
@@ -142,7 +156,7 @@ void App::drawVesselSection() {
   info.loading = vg.load.running();
   info.loadingFile = vg.loading.given;
   info.physical = vg.physical ? &*vg.physical : nullptr;
-  info.file = vg.file;
+  info.file = vg.file.empty() ? "traced in the Vessels section" : vg.file;
   info.warnings = vg.warnings;
   info.error = vg.error;
   info.problem = vg.problem;

@@ -2,6 +2,7 @@
 // The VesselGlyph panel's runtime state (thesis ch. 5): the loaded centerlines, mapped into the
 // shown dataset's frame, and why VesselGlyph or the hybrid is not rendered. What the user set (centerline file, shapes, focus / context TFs) is the document's
 // VesselGlyphState. Drawn by gui/panel_vessel_glyph.cpp, run by gui/app_vessel.cpp.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -34,11 +35,14 @@ struct VesselGlyphPanel {
   CenterlineLoad loading;
   BackgroundJob<LoadedCenterlines> load;
 
-  // What was loaded.
-  std::optional<Centerlines> physical;  // as the file holds them (LPS mm)
-  std::string file;                     // where they came from
-  std::string warnings;                 // the loader's, one per line
-  std::string error;                    // the last load's error, shown in the panel
+  // The document's vessel paths (VesselsState) as centerlines, physical (LPS mm), none when
+  // there are none; remade when their revision changes.
+  std::optional<Centerlines> physical;
+  std::string file;  // where they came from ("" = traced)
+  std::uint64_t revision = 0;
+  bool revisionKnown = false;
+  std::string warnings;  // the loader's, one per line
+  std::string error;     // the last load's error, shown in the panel
 
   // Derived, rebuilt on change (UI thread).
   std::optional<Centerlines> inVolume;  // physical mapped into the shown dataset's volume frame

@@ -58,6 +58,14 @@ void addRecentFile(std::vector<std::string>& recent, const std::string& path) {
   if (recent.size() > kMaxRecentFiles) recent.resize(kMaxRecentFiles);
 }
 
+Centerlines centerlinesOf(const VesselsState& vessels) {
+  Centerlines centerlines;
+  centerlines.source = vessels.file.empty() ? "traced paths" : vessels.file;
+  for (const VesselPath& path : vessels.paths)
+    if (path.centerline.points.size() >= 2) centerlines.paths.push_back(path.centerline);
+  return centerlines;
+}
+
 bool isPhantomName(const std::string& dataset) { return dataset.rfind("phantom ", 0) == 0; }
 
 std::string absoluteDataset(const std::string& dataset) {

@@ -5,6 +5,7 @@
 // files), as plain values. Only Workstation::apply (gui/workstation.h) changes one; the session
 // file (gui/session_file.h) is its JSON. Runtime things (textures, the renderer, jobs) live in App.
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "render/progressive_renderer.h"
+#include "vessel/centerline.h"
 #include "vessel/cpr_layout.h"
 #include "vessel/vessel_glyph.h"
 
@@ -79,6 +81,34 @@ struct LabelsState {
   friend bool operator==(const LabelsState&, const LabelsState&) = default;
 };
 
+// One vessel path of the Vessels section: what the user clicked (snapped to the lumen's centre) and
+// the centerline traced through those points, both physical (LPS mm, as files hold them, so a
+// session or a file keeps them whatever the dataset's grid). A path read from a file has no
+// control points: it was not traced here, and snapping its ends again could move an expert's
+// centerline; it can be renamed, deleted and used, not re-traced.
+struct VesselPath {
+  std::string name;
+  std::vector<glm::dvec3> controlPointsMm;  // physical, in the order clicked
+  CenterlinePath centerline;                // physical; fewer than 2 points: not traced yet
+
+  friend bool operator==(const VesselPath&, const VesselPath&) = default;
+};
+
+// The Vessels section's paths: the centerlines VesselGlyph, the CPR view and the hybrid use.
+struct VesselsState {
+  std::vector<VesselPath> paths;
+  std::string file;      // where they were read from or last saved ("" = none)
+  bool unsaved = false;  // changed since (exports then write them beside themselves)
+  // Bumped by Workstation::apply for every change of `paths`: what is derived from them (framed
+  // centerlines, CPR, scene) compares this number, not the paths.
+  std::uint64_t revision = 0;
+
+  friend bool operator==(const VesselsState&, const VesselsState&) = default;
+};
+
+// The paths with a traced centerline (2 points or more), as centerlines in the physical frame.
+Centerlines centerlinesOf(const VesselsState& vessels);
+
 struct Document {
   std::string dataset;  // file or folder; "phantom IxJxK" for the generated phantom
   ViewState view;
@@ -90,6 +120,7 @@ struct Document {
   CprState cpr;
   VesselGlyphState vesselGlyph;
   LabelsState labels;
+  VesselsState vessels;
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 

@@ -16,7 +16,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kTitle = "Open volume";
+// One popup whatever it is for ("###": the id stays when the title changes).
+const char* titleOf(BrowserPurpose purpose) {
+  constexpr const char* kTitles[] = {"Open volume###browser", "Load centerlines###browser",
+                                     "Save centerlines###browser"};
+  return kTitles[int(purpose)];
+}
+const char* hintOf(BrowserPurpose purpose) {
+  constexpr const char* kHints[] = {
+      "volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder",
+      "centerline files (.mrk.json .vtp .csv)",
+      "a centerline file (.mrk.json .vtp .csv): pick one to replace, or type a new name"};
+  return kHints[int(purpose)];
+}
+
+// The typed path, relative ones in the listed folder.
+fs::path typedFile(const FileBrowser& browser) {
+  const fs::path typed(browser.typedPath);
+  return typed.is_relative() ? browser.folder / typed : typed;
+}
 constexpr int kDicomProbeFiles = 8;            // files looked at per folder
 constexpr std::size_t kDicomProbeLimit = 400;  // folders beyond this many are not probed
 
@@ -64,7 +82,17 @@ bool looksLikeDicomSeries(const fs::path& folder) {
   return false;
 }
 
-std::vector<BrowserEntry> listFolder(const fs::path& folder) {
+bool isCenterlineFileName(const fs::path& path) {
+  const std::string name = lowered(path.filename().string());
+  for (const char* ending : {".json", ".vtp", ".csv"}) {
+    const std::string e = ending;
+    if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0) return true;
+  }
+  return false;
+}
+
+std::vector<BrowserEntry> listFolder(const fs::path& folder, BrowserPurpose purpose) {
+  const auto listed = purpose == BrowserPurpose::openVolume ? isVolumeFileName : isCenterlineFileName;
   std::error_code error;
   std::vector<BrowserEntry> folders, files;
   fs::directory_iterator it(folder, error);
@@ -75,7 +103,7 @@ std::vector<BrowserEntry> listFolder(const fs::path& folder) {
     if (name.empty() || name[0] == '.') continue;
     std::error_code typeError;
     if (it->is_directory(typeError)) folders.push_back({name, it->path(), true, false});
-    else if (isVolumeFileName(it->path())) files.push_back({name, it->path(), false, false});
+    else if (listed(it->path())) files.push_back({name, it->path(), false, false});
   }
   const auto byName = [](const BrowserEntry& a, const BrowserEntry& b) {
     const std::string la = lowered(a.name), lb = lowered(b.name);
@@ -89,14 +117,15 @@ std::vector<BrowserEntry> listFolder(const fs::path& folder) {
   return folders;
 }
 
-void FileBrowser::show(const fs::path& startFolder) {
+void FileBrowser::show(const fs::path& startFolder, BrowserPurpose forWhat) {
   requestOpen = true;
+  purpose = forWhat;
   go(startFolder.empty() ? fs::current_path() : startFolder);
 }
 
 void FileBrowser::go(const fs::path& newFolder) {
   try {
-    entries = listFolder(newFolder);
+    entries = listFolder(newFolder, purpose);
     folder = fs::absolute(newFolder).lexically_normal();
     if (folder.has_filename() == false && folder != folder.root_path()) folder = folder.parent_path();
     typedPath = folder.string();
@@ -109,14 +138,16 @@ void FileBrowser::go(const fs::path& newFolder) {
 
 std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
   if (browser.requestOpen) {
-    ImGui::OpenPopup(kTitle);
+    ImGui::OpenPopup(titleOf(browser.purpose));
     browser.requestOpen = false;
   }
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowSize(ImVec2(std::min(640.f, display.x - 40), std::min(480.f, display.y - 40)),
                            ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  if (!ImGui::BeginPopupModal(kTitle)) return std::nullopt;
+  if (!ImGui::BeginPopupModal(titleOf(browser.purpose))) return std::nullopt;
+  const bool volumes = browser.purpose == BrowserPurpose::openVolume;
+  const bool saving = browser.purpose == BrowserPurpose::saveCenterlines;
   std::optional<fs::path> chosen;
   const auto choose = [&](const fs::path& path) {
     chosen = path;
@@ -131,18 +162,16 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
   if (ImGui::IsWindowAppearing() || browser.focusPath) ImGui::SetKeyboardFocusHere();
   browser.focusPath = false;
   if (ImGui::InputText("##path", &browser.typedPath, ImGuiInputTextFlags_EnterReturnsTrue)) {
-    fs::path typed(browser.typedPath);
-    if (typed.is_relative()) typed = browser.folder / typed;
+    const fs::path typed = typedFile(browser);
     std::error_code error;
-    if (fs::is_directory(typed, error) && !looksLikeDicomSeries(typed)) {
+    if (fs::is_directory(typed, error) && !(volumes && looksLikeDicomSeries(typed))) {
       browser.go(typed);
       browser.focusPath = true;  // type on: a file name or the next folder
     } else {
       choose(typed);
     }  // a file, or a DICOM folder; a missing one fails in the loader, named
   }
-  ImGui::TextDisabled(
-      "volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder");
+  ImGui::TextDisabled("%s", hintOf(browser.purpose));
 
   const float footer = ImGui::GetFrameHeightWithSpacing() * 2 + 4;
   ImGui::BeginChild("##entries", ImVec2(0, -footer), true);
@@ -163,21 +192,27 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
       }
     }
   }
-  if (browser.entries.empty()) ImGui::TextDisabled("(no folders or volume files here)");
+  if (browser.entries.empty()) ImGui::TextDisabled("(nothing to list here)");
   ImGui::EndChild();
 
   if (!browser.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", browser.error.c_str());
   const BrowserEntry* selected = browser.selected >= 0 && browser.selected < int(browser.entries.size())
                                      ? &browser.entries[browser.selected]
                                      : nullptr;
-  ImGui::BeginDisabled(!selected || (selected->folder && !selected->dicomSeries));
-  if (ImGui::Button("Open")) choose(selected->path);
-  ImGui::EndDisabled();
+  if (saving) {
+    if (ImGui::Button("Save")) choose(typedFile(browser));
+  } else {
+    ImGui::BeginDisabled(!selected || (selected->folder && !selected->dicomSeries));
+    if (ImGui::Button("Open")) choose(selected->path);
+    ImGui::EndDisabled();
+  }
   ImGui::SameLine();
-  const fs::path seriesFolder = selected && selected->folder ? selected->path : browser.folder;
-  if (ImGui::Button("Open folder as DICOM series")) choose(seriesFolder);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", seriesFolder.string().c_str());
-  ImGui::SameLine();
+  if (volumes) {
+    const fs::path seriesFolder = selected && selected->folder ? selected->path : browser.folder;
+    if (ImGui::Button("Open folder as DICOM series")) choose(seriesFolder);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", seriesFolder.string().c_str());
+    ImGui::SameLine();
+  }
   if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
     ImGui::CloseCurrentPopup();
   ImGui::EndPopup();

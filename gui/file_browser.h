@@ -1,7 +1,8 @@
 #pragma once
 // The built-in file browser (Dear ImGui, no native dialog): a modal listing one folder with
-// std::filesystem, folders first, then volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz), each
-// group sorted by name; up, home and a typed path; a folder of DICOM slices can be opened as a
+// std::filesystem, folders first, then the files it is for (volume files .mha .mhd .nrrd .nhdr
+// .nii .nii.gz, or centerline files .mrk.json .json .vtp .csv), each group sorted by name; up,
+// home and a typed path (saving: a new file's name); a folder of DICOM slices can be opened as a
 // series. Listing and filtering are plain functions, testable without a window.
 #include <filesystem>
 #include <optional>
@@ -19,14 +20,21 @@ struct BrowserEntry {
 
 // By case-insensitive extension: .mha .mhd .nrrd .nhdr .nii .nii.gz.
 bool isVolumeFileName(const std::filesystem::path& path);
+// By case-insensitive extension: .mrk.json .json .vtp .csv.
+bool isCenterlineFileName(const std::filesystem::path& path);
+
+// What the browser is open for: it lists those files, and the app acts on the choice.
+enum class BrowserPurpose { openVolume, loadCenterlines, saveCenterlines };
 // Some of the first few files in `folder` are DICOM (".dcm", or "DICM" at byte 128).
 bool looksLikeDicomSeries(const std::filesystem::path& folder);
-// Visible (no dot-files) folders and volume files of `folder`: folders first, then files, each
-// sorted case-insensitively. Throws std::runtime_error (one line) if it cannot be listed.
-std::vector<BrowserEntry> listFolder(const std::filesystem::path& folder);
+// Visible (no dot-files) folders and the purpose's files of `folder`: folders first, then files,
+// each sorted case-insensitively. Throws std::runtime_error (one line) if it cannot be listed.
+std::vector<BrowserEntry> listFolder(const std::filesystem::path& folder,
+                                     BrowserPurpose purpose = BrowserPurpose::openVolume);
 
 struct FileBrowser {
   bool requestOpen = false;  // show() sets it; the modal opens on the next draw
+  BrowserPurpose purpose = BrowserPurpose::openVolume;
   std::filesystem::path folder;
   std::string typedPath;  // the path field: a folder to go to or a file to open
   std::vector<BrowserEntry> entries;
@@ -34,7 +42,8 @@ struct FileBrowser {
   std::string error;
   bool focusPath = false;  // give the path field the keyboard on the next draw
 
-  void show(const std::filesystem::path& startFolder);
+  void show(const std::filesystem::path& startFolder,
+            BrowserPurpose forWhat = BrowserPurpose::openVolume);
   void go(const std::filesystem::path& newFolder);  // lists it (error kept in `error`)
 };
 

@@ -119,6 +119,7 @@ class HeadlessSession {
     switch (step.kind) {
       case Kind::move: input_.mouse = toImVec(step.at), frame(); break;
       case Kind::click: click(step.at, step.button); break;
+      case Kind::clickMm: click(screenOf(step.pointMm), 0); break;
       case Kind::doubleClick: click(step.at, 0), click(step.at, 0); break;
       case Kind::drag: drag(step); break;
       case Kind::press:
@@ -148,6 +149,13 @@ class HeadlessSession {
   }
 
   static ImVec2 toImVec(glm::vec2 p) { return ImVec2(p.x, p.y); }
+
+  glm::vec2 screenOf(const glm::dvec3& physicalMm) {
+    frame();
+    const std::optional<glm::vec2> at = app_->screenOfPhysical(physicalMm);
+    if (!at) throw std::runtime_error("script: click_mm before an image is shown");
+    return *at;
+  }
 
   void click(glm::vec2 at, int button) {
     input_.mouse = toImVec(at);

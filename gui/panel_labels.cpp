@@ -100,17 +100,9 @@ void drawGrowTool(LabelsPanelUi& ui, const std::vector<LabelStyle>& styles, Widg
 
 void drawFiles(LabelsPanelUi& ui, const LabelsPanelInfo& info, LabelsPanelResult& result,
                WidgetRects& rects) {
-  char path[512];
-  std::snprintf(path, sizeof path, "%s", ui.path.c_str());
-  ImGui::SetNextItemWidth(230);
-  if (ImGui::InputText("##labelpath", path, sizeof path)) ui.path = path;
-  noteRect(rects, "labels_path");
-  ImGui::SameLine();
-  result.save = ImGui::Button("Save");
-  noteRect(rects, "labels_save");
-  ImGui::SameLine();
-  result.load = ImGui::Button("Load");
-  noteRect(rects, "labels_load");
+  const SaveLoadClicks clicks = drawSaveLoad(ui.path, "labels", 230, "Save", "Load", rects);
+  result.save = clicks.save;
+  result.load = clicks.load;
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(".seg.nrrd (3D Slicer, with names and colors), .nrrd, .nii.gz, .mha");
   if (!info.file.empty()) ImGui::TextDisabled("%s", info.file.c_str());
@@ -146,18 +138,11 @@ LabelsPanelResult drawLabelsPanel(const Document& document, LabelsPanelUi& ui,
   ImGui::Checkbox("show removed (translucent)", &showRemoved);
   noteRect(rects, "labels_show_removed");
   drawGrowTool(ui, styles, rects);
-  ImGui::BeginDisabled(!info.canUndo || info.busy);
-  result.undo = ImGui::Button("Undo##labels");
-  noteRect(rects, "labels_undo");
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && info.canUndo)
-    ImGui::SetTooltip("undo %s", info.undoWhat.c_str());
+  result.undo = drawStepButton("Undo##labels", "labels_undo", info.canUndo && !info.busy,
+                               "undo " + info.undoWhat, rects);
   ImGui::SameLine();
-  ImGui::BeginDisabled(!info.canRedo || info.busy);
-  result.redo = ImGui::Button("Redo##labels");
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && info.canRedo)
-    ImGui::SetTooltip("redo %s", info.redoWhat.c_str());
+  result.redo = drawStepButton("Redo##labels", "labels_redo", info.canRedo && !info.busy,
+                               "redo " + info.redoWhat, rects);
   drawFiles(ui, info, result, rects);
   if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
   if (styles != document.tf.labels || showRemoved != document.labels.showRemoved)

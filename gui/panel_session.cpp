@@ -7,15 +7,10 @@ namespace angio {
 
 SessionPanelRequests drawSessionPanel(SessionPanelUi& ui, WidgetRects& rects) {
   SessionPanelRequests requests;
-  ImGui::SetNextItemWidth(190);
-  ImGui::InputText("##sessionpath", &ui.path);
-  noteRect(rects, "session_path");
-  ImGui::SameLine();
-  requests.save = ImGui::Button("Save session");
-  noteRect(rects, "session_save");
-  ImGui::SameLine();
-  requests.load = ImGui::Button("Load session");
-  noteRect(rects, "session_load");
+  const SaveLoadClicks clicks =
+      drawSaveLoad(ui.path, "session", 190, "Save session", "Load session", rects);
+  requests.save = clicks.save;
+  requests.load = clicks.load;
   return requests;
 }
 

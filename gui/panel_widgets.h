@@ -6,6 +6,7 @@
 #include <utility>
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 namespace angio {
 
@@ -14,6 +15,40 @@ using WidgetRects = std::map<std::string, std::pair<ImVec2, ImVec2>>;
 // The last widget's screen rectangle under `name`.
 inline void noteRect(WidgetRects& rects, const std::string& name) {
   rects[name] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+}
+
+struct SaveLoadClicks {
+  bool save = false, load = false;
+};
+
+// A file field and its Save and Load buttons on one line, noted as `<prefix>_path`, `_save` and
+// `_load`.
+inline SaveLoadClicks drawSaveLoad(std::string& path, const std::string& prefix, float width,
+                                   const std::string& saveLabel, const std::string& loadLabel,
+                                   WidgetRects& rects) {
+  SaveLoadClicks clicks;
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputText(("##" + prefix + "path").c_str(), &path);
+  noteRect(rects, prefix + "_path");
+  ImGui::SameLine();
+  clicks.save = ImGui::Button((saveLabel + "##" + prefix).c_str());
+  noteRect(rects, prefix + "_save");
+  ImGui::SameLine();
+  clicks.load = ImGui::Button((loadLabel + "##" + prefix).c_str());
+  noteRect(rects, prefix + "_load");
+  return clicks;
+}
+
+// An undo or redo button: disabled when there is nothing to step to; its tooltip says what.
+inline bool drawStepButton(const std::string& label, const std::string& name, bool enabled,
+                           const std::string& tooltip, WidgetRects& rects) {
+  ImGui::BeginDisabled(!enabled);
+  const bool clicked = ImGui::Button(label.c_str());
+  noteRect(rects, name);
+  ImGui::EndDisabled();
+  if (enabled && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("%s", tooltip.c_str());
+  return clicked;
 }
 
 inline void helpMarker(const char* text) {

@@ -13,6 +13,7 @@
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
+#include "gui/session_vessels.h"
 
 namespace angio {
 
@@ -242,6 +243,7 @@ struct SessionReader {
     const Json& labels = section(json, "labels");
     session.labels.file = in("labels").text(labels, "file");
     session.labels.showRemoved = in("labels").flag(labels, "show_removed", false);
+    if (json.contains("vessels")) session.vessels = parseVessels(json["vessels"], source);
     for (const auto& [name, open] : section(json, "panels").items()) {
       if (!open.is_boolean()) fail("panels " + name + " is not true or false");
       session.panelsOpen[name] = open.get<bool>();
@@ -289,6 +291,7 @@ std::string toJson(const Document& session) {
       {"cpr", cprJson(session.cpr)},
       {"vessel_glyph", vesselGlyphJson(session.vesselGlyph)},
       {"labels", {{"file", session.labels.file}, {"show_removed", session.labels.showRemoved}}},
+      {"vessels", vesselsJson(session.vessels)},
       {"panels", panels},
       {"recent_files", session.recentFiles},
   };

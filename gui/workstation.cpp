@@ -17,6 +17,13 @@ std::string& presetIn(Document& document, TfTarget target) {
   return document.tfPreset;
 }
 
+// The paths' revision goes up when they change, and only then.
+void setPaths(VesselsState& vessels, const std::vector<VesselPath>& paths) {
+  if (vessels.paths == paths) return;
+  vessels.paths = paths;
+  ++vessels.revision;
+}
+
 void change(Document& d, const ViewEdit& edit) { d.view = edit.view; }
 void change(Document& d, const RotateEdit& edit) { d.view.angleDeg += edit.degrees; }
 void change(Document& d, const TfChange& edit) {
@@ -40,7 +47,10 @@ void change(Document& d, const CenterlineFileEdit& edit) {
 }
 void change(Document& d, const DatasetOpened& edit) {
   d.dataset = edit.dataset;
-  d.labels.file.clear();  // the labels of the old dataset do not fit the new one
+  d.labels.file.clear();    // the labels of the old dataset do not fit the new one
+  setPaths(d.vessels, {});  // nor do its vessel paths
+  d.vessels.file.clear();
+  d.vessels.unsaved = false;
   d.view.zoom = 1;
   d.view.panPx = glm::dvec2(0.0);
   addRecentFile(d.recentFiles, edit.dataset);
@@ -51,11 +61,26 @@ void change(Document& d, const LabelStylesEdit& edit) {
   d.labels.showRemoved = edit.showRemoved;
 }
 void change(Document& d, const LabelFileEdit& edit) { d.labels.file = edit.file; }
+void change(Document& d, const VesselPathsEdit& edit) {
+  if (d.vessels.paths == edit.paths) return;
+  setPaths(d.vessels, edit.paths);
+  d.vessels.unsaved = true;
+}
+void change(Document& d, const VesselFileEdit& edit) {
+  setPaths(d.vessels, edit.paths);
+  d.vessels.file = edit.file;
+  d.vessels.unsaved = false;
+}
 void change(Document& d, const PanelOpenEdit& edit) { d.panelsOpen[edit.title] = edit.open; }
 void change(Document& d, const SessionEdit& edit) {
   std::string dataset = std::move(d.dataset);
   std::vector<std::string> recent = std::move(d.recentFiles);
+  VesselsState vessels = std::move(d.vessels);
   d = edit.session;
+  setPaths(vessels, d.vessels.paths);
+  vessels.file = d.vessels.file;
+  vessels.unsaved = d.vessels.unsaved;
+  d.vessels = std::move(vessels);
   d.dataset = std::move(dataset);
   d.recentFiles = std::move(recent);
 }

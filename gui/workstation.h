@@ -70,6 +70,17 @@ struct LabelFileEdit {
   std::string file;
   friend bool operator==(const LabelFileEdit&, const LabelFileEdit&) = default;
 };
+// The Vessels section's paths as the user changed them (traced, renamed, deleted, undone): unsaved.
+struct VesselPathsEdit {
+  std::vector<VesselPath> paths;
+  friend bool operator==(const VesselPathsEdit&, const VesselPathsEdit&) = default;
+};
+// The paths as read from or saved to `file`.
+struct VesselFileEdit {
+  std::vector<VesselPath> paths;
+  std::string file;
+  friend bool operator==(const VesselFileEdit&, const VesselFileEdit&) = default;
+};
 // A side-panel section opened or closed.
 struct PanelOpenEdit {
   std::string title;
@@ -85,7 +96,7 @@ struct SessionEdit {
 
 using Edit = std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
                           CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit,
-                          LabelFileEdit, PanelOpenEdit, SessionEdit>;
+                          LabelFileEdit, VesselPathsEdit, VesselFileEdit, PanelOpenEdit, SessionEdit>;
 
 class Workstation {
  public:
@@ -100,7 +111,8 @@ class Workstation {
   // DVR+CPR hybrid on turns VesselGlyph on (its focus is the hybrid's cut). VesselGlyph may be
   // turned off again while the hybrid is on: the CPR section then says the hybrid waits for it.
   // A main TF without labels (a preset) keeps the labels' styles: changing the TF does not bring
-  // back removed bone. A new dataset starts without labels.
+  // back removed bone. A new dataset starts without labels and without vessel paths (they were traced in the old one).
+  // Every edit that sets the vessel paths bumps their revision.
   void apply(const Edit& edit);
 
  private:

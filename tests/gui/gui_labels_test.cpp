@@ -9,6 +9,7 @@
 
 #include "tests/support/phantom_folder_test.h"
 #include "tests/support/temp_folder_test.h"
+#include "tests/support/widget_points.h"
 
 namespace angio {
 namespace {
@@ -18,10 +19,7 @@ using test_support::runAngioray;
 
 const std::string kWindow = " --size 1000x1400 --timeout 120";
 
-std::string middleOf(const Json& rect) {
-  return "[" + std::to_string((rect[0].get<float>() + rect[2].get<float>()) / 2) + ", " +
-         std::to_string((rect[1].get<float>() + rect[3].get<float>()) / 2) + "]";
-}
+using test_support::middleOf;
 
 class GuiLabels : public test_support::PhantomFolderTest {
  protected:

@@ -13,6 +13,7 @@
 
 #include "tests/support/phantom_folder_test.h"
 #include "tests/support/run_angioray.h"
+#include "tests/support/widget_points.h"
 
 namespace {
 
@@ -23,21 +24,8 @@ using angio::test_support::runAngioray;
 // Tall enough for the side panel down to the Session section without scrolling.
 const std::string kWindow = " --size 1000x1600 --timeout 120";
 
-// A point `fraction` of the way across the widget, at its middle height.
-std::string across(const Json& rect, float fraction) {
-  char text[64];
-  const float x0 = rect[0].get<float>(), x1 = rect[2].get<float>();
-  std::snprintf(text, sizeof text, "[%.1f, %.1f]", x0 + (x1 - x0) * fraction,
-                (rect[1].get<float>() + rect[3].get<float>()) / 2);
-  return text;
-}
-// The box of a checkbox or radio button.
-std::string leftEnd(const Json& rect) {
-  char text[64];
-  std::snprintf(text, sizeof text, "[%.1f, %.1f]", rect[0].get<float>() + 8,
-                (rect[1].get<float>() + rect[3].get<float>()) / 2);
-  return text;
-}
+using angio::test_support::across;
+using angio::test_support::leftEnd;
 
 class GuiSessionVessel : public angio::test_support::PhantomFolderTest {
  protected:

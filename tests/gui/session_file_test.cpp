@@ -312,5 +312,27 @@ TEST_F(SessionFileTest, RecentFilesAreUniqueNewestFirstAndAtMostTen) {
   EXPECT_EQ(std::count(recent.begin(), recent.end(), "/data/5.mha"), 1);
 }
 
+TEST_F(SessionFileTest, TracedVesselPathsLoadBackExactlyAndBadOnesNameTheKey) {
+  Document session;
+  session.tf = unusualSession().tf;  // a session always has a main TF
+  VesselPath path{"left femoral", {{1.0 / 3, -2.5, 1e-7}, {4, 5, -1156.25}}, {}};
+  path.centerline = {"left femoral", {{{1.0 / 3, -2.5, 1e-7}, 2.0 / 3}, {{4, 5, -1156.25}, 1.5}}};
+  session.vessels.paths = {path, {"imported", {}, {"imported", {{{0, 0, 0}, 0}, {{1, 1, 1}, 0}}}}};
+  session.vessels.file = "/data/v.mrk.json";
+  session.vessels.unsaved = true;
+  const fs::path file = dir_ / "vessels.json";
+  saveSession(session, file);
+  const Document loaded = loadSession(file);
+  EXPECT_EQ(loaded.vessels.paths, session.vessels.paths);
+  EXPECT_EQ(loaded.vessels.file, session.vessels.file);
+  EXPECT_TRUE(loaded.vessels.unsaved);
+  expectRejected(
+      R"({"vessels": {"paths": [{"name": "a", "control_points_mm": [[1, 2]], "points": []}]}})",
+      "vessels.paths[0].control_points_mm[0] is not a list of 3 numbers");
+  expectRejected(
+      R"({"vessels": {"paths": [{"name": "a", "control_points_mm": [], "points": [[1, 2, 3, -1]]}]}})",
+      "vessels.paths[0].points[0] has a negative radius");
+}
+
 }  // namespace
 }  // namespace angio

@@ -196,3 +196,56 @@ TEST(GuiWorkstation, EachTfTargetKeepsItsOwnUndoStack) {
 
 }  // namespace
 }  // namespace angio
+
+namespace angio {
+namespace {
+
+VesselPath tracedPath(const std::string& name) {
+  return {name, {{1, 2, 3}, {4, 5, 6}}, {name, {{{1, 2, 3}, 1.5}, {{4, 5, 6}, 1.2}}}};
+}
+
+TEST(GuiWorkstation, VesselPathEditsMarkThemUnsavedAndBumpTheirRevisionOnlyWhenTheyChange) {
+  Workstation workstation;
+  workstation.apply(VesselPathsEdit{{tracedPath("path 1")}});
+  EXPECT_TRUE(workstation.document().vessels.unsaved);
+  const std::uint64_t revision = workstation.document().vessels.revision;
+  const std::uint64_t version = workstation.version();
+  workstation.apply(VesselPathsEdit{{tracedPath("path 1")}});  // the same paths: no change
+  EXPECT_EQ(workstation.document().vessels.revision, revision);
+  EXPECT_EQ(workstation.version(), version);
+  workstation.apply(VesselFileEdit{workstation.document().vessels.paths, "/data/v.csv"});
+  EXPECT_FALSE(workstation.document().vessels.unsaved);
+  EXPECT_EQ(workstation.document().vessels.file, "/data/v.csv");
+  EXPECT_EQ(workstation.document().vessels.revision, revision);  // saved, not changed
+  EXPECT_EQ(centerlinesOf(workstation.document().vessels).paths.size(), 1u);
+}
+
+TEST(GuiWorkstation, ANewDatasetDropsTheVesselPathsAndASessionBringsItsOwn) {
+  Workstation workstation;
+  workstation.apply(VesselFileEdit{{tracedPath("a"), tracedPath("b")}, "/data/v.csv"});
+  const std::uint64_t revision = workstation.document().vessels.revision;
+  workstation.apply(DatasetOpened{"/data/other.mha"});
+  EXPECT_TRUE(workstation.document().vessels.paths.empty());
+  EXPECT_TRUE(workstation.document().vessels.file.empty());
+  EXPECT_GT(workstation.document().vessels.revision, revision);
+  Document session;
+  session.vessels.paths = {tracedPath("c")};
+  session.vessels.unsaved = true;
+  workstation.apply(SessionEdit{session});
+  ASSERT_EQ(workstation.document().vessels.paths.size(), 1u);
+  EXPECT_EQ(workstation.document().vessels.paths[0].name, "c");
+  EXPECT_TRUE(workstation.document().vessels.unsaved);
+  EXPECT_GT(workstation.document().vessels.revision, revision + 1);
+}
+
+TEST(GuiWorkstation, PathsWithFewerThanTwoPointsAreNotCenterlines) {
+  VesselsState vessels;
+  vessels.paths = {{"one click", {{1, 2, 3}}, {"one click", {}}}, tracedPath("two")};
+  const Centerlines centerlines = centerlinesOf(vessels);
+  ASSERT_EQ(centerlines.paths.size(), 1u);
+  EXPECT_EQ(centerlines.paths[0].name, "two");
+  EXPECT_EQ(centerlines.frame, CenterlineFrame::physical);
+}
+
+}  // namespace
+}  // namespace angio
