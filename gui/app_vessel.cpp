@@ -168,6 +168,24 @@ void App::drawVesselSection() {
   if (result.loadCenterlines) loadVesselCenterlines({vg.ui.path, "", CenterlineLoad::From::panel});
 }
 
+constexpr float kOverlayStepPx = 1.5f;
+
+// A path's points from `first` on, on screen, a pixel or more apart: a traced run-off tree has
+// paths of thousands of points at 0.5 mm.
+template <class ToScreen>
+void overlayPoints(const ToScreen& toScreen, const CenterlinePath& path, std::size_t first,
+                   std::vector<ImVec2>& screen) {
+  screen.clear();
+  for (std::size_t n = first; n < path.points.size(); ++n) {
+    const ImVec2 at = toScreen(path.points[n].positionMm);
+    if (!screen.empty() && n + 1 < path.points.size()) {
+      const float dx = at.x - screen.back().x, dy = at.y - screen.back().y;
+      if (dx * dx + dy * dy < kOverlayStepPx * kOverlayStepPx) continue;
+    }
+    screen.push_back(at);
+  }
+}
+
 // The centerlines projected with the shown frame's view, over the image (follows zoom and pan).
 void App::drawCenterlineOverlay() {
   if (!doc().vesselGlyph.overlay || !vessel_.physical || !shown_ || !viewport_.hasImage) return;
@@ -182,13 +200,18 @@ void App::drawCenterlineOverlay() {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(viewport_.min, viewport_.max, true);
   std::vector<ImVec2> screen;
-  for (const CenterlinePath& path : centerlines->paths) {
-    screen.clear();
-    for (const CenterlinePoint& point : path.points)
-      screen.push_back(dvrScreenOf(view, point.positionMm));
-    if (screen.size() >= 2)
-      draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 200), ImDrawFlags_None,
-                        1.5f);
+  const auto& paths = centerlines->paths;
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    // A trunk repeated in later paths (vmtk's layout) is drawn once, with the first.
+    std::size_t first = 0;
+    for (std::size_t earlier = 0; earlier < p; ++earlier)
+      first = std::max(first, sharedPrefixLength(paths[p], paths[earlier]));
+    overlayPoints([&](glm::dvec3 mm) { return dvrScreenOf(view, mm); }, paths[p],
+                  first == 0 ? 0 : first - 1, screen);
+    // A 16-bit ImGui draw list holds 65536 vertices; a thick polyline takes 4 per point.
+    if (screen.size() < 2 || draw->_VtxCurrentIdx + 4 * screen.size() + 64 > 65535) continue;
+    draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 200), ImDrawFlags_None,
+                      1.5f);
   }
   draw->PopClipRect();
 }
