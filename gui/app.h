@@ -196,7 +196,8 @@ class App {
   std::optional<PickedPoint> pickVisible(glm::dvec2 imagePoint) const;
   // Vessels (gui/app_vessels.cpp): tracing from clicks, the path list, its undo and files.
   void drawVesselsSection();
-  void traceOnClick();  // right after drawViewport: a click with the Trace tool on
+  void traceOnClick();                        // right after drawViewport: a click with the Trace tool on
+  void traceOnCprClick(const CprPick& pick);  // with the tool on: the centerline point there
   void drawTraceOverlay();
   void requestTrace(const TraceRequest& request);
   void startNextTrace();

@@ -195,6 +195,10 @@ void App::drawCprView() {
     const int x = int(std::floor((io.MousePos.x - panel.imageMin.x) / scale));
     const int y = int(std::floor((io.MousePos.y - panel.imageMin.y) / scale));
     panel.hovered = pickCpr(*panel.cpr, x, y);
+    const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
+    if (panel.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        drag.x * drag.x + drag.y * drag.y <= 9)
+      traceOnCprClick(*panel.hovered);
   }
   char text[128];
   if (panel.hovered)

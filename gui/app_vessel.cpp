@@ -210,7 +210,8 @@ void App::drawCenterlineOverlay() {
                   first == 0 ? 0 : first - 1, screen);
     // A 16-bit ImGui draw list holds 65536 vertices; a thick polyline takes 4 per point.
     if (screen.size() < 2 || draw->_VtxCurrentIdx + 4 * screen.size() + 64 > 65535) continue;
-    draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 200), ImDrawFlags_None,
+    // Opaque: a trunk drawn once must show as strongly as when every path through it drew it.
+    draw->AddPolyline(screen.data(), int(screen.size()), IM_COL32(40, 230, 255, 255), ImDrawFlags_None,
                       1.5f);
   }
   draw->PopClipRect();

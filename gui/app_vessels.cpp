@@ -104,6 +104,20 @@ void App::traceOnClick() {
   requestTrace(request);
 }
 
+// A click on the CPR view with the tool on: the centerline point the clicked pixel's line passes
+// through (the CPR's own geometry), as a click on the image would give it.
+void App::traceOnCprClick(const CprPick& pick) {
+  if (!vessels_.ui.traceTool) return;
+  const Centerlines* centerlines = framedCenterlines();
+  if (!centerlines || pick.path < 0 || pick.path >= int(centerlines->paths.size())) return;
+  const CenterlinePath& path = centerlines->paths[pick.path];
+  const std::vector<double> arcs = arcLengthsMm(path);
+  if (arcs.empty()) return;
+  const std::size_t n =
+      std::size_t(std::lower_bound(arcs.begin(), arcs.end(), pick.arcMm) - arcs.begin());
+  requestTrace({TraceAction::addPoint, -1, -1, path.points[std::min(n, arcs.size() - 1)].positionMm});
+}
+
 void App::requestTrace(const TraceRequest& request) {
   vessels_.queued.push_back(request);
   if (!vessels_.job.running()) startNextTrace();

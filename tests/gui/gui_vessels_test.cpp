@@ -329,6 +329,27 @@ TEST_F(GuiVessels, SavedPathsLoadBackWithTheirNamesAndAreNoLongerUnsaved) {
   EXPECT_EQ(loaded["runtime"]["vessels"]["undo"], 3);              // two clicks and the load
 }
 
+TEST_F(GuiVessels, AClickOnTheCprViewAddsTheCenterlinePointThere) {
+  const Json& layout = suite_->traced["runtime"]["layout"];
+  ASSERT_TRUE(layout.contains("cpr_shown")) << layout;
+  const std::string showCpr =
+      traceSteps() + R"(, {"click": )" + leftEnd(layout["cpr_shown"]) + R"(}, {"wait_level": "high"})";
+  const Json shown = state(showCpr, "cpr-shown.json");
+  ASSERT_TRUE(shown["runtime"]["layout"].contains("cpr_image")) << shown["runtime"]["layout"];
+  const Json after =
+      state(showCpr + R"(, {"click": )" + middleOf(shown["runtime"]["layout"]["cpr_image"]) +
+                R"(}, {"wait_ms": 50}, {"wait_level": "high"})",
+            "cpr-clicked.json");
+  const Json& paths = after["state"]["vessels"]["paths"];
+  ASSERT_EQ(paths.size(), 1u) << after["runtime"]["vessels"];
+  const Json& controls = paths[0]["control_points_mm"];
+  ASSERT_EQ(controls.size(), 3u) << after["runtime"]["vessels"];
+  // The CPR's middle row is a point of the traced centerline, so of the truth (within a voxel).
+  const Json& added = controls[2];
+  const glm::dvec3 point{added[0].get<double>(), added[1].get<double>(), added[2].get<double>()};
+  EXPECT_LT(distanceTo(suite_->truth[0], point), 2.0) << added;
+}
+
 TEST_F(GuiVessels, ANewDatasetDropsThePathsAndSaysSo) {
   const Json after = state(traceSteps() + R"(, {"open": ")" + at("phantom.nrrd") +
                                R"("}, {"wait_ms": 100}, {"wait_level": "high"})",
