@@ -82,9 +82,10 @@ std::optional<double> VesselTracer::lumenHuNear(glm::dvec3 pointMm) const {
 }
 
 // What the data say surrounds the vessels, unless the settings say: soft tissue's 50 HU in
-// calibrated CT; in data that are not calibrated HU (../shared/data/aorta.mha: tissue 0-500, lumen
-// 900-2400 along one vessel) the volume's median density (a cropped scan is mostly tissue), and
-// calcium has no known density there, so the range reaches the top of the 12-bit scale.
+// calibrated CT; in data that are not calibrated HU (exported research scans: tissue can reach
+// 500 and the lumen vary 900-2400 along one vessel) the volume's median density (a cropped scan is
+// mostly tissue), and calcium has no known density there, so the range reaches the top of the
+// 12-bit scale.
 void VesselTracer::learnTheData() {
   if (calibrated_) return;
   calibrated_ = looksHuCalibrated(*volume_);
