@@ -4,9 +4,11 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "core/clip_interval.h"
 #include "core/fast_raycaster.h"
+#include "core/ray_pick.h"
 #include "core/reference_raycaster.h"
 #include "core/view_geometry.h"
 #include "io/tf_file.h"
@@ -279,6 +281,37 @@ TEST(ClippedRendering, FastMatchesReferenceWithVesselGlyphRegionsAndACrop) {
       expectFastIsReference(volume, RegionTables{&regions, &focus, &contextTable, nullptr}, p,
                             std::string("regions ") + toString(quality) + " " + std::to_string(angle));
     }
+}
+
+TEST(ClippedRendering, APickFindsTheFirstSampleBehindTheCut) {
+  // Opacity 0.6 per sample: the first kept sample reaches the pick's 0.5.
+  const Volume volume = block();
+  const TfTable table = constantTable(0.6);
+  RenderParams p = plain();
+  const ViewGeometry view = makeViewGeometry(volume, p);
+  const glm::dvec2 centre(view.width / 2.0, view.height / 2.0);
+  const auto whole = pickPoint(volume, singleTable(table), p, centre, 0.5);
+  ASSERT_TRUE(whole);
+  EXPECT_DOUBLE_EQ(whole->positionMm.y, 0);  // the block's front face, t = -8
+  p.clipping.plane = facingPlane(2.5);       // keeps t >= 2.5: the first sample is t = 3
+  const auto cut = pickPoint(volume, singleTable(table), p, centre, 0.5);
+  ASSERT_TRUE(cut);
+  EXPECT_DOUBLE_EQ(cut->positionMm.y, 11);
+}
+
+TEST(ClippedRendering, FastImageIsTheSameBytesWithOneThread) {
+  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
+  RenderParams p;
+  p.angleDeg = 33;
+  p.sampling = qualitySampling(Quality::high);
+  p.clipping = clippings(domainExtent(volume))[4].second;
+  const SliceTiles tiles = buildSliceTiles(volume, p.axis);
+  const TileClassification classification(tiles, table);
+  const Image parallel = renderFast(volume, classification, table, p);
+  const tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+  const Image serial = renderFast(volume, classification, table, p);
+  EXPECT_TRUE(parallel.pixels == serial.pixels);
 }
 
 }  // namespace
