@@ -40,6 +40,16 @@ std::vector<Level> levels() {
 }
 
 // One frame: returns samples evaluated.
+// What the "clipped" rows render (core/clip_interval.h): the middle 80 % of the volume along
+// every axis, the half behind a plane facing the viewer through the centre.
+ViewClipping benchClipping(const Volume& volume) {
+  const glm::dvec3 extent = domainExtent(volume);
+  ViewClipping clipping;
+  clipping.crop = CropBox{0.1 * extent, 0.9 * extent};
+  clipping.plane = facingPlane(0);
+  return clipping;
+}
+
 using FrameFunction = std::function<double(const RenderParams&)>;
 
 FrameTimingRow timeFrames(const std::string& level, const std::string& variant, int angles,
@@ -244,6 +254,10 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
     report.rows.push_back(
         timeFrames(level.name, "all", settings.angles, p, sceneFrames(frames, scene, previous)));
     std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
+    RenderParams clipped = p;
+    clipped.clipping = benchClipping(volume);
+    report.rows.push_back(timeFrames(level.name, "clipped", settings.angles, clipped,
+                                     sceneFrames(frames, scene, previous)));
     if (settings.withContributions) {
       // Thesis fig. 4.9 ff.: "contribution" = everything but one technique, at every level;
       // "potential" = one technique alone, at the fast level only (without any, a medium frame

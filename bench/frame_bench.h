@@ -14,6 +14,9 @@
 
 namespace angio {
 
+// Every level has an "all" row and a "clipped" row: that frame with a crop box around the middle
+// 80 % of the volume and a clip plane facing the viewer through its centre (the per-ray clip
+// intervals, core/clip_interval.h).
 struct BenchSettings {
   int angles = 36;
   Axis axis = Axis::k;
@@ -36,7 +39,7 @@ struct BenchSettings {
 
 struct FrameTimingRow {
   std::string level;    // "fast", "medium", "high", "medium-trilinear"
-  std::string variant;  // "all", "reference", "no empty-space skipping", ...
+  std::string variant;  // "all", "clipped", "reference", "no empty-space skipping", ...
   double medianMs = 0, minMs = 0, maxMs = 0;
   double medianCpuMs = 0;    // CPU time of all threads per frame
   double medianSamples = 0;  // density reconstructions per frame

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/clipping_options.h"
 #include "cli/vessel_glyph_options.h"
 
 namespace angio {
@@ -35,6 +36,7 @@ struct RenderOptions {
   std::vector<std::string> hide;      // labels (names or numbers) cut out of the render
   bool showRemoved = false;           // hidden labels translucent instead of cut out
   VesselGlyphCliOptions vesselGlyph;  // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
+  ClippingCliOptions clipping;        // crop box, clip plane, thick slab (cli/clipping_options.h)
   std::string params;                 // a render sidecar to reproduce (then only --out may be given)
 };
 // Writes the image and its sidecar (render/recipe_json.h), or re-renders a sidecar's image.

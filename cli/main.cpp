@@ -49,6 +49,7 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
                   "from the TF's labels); repeatable");
   cmd->add_flag("--show-removed", o.showRemoved, "Render hidden labels translucent instead");
   angio::addVesselGlyphOptions(*cmd, o.vesselGlyph);
+  angio::addClippingOptions(*cmd, o.clipping);
   auto* params = cmd->add_option("--params", o.params,
                                  "Render again what this sidecar (IMAGE.json) "
                                  "describes, to --out or its image");

@@ -36,6 +36,7 @@ RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
   if (o.mip) p.compositing = Compositing::mip;
   p.mip.window = o.window.value_or(tf.mipWindow);
   p.mip.level = o.level.value_or(tf.mipLevel);
+  p.clipping = clippingFrom(o.clipping);
   return p;
 }
 

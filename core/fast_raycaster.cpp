@@ -12,6 +12,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/clip_interval.h"
 #include "core/compositing.h"
 #include "core/ray_samplers.h"
 #include "core/ray_templates.h"
@@ -37,7 +38,8 @@ struct Frame {
   glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
   bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
   bool shareRows = true;
-  bool ownTfs = false;  // some label has its own TF
+  bool ownTfs = false;   // some label has its own TF
+  bool clipped = false;  // a crop box, clip plane or slab cuts the rays (params.clipping)
   // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
   const TfTable* anyRegionTf = nullptr;
 
@@ -163,9 +165,18 @@ RowPlace rowPlace(const Frame& f, int y) {
   return place;
 }
 
+// Whether the clipping cuts every ray of a column the same way whatever its row: rows differ by
+// v e_a, so a crop box (whose bounds along a may pass between them) or a plane tilted towards a
+// cuts them apart; a plane facing the viewer, one parallel to a and the slab do not.
+bool rowsClippedAlike(const ViewClipping& clipping, int axis) {
+  const auto& plane = clipping.plane;
+  return !clipping.crop && (!plane || plane->facingViewer || plane->normal[axis] == 0);
+}
+
 std::vector<RowBundle> rowBundles(const Frame& f) {
   const int maxRows = f.shareRows ? kMaxBundleRows : 1;
-  const bool distinctRays = f.params.sampling.filter == Filter::trilinear || f.regionTables.regions;
+  const bool distinctRays = f.params.sampling.filter == Filter::trilinear || f.regionTables.regions ||
+                            !rowsClippedAlike(f.params.clipping, f.view.axis);
   std::vector<RowBundle> bundles;
   int lastKey = -1;
   for (int y = 0; y < f.view.height; ++y) {
@@ -192,8 +203,11 @@ struct Lane {
   RegionCursor regions;
   RayAccumulator ray;
   float mipMaximum = 0.f;
-  long resumeAt = std::numeric_limits<long>::min();  // samples before it are in a clipped region
-  bool done = false;                                 // terminated early, or nothing more shown
+  // Samples before it are in a clipped region or before the view clipping's interval.
+  long resumeAt = std::numeric_limits<long>::min();
+  long endAt = std::numeric_limits<long>::max();  // the first sample after the clipping's interval
+  bool shows = true;  // some sample lies in the domain and the clipping's interval (MIP: not black)
+  bool done = false;  // terminated early, or nothing more shown
 };
 
 // What the rays of one column of a bundle carry from one tile group to the next.
@@ -203,6 +217,11 @@ struct BundleRay {
   Sampler sampler;
   std::array<Lane, kMaxBundleRows> lanes;
   int live = 1;  // lanes not done
+  // The view clipping's samples of every lane: [clipBegin, clipEnd), and the first endAt of a
+  // live lane (after it that lane is finished).
+  long clipBegin = std::numeric_limits<long>::min();
+  long clipEnd = std::numeric_limits<long>::max();
+  long nextEnd = std::numeric_limits<long>::max();
 
   // The first sample any live lane still needs.
   long resumeAt(int lanes) const {
@@ -221,6 +240,16 @@ struct BundleRay {
   void finish(Lane& lane) {
     lane.done = true;
     --live;
+  }
+  // Before sample k: finishes the lanes whose clip interval ends there.
+  void finishEnded(long k, int lanes) {
+    nextEnd = std::numeric_limits<long>::max();
+    for (int l = 0; l < lanes; ++l) {
+      Lane& lane = this->lanes[l];
+      if (lane.done) continue;
+      if (lane.endAt <= k) finish(lane);
+      else nextEnd = std::min(nextEnd, lane.endAt);
+    }
   }
 };
 
@@ -272,17 +301,17 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   }
 }
 
-// The samples of one tile run, composited into each lane's ray (DVR) or maximum (MIP). Returns
-// true when every lane is done. Samples the sampler proves invisible for every lane (or, in MIP,
-// not above any lane's maximum) are skipped without interpolation; they could not change a pixel.
+// The samples [first, stop) of one tile run, composited into each lane's ray (DVR) or maximum
+// (MIP); returns the sample reached (>= stop, or where every lane was done). Samples the sampler
+// proves invisible for every lane (or, in MIP, not above any lane's maximum) are skipped without
+// interpolation; they could not change a pixel.
 template <class Mode, class Sampler>
-bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, long first,
-               BundleRay<Sampler>& b) {
+long sampleSpan(const Frame& f, const RowBundle& bundle, long first, long stop, BundleRay<Sampler>& b) {
   const bool skip = f.skipCells;
   const int lanes = bundle.lanes;
   Sampler& sampler = b.sampler;
-  const long end = run.firstSample + run.count;
-  for (long k = first; k < end; ++k) {
+  long k = first;
+  for (; k < stop; ++k) {
     sampler.moveTo(b.positions.at(k));
     if constexpr (Mode::mip) {
       if (skip && sampler.maxDensity() <= b.mipFloor(lanes)) {
@@ -297,14 +326,28 @@ bool sampleRun(const Frame& f, const RowBundle& bundle, const TileRun& run, long
     }
     for (int l = 0; l < lanes; ++l)
       if (!b.lanes[l].done && k >= b.lanes[l].resumeAt) sampleLane<Mode>(f, bundle, l, k, b);
-    if (b.live == 0) return true;
+    if (b.live == 0) return k;
     // Every lane in a clipped stretch: leap to the first sample one of them needs.
     if constexpr (Mode::regions) {
       const long next = b.resumeAt(lanes);
       if (next > k + 1) k = next - 1;
     }
   }
-  return false;
+  return k;
+}
+
+// The samples [first, end) of one tile run; returns true when every lane is done. Lanes whose
+// clip interval ends inside it are finished there: each span runs up to the next such end
+// (without clipping there is none, and the run is one span).
+template <class Mode, class Sampler>
+bool sampleRun(const Frame& f, const RowBundle& bundle, long first, long end, BundleRay<Sampler>& b) {
+  for (long k = first;;) {
+    k = sampleSpan<Mode>(f, bundle, k, std::min(end, b.nextEnd), b);
+    if (b.live == 0) return true;
+    if (k >= end) return false;
+    b.finishEnded(k, bundle.lanes);
+    if (b.live == 0) return true;
+  }
 }
 
 bool cancelRequested(const FastRenderOptions& options) {
@@ -339,14 +382,16 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
     const TileRun& run = f.templates.runs[r];
     if (f.skipTiles && !mayShow<Mode>(row.visible[run.tile], row.maxDensity[run.tile], b, bundle.lanes))
       continue;
-    const long end = run.firstSample + run.count;
-    long first = run.firstSample;
-    if constexpr (Mode::regions) {
-      first = std::max(first, b.resumeAt(bundle.lanes));
-      if (end <= first) continue;
+    if (run.firstSample >= b.clipEnd) {  // beyond every lane's clip interval
+      b.finishEnded(run.firstSample, bundle.lanes);
+      return true;
     }
+    const long end = std::min(run.firstSample + run.count, b.clipEnd);
+    long first = std::max(run.firstSample, b.clipBegin);
+    if constexpr (Mode::regions) first = std::max(first, b.resumeAt(bundle.lanes));
+    if (end <= first) continue;
     samples += std::uint64_t(end - first) * bundle.rows;
-    if (sampleRun<Mode>(f, bundle, run, first, b)) return true;
+    if (sampleRun<Mode>(f, bundle, first, end, b)) return true;
   }
   return false;
 }
@@ -358,6 +403,29 @@ Read densityReader(const Frame& f) {
   else return Read{};
 }
 
+// Each lane's samples as the reference takes them (clippedSampleRange of the lane's own ray); a
+// lane with none is done before it starts.
+template <class Sampler>
+void clipLanes(const Frame& f, const RowBundle& bundle, int x, BundleRay<Sampler>& b) {
+  b.clipBegin = std::numeric_limits<long>::max();
+  b.clipEnd = std::numeric_limits<long>::min();
+  for (int l = 0; l < bundle.lanes; ++l) {
+    Lane& lane = b.lanes[l];
+    const SampleRange range =
+        clippedSampleRange(f.view, f.params.clipping, f.view.rayOrigin(x, bundle.firstRow + l));
+    lane.resumeAt = range.first;
+    lane.endAt = range.last + 1;
+    lane.shows = !range.empty();
+    if (!lane.shows) {
+      b.finish(lane);
+      continue;
+    }
+    b.clipBegin = std::min(b.clipBegin, lane.resumeAt);
+    b.clipEnd = std::max(b.clipEnd, lane.endAt);
+    b.nextEnd = std::min(b.nextEnd, lane.endAt);
+  }
+}
+
 template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   BundleRay<Sampler> b{
@@ -367,6 +435,7 @@ BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
       bundle.lanes};
   for (int l = 0; l < bundle.lanes; ++l)
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
+  if (f.clipped) clipLanes(f, bundle, x, b);
   return b;
 }
 
@@ -383,8 +452,9 @@ void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampl
                              ? mipPixel(0.f, f.params.mip)
                              : glm::vec4(0.f);
       else
-        image.at(x, y) =
-            Mode::mip ? mipPixel(b->lanes[l].mipMaximum, f.params.mip) : b->lanes[l].ray.pixel();
+        image.at(x, y) = !Mode::mip          ? b->lanes[l].ray.pixel()
+                         : b->lanes[l].shows ? mipPixel(b->lanes[l].mipMaximum, f.params.mip)
+                                             : glm::vec4(0.f);
     }
   }
 }
@@ -515,6 +585,7 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.skipTiles = options.skipEmpty && options.skipTiles;
   f.shareRows = options.shareRows;
   f.ownTfs = f.labels.ownsAny();
+  f.clipped = params.clipping.any();
   // Cell skipping pays only with several samples per cell: at osd 1 (about one sample per cell)
   // the test and leap cost more than the interpolation they save (`angioray bench` times both).
   f.skipCells = options.skipEmpty && options.skipCells && params.sampling.osd < 0.75;

@@ -7,6 +7,8 @@
 // together, so a cell's corners, transparency and gradients serve all of them (at the high level
 // several rows share a slice pair); cell transparency and the cell's gradients cached per ray
 // (core/ray_samplers.h); early ray termination; bundles in parallel (oneTBB, dynamic balance).
+// The view's clipping (crop box, clip plane, slab: core/clip_interval.h) gives each lane the
+// reference's sample range: it starts at its first sample and is finished after its last.
 // Every evaluated sample uses the reference's operations (core/compositing.h), so the image is the
 // reference's for every filter, mode, axis and angle, up to float rounding: the compiler may fuse
 // a multiply and an add (-ffp-contract) in one inlined path and not in the other.

@@ -48,7 +48,7 @@ std::optional<PickedPoint> pickLabelled(const Volume& volume, const RenderParams
   const ViewGeometry view = makeViewGeometry(volume, params);
   const glm::dvec3 origin = originAt(view, imagePoint);
   const RaySamples positions(volume, view, origin);
-  const SampleRange samples = sampleRange(view, origin);
+  const SampleRange samples = clippedSampleRange(view, params.clipping, origin);
   for (long k = samples.first; k <= samples.last; ++k) {
     const glm::dvec3 q = positions.at(k);
     if (sampleLabel(volume, q, params.sampling.filter) == 0) continue;

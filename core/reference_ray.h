@@ -1,9 +1,11 @@
 #pragma once
-// One ray of the rendering model, sample by sample, nothing skipped: the reference raycaster's
+// One ray of the rendering model, sample by sample, nothing skipped (but what the view's clipping
+// cuts away, core/clip_interval.h): the reference raycaster's
 // pixel and the 3-D pick's walk (core/ray_pick.h), so a click finds its point by the same ray
 // model the image was rendered with.
 #include <algorithm>
 
+#include "core/clip_interval.h"
 #include "core/compositing.h"
 #include "core/view_geometry.h"
 #include "core/volume_sampling.h"
@@ -27,7 +29,7 @@ RayAccumulator compositeDvr(const RayScene& s, const glm::dvec3& origin, RegionC
   const Filter filter = s.params.sampling.filter;
   const glm::vec3 viewDir(s.view.viewDir);
   const RaySamples positions(s.volume, s.view, origin);
-  const SampleRange samples = sampleRange(s.view, origin);
+  const SampleRange samples = clippedSampleRange(s.view, s.params.clipping, origin);
   RayAccumulator ray;
   for (long k = samples.first; k <= samples.last; ++k) {
     const glm::dvec3 q = positions.at(k);
@@ -53,7 +55,7 @@ struct RayMaximum {
 
 inline RayMaximum maximumAlongRay(const RayScene& s, const glm::dvec3& origin, RegionCursor regions) {
   const RaySamples positions(s.volume, s.view, origin);
-  const SampleRange samples = sampleRange(s.view, origin);
+  const SampleRange samples = clippedSampleRange(s.view, s.params.clipping, origin);
   RayMaximum maximum;
   for (long k = samples.first; k <= samples.last; ++k) {
     if (!s.tables.of(regions.at(double(k) * s.view.sampleMm))) continue;

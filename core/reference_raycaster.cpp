@@ -18,9 +18,10 @@ glm::vec4 dvrPixel(const RayScene& scene, const glm::dvec3& origin, RegionCursor
       .pixel();
 }
 
-// A ray that misses the volume is black; one through it shows its maximum through the window.
+// A ray that misses the volume, or whose samples the clipping all cuts away, is black; one through
+// it shows its maximum through the window.
 glm::vec4 mipRayPixel(const RayScene& scene, const glm::dvec3& origin, RegionCursor regions) {
-  if (sampleRange(scene.view, origin).empty()) return glm::vec4(0.f);
+  if (clippedSampleRange(scene.view, scene.params.clipping, origin).empty()) return glm::vec4(0.f);
   return mipPixel(maximumAlongRay(scene, origin, regions).density, scene.params.mip);
 }
 

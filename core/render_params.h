@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "core/view_clipping.h"
+
 namespace angio {
 
 enum class Axis { i = 0, j = 1, k = 2 };
@@ -41,6 +43,7 @@ struct RenderParams {
   Shading shading;
   Compositing compositing = Compositing::dvr;
   MipWindow mip;
+  ViewClipping clipping;  // crop box, clip plane, thick slab (none: the whole volume)
 
   friend bool operator==(const RenderParams&, const RenderParams&) = default;
 };

@@ -144,6 +144,7 @@ void App::drawViewportWindow() {
   viewport_ = drawViewport(image.texture ? &image : nullptr, doc().view, viewportOverlay());
   if (viewport_.zoomedOrPanned) commit(ViewEdit{*viewport_.zoomedOrPanned});
   drawCenterlineOverlay();
+  drawCropOverlay();
   moveCprCursorOnClick();
   growOnClick();
   traceOnClick();

@@ -138,6 +138,7 @@ class App {
   std::shared_ptr<const PreparedScene> currentScene();
   std::shared_ptr<const PreparedScene> prepareScene(RenderRecipe recipe, const Centerlines& centerlines);
   RenderRecipe exportRecipe() const;  // of what the last request rendered
+  RenderParams viewParams() const;    // the document's view, shading, mode and clipping
   Centerlines exportCenterlines();    // the recipe's centerlines in the volume frame (none: empty)
   // The side panel and status bar (gui/app_panels.cpp): the sections are gui/panel_*.h; these
   // give them what they show and act on what they return.
@@ -171,6 +172,7 @@ class App {
   // VesselGlyph (gui/app_vessel.cpp): centerlines loaded in the background, the overlay.
   void drawVesselSection();
   void drawCenterlineOverlay();
+  void drawCropOverlay();  // the crop box's edges over the image (gui/app_clip.cpp)
   void loadVesselCenterlines(const CenterlineLoad& request);  // in the background
   void loadSessionCenterlines();  // the document's centerline file (none: the loaded ones go)
   void pollCenterlineLoad();

@@ -7,6 +7,7 @@
 
 #include "gui/app.h"
 #include "gui/app_export.h"
+#include "gui/panel_clip.h"
 #include "gui/panel_export.h"
 #include "gui/panel_rendering.h"
 #include "gui/panel_status.h"
@@ -28,6 +29,8 @@ void App::drawSidePanel() {
   drawVesselsSection();
   drawLabelsSection();
   if (sectionHeader("Rendering")) commit(drawRenderingPanel(doc()));
+  if (sectionHeader("Crop & clip", false))
+    commit(drawClipPanel(doc().clip, domainExtent(data_.volume), widgetRects_));
   drawExportSection();
   drawSeriesExport();  // part of the Export section
   drawSessionSection();

@@ -83,8 +83,16 @@ std::shared_ptr<const PreparedScene> App::prepareScene(RenderRecipe recipe,
   }
 }
 
+// The clipping is in the volume's millimetres, so it is made here, where the volume is known.
+RenderParams App::viewParams() const {
+  RenderParams params = renderParamsOf(doc());
+  params.clipping = viewClippingOf(doc().clip, domainExtent(data_.volume));
+  return params;
+}
+
 RenderRecipe App::exportRecipe() const {
   RenderRecipe recipe = exportSidecar(doc(), data_.name, export_.ui.isd);
+  recipe.params.clipping = viewParams().clipping;
   recipe.labels = exportLabelFile();
   if (!scene_) return recipe;  // nothing rendered yet: plain DVR/MIP
   recipe.vesselGlyph = scene_->recipe().vesselGlyph;

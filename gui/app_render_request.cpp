@@ -60,7 +60,7 @@ void App::pollRenderer() {
 void App::requestRender(bool interactive) {
   ProgressiveRequest request;
   request.scene = currentScene();
-  request.params = renderParamsOf(doc());
+  request.params = viewParams();
   request.interactive = interactive;
   request.levels = doc().levels;
   if (lastRequest_ && *lastRequest_ == request) return;

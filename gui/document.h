@@ -1,7 +1,7 @@
 #pragma once
 // The workstation's document: what the user edits and a session file keeps (dataset, view, main
 // TF with its MIP window, mode, shading, the quality levels' sampling, the CPR view and DVR+CPR
-// hybrid, the VesselGlyph panel's settings and TFs, which side-panel sections are open, recent
+// hybrid, the VesselGlyph panel's settings and TFs, crop box, clip plane and slab, which side-panel sections are open, recent
 // files), as plain values. Only Workstation::apply (gui/workstation.h) changes one; the session
 // file (gui/session_file.h) is its JSON. Runtime things (textures, the renderer, jobs) live in App.
 #include <cstddef>
@@ -14,6 +14,7 @@
 
 #include "core/render_params.h"
 #include "core/transfer_function.h"
+#include "gui/clip_state.h"
 #include "render/progressive_renderer.h"
 #include "vessel/centerline.h"
 #include "vessel/cpr_layout.h"
@@ -121,6 +122,7 @@ struct Document {
   VesselGlyphState vesselGlyph;
   LabelsState labels;
   VesselsState vessels;
+  ClipState clip;                          // the Crop & clip section
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 

@@ -50,6 +50,22 @@ Json vesselGlyphJson(const VesselGlyphState& vg) {
   return json;
 }
 
+Json vectorJson(glm::dvec3 v) { return {v.x, v.y, v.z}; }
+
+Json clipJson(const ClipState& clip) {
+  return {{"crop_on", clip.cropOn},
+          {"crop_min_mm", vectorJson(clip.crop.minMm)},
+          {"crop_max_mm", vectorJson(clip.crop.maxMm)},
+          {"plane_on", clip.planeOn},
+          {"facing_viewer", clip.facingViewer},
+          {"normal_axis", toString(clip.normalAxis)},
+          {"flip_normal", clip.flipNormal},
+          {"plane_offset_mm", clip.planeOffsetMm},
+          {"slab_on", clip.slabOn},
+          {"slab_offset_mm", clip.slab.offsetMm},
+          {"slab_thickness_mm", clip.slab.thicknessMm}};
+}
+
 Json samplingJson(const Sampling& sampling) {
   return {{"isd", sampling.isd},
           {"osd", sampling.osd},
@@ -193,6 +209,36 @@ struct SessionReader {
     return sampling;
   }
 
+  glm::dvec3 vector(const Json& object, const char* key, glm::dvec3 fallback) const {
+    if (!object.contains(key)) return fallback;
+    const Json& v = object[key];
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      fail(where + key + " is not [x, y, z]");
+    const glm::dvec3 value(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+    if (!std::isfinite(value.x + value.y + value.z)) fail(where + key + " is not finite");
+    return value;
+  }
+
+  // The Crop & clip section (where = "clip."); the crop box's minimum never above its maximum.
+  ClipState clip(const Json& c) const {
+    constexpr double kFar = 1e6;  // mm: beyond any scanner's field
+    ClipState clip;
+    clip.cropOn = flag(c, "crop_on", clip.cropOn);
+    clip.crop.minMm = vector(c, "crop_min_mm", clip.crop.minMm);
+    clip.crop.maxMm = vector(c, "crop_max_mm", clip.crop.maxMm);
+    if (glm::any(glm::greaterThan(clip.crop.minMm, clip.crop.maxMm)))
+      fail(where + "crop_min_mm exceeds crop_max_mm");
+    clip.planeOn = flag(c, "plane_on", clip.planeOn);
+    clip.facingViewer = flag(c, "facing_viewer", clip.facingViewer);
+    clip.normalAxis = *choice(c, "normal_axis", parseAxis, clip.normalAxis, "i, j or k");
+    clip.flipNormal = flag(c, "flip_normal", clip.flipNormal);
+    clip.planeOffsetMm = number(c, "plane_offset_mm", -kFar, kFar, clip.planeOffsetMm);
+    clip.slabOn = flag(c, "slab_on", clip.slabOn);
+    clip.slab.offsetMm = number(c, "slab_offset_mm", -kFar, kFar, clip.slab.offsetMm);
+    clip.slab.thicknessMm = number(c, "slab_thickness_mm", 1e-3, kFar, clip.slab.thicknessMm);
+    return clip;
+  }
+
   CprState cpr(const Json& c) const {
     CprState cpr;
     cpr.shown = flag(c, "shown", cpr.shown);
@@ -239,6 +285,7 @@ struct SessionReader {
     for (int q = 0; q < kQualityLevels; ++q)
       session.levels[q] = sampling(section(levels, toString(Quality(q))), session.levels[q]);
     session.cpr = cpr(section(json, "cpr"));
+    session.clip = in("clip").clip(section(json, "clip"));
     session.vesselGlyph = in("vessel_glyph").vesselGlyph(section(json, "vessel_glyph"));
     const Json& labels = section(json, "labels");
     session.labels.file = in("labels").text(labels, "file");
@@ -289,6 +336,7 @@ std::string toJson(const Document& session) {
        {{"enabled", session.shading.enabled}, {"ka", session.shading.ka}, {"kd", session.shading.kd}}},
       {"levels", levels},
       {"cpr", cprJson(session.cpr)},
+      {"clip", clipJson(session.clip)},
       {"vessel_glyph", vesselGlyphJson(session.vesselGlyph)},
       {"labels", {{"file", session.labels.file}, {"show_removed", session.labels.showRemoved}}},
       {"vessels", vesselsJson(session.vessels)},

@@ -53,6 +53,7 @@ void change(Document& d, const DatasetOpened& edit) {
   d.vessels.unsaved = false;
   d.view.zoom = 1;
   d.view.panPx = glm::dvec2(0.0);
+  d.clip = {};
   addRecentFile(d.recentFiles, edit.dataset);
 }
 void change(Document& d, const RecentFilesEdit& edit) { d.recentFiles = edit.recentFiles; }
@@ -71,6 +72,7 @@ void change(Document& d, const VesselFileEdit& edit) {
   d.vessels.file = edit.file;
   d.vessels.unsaved = false;
 }
+void change(Document& d, const ClipEdit& edit) { d.clip = edit.clip; }
 void change(Document& d, const PanelOpenEdit& edit) { d.panelsOpen[edit.title] = edit.open; }
 void change(Document& d, const SessionEdit& edit) {
   std::string dataset = std::move(d.dataset);

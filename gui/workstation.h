@@ -81,6 +81,11 @@ struct VesselFileEdit {
   std::string file;
   friend bool operator==(const VesselFileEdit&, const VesselFileEdit&) = default;
 };
+// The Crop & clip section: crop box, clip plane, thick slab.
+struct ClipEdit {
+  ClipState clip;
+  friend bool operator==(const ClipEdit&, const ClipEdit&) = default;
+};
 // A side-panel section opened or closed.
 struct PanelOpenEdit {
   std::string title;
@@ -94,9 +99,10 @@ struct SessionEdit {
   friend bool operator==(const SessionEdit&, const SessionEdit&) = default;
 };
 
-using Edit = std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
-                          CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit,
-                          LabelFileEdit, VesselPathsEdit, VesselFileEdit, PanelOpenEdit, SessionEdit>;
+using Edit =
+    std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
+                 CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit, LabelFileEdit,
+                 VesselPathsEdit, VesselFileEdit, PanelOpenEdit, SessionEdit, ClipEdit>;
 
 class Workstation {
  public:
@@ -112,7 +118,8 @@ class Workstation {
   // turned off again while the hybrid is on: the CPR section then says the hybrid waits for it.
   // A main TF without labels (a preset) keeps the labels' styles: changing the TF does not bring
   // back removed bone. A new dataset starts without labels and without vessel paths (they were traced in the old one).
-  // Every edit that sets the vessel paths bumps their revision.
+  // Every edit that sets the vessel paths bumps their revision. A new dataset starts without
+  // clipping (the crop box was in the old one's millimetres).
   void apply(const Edit& edit);
 
  private:

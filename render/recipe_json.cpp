@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/clip_interval.h"
 #include "core/number_text.h"
 #include "io/atomic_write.h"
 #include "io/input_error.h"
@@ -45,6 +46,23 @@ Json hybridJson(const HybridCprRecipe& hybrid) {
   return json;
 }
 
+Json vectorJson(glm::dvec3 v) { return Json::array({v.x, v.y, v.z}); }
+
+// Each part null when off (render/recipe_json.h).
+Json clippingJson(const ViewClipping& c) {
+  Json json = {{"crop", nullptr}, {"plane", nullptr}, {"slab", nullptr}};
+  if (c.crop)
+    json["crop"] = {{"min_mm", vectorJson(c.crop->minMm)}, {"max_mm", vectorJson(c.crop->maxMm)}};
+  if (c.plane)
+    json["plane"] = c.plane->facingViewer
+                        ? Json{{"facing_viewer", true}, {"offset_mm", c.plane->offsetMm}}
+                        : Json{{"facing_viewer", false},
+                               {"point_mm", vectorJson(c.plane->pointMm)},
+                               {"normal", vectorJson(c.plane->normal)}};
+  if (c.slab) json["slab"] = {{"offset_mm", c.slab->offsetMm}, {"thickness_mm", c.slab->thicknessMm}};
+  return json;
+}
+
 // --- Reading: every accessor names the key in its one-line error ----------------------------
 
 struct Reader {
@@ -71,6 +89,18 @@ struct Reader {
     const Json& value = at(object, key, where);
     if (!value.is_string()) throw InputError(source, "\"" + where + key + "\" is not a string");
     return value.get<std::string>();
+  }
+  glm::dvec3 vector(const Json& object, const std::string& key, const std::string& where) const {
+    const Json& value = at(object, key, where);
+    if (!value.is_array() || value.size() != 3)
+      throw InputError(source, "\"" + where + key + "\" is not a list of 3 numbers");
+    glm::dvec3 v;
+    for (int n = 0; n < 3; ++n) {
+      if (!value[n].is_number() || !std::isfinite(value[n].get<double>()))
+        throw InputError(source, "\"" + where + key + "\" is not a list of 3 numbers");
+      v[n] = value[n].get<double>();
+    }
+    return v;
   }
   template <class Parse>
   auto choice(const Json& object, const std::string& key, Parse parse,
@@ -142,6 +172,38 @@ HybridCprRecipe readHybrid(const Reader& r, const Json& json) {
   return hybrid;
 }
 
+ClipPlane readPlane(const Reader& r, const Json& json) {
+  const std::string where = "clipping.plane.";
+  ClipPlane plane;
+  plane.facingViewer = r.flag(json, "facing_viewer", where);
+  if (plane.facingViewer) {
+    plane.offsetMm = r.number(json, "offset_mm", where);
+  } else {
+    plane.pointMm = r.vector(json, "point_mm", where);
+    plane.normal = r.vector(json, "normal", where);
+  }
+  return plane;
+}
+
+// Absent in sidecars written before clipping existed: nothing clipped.
+ViewClipping readClipping(const Reader& r, const Json& json) {
+  ViewClipping c;
+  if (!json.contains("clipping")) return c;
+  const Json& clipping = r.at(json, "clipping", "");
+  const std::string where = "clipping.";
+  if (const Json& crop = r.at(clipping, "crop", where); !crop.is_null())
+    c.crop =
+        CropBox{r.vector(crop, "min_mm", where + "crop."), r.vector(crop, "max_mm", where + "crop.")};
+  if (const Json& plane = r.at(clipping, "plane", where); !plane.is_null())
+    c.plane = readPlane(r, plane);
+  if (const Json& slab = r.at(clipping, "slab", where); !slab.is_null())
+    c.slab = ThickSlab{r.number(slab, "offset_mm", where + "slab."),
+                       r.number(slab, "thickness_mm", where + "slab.")};
+  if (const std::string problem = clippingProblem(c); !problem.empty())
+    throw InputError(r.source, "\"clipping\": " + problem);
+  return c;
+}
+
 RenderParams readParams(const Reader& r, const Json& json) {
   RenderParams p;
   const Json& view = r.at(json, "view", "");
@@ -165,6 +227,7 @@ RenderParams readParams(const Reader& r, const Json& json) {
   const Json& mip = r.at(json, "mip", "");
   p.mip.window = r.number(mip, "window", "mip.");
   p.mip.level = r.number(mip, "level", "mip.");
+  p.clipping = readClipping(r, json);
   return p;
 }
 
@@ -208,6 +271,30 @@ ImageMetadata viewMetadata(const RenderRecipe& s) {
   return metadata;
 }
 
+std::string vectorText(glm::dvec3 v) {
+  return numberText(v.x) + "," + numberText(v.y) + "," + numberText(v.z);
+}
+
+// The clipping in the words of the `render` flags (--crop, --clip, --clip-facing, --slab).
+void addClippingMetadata(const ViewClipping& c, ImageMetadata& metadata) {
+  if (c.crop) {
+    const CropBox& box = *c.crop;
+    std::string text;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis) text += ',';
+      text += numberText(box.minMm[axis]);
+      text += ',';
+      text += numberText(box.maxMm[axis]);
+    }
+    metadata["crop_mm"] = text;
+  }
+  if (c.plane)
+    metadata["clip"] = c.plane->facingViewer
+                           ? "facing viewer, offset " + numberText(c.plane->offsetMm) + " mm"
+                           : vectorText(c.plane->pointMm) + "," + vectorText(c.plane->normal);
+  if (c.slab) metadata["slab_mm"] = numberText(c.slab->offsetMm) + "," + numberText(c.slab->thicknessMm);
+}
+
 }  // namespace
 
 fs::path sidecarPathFor(const fs::path& image) { return fs::path(image.string() + ".json"); }
@@ -231,6 +318,7 @@ std::string renderSidecarJson(const RenderRecipe& s) {
       {"shading", {{"enabled", p.shading.enabled}, {"ka", p.shading.ka}, {"kd", p.shading.kd}}},
       {"compositing", p.compositing == Compositing::mip ? "mip" : "dvr"},
       {"mip", {{"window", p.mip.window}, {"level", p.mip.level}}},
+      {"clipping", clippingJson(p.clipping)},
       {"tf", tfJson(s.tf)},
       {"vessel_glyph", s.vesselGlyph ? vesselGlyphJson(*s.vesselGlyph) : Json(nullptr)},
       {"hybrid_cpr", s.hybrid ? hybridJson(*s.hybrid) : Json(nullptr)},
@@ -289,6 +377,7 @@ ImageMetadata renderSidecarMetadata(const RenderRecipe& s) {
   ImageMetadata metadata = viewMetadata(s);
   metadata["raycaster"] = s.raycaster == Raycaster::reference ? "reference" : "fast";
   if (!s.labels.empty()) metadata["labels"] = s.labels;
+  addClippingMetadata(s.params.clipping, metadata);
   if (s.vesselGlyph) {
     const VesselGlyphRecipe& vg = *s.vesselGlyph;
     metadata.erase("transfer_function");

@@ -5,26 +5,17 @@
 #include <fstream>
 #include <string>
 
-#include <OpenImageIO/imagebuf.h>
 #include <gtest/gtest.h>
 
 #include "tests/support/phantom_folder_test.h"
+#include "tests/support/png_pixels.h"
 #include "tests/support/temp_folder_test.h"
 
 namespace angio {
 namespace {
 
+using test_support::pixelsOf;
 using test_support::runAngioray;
-
-// The decoded pixels (the file's metadata names the label file, the pixels do not).
-std::vector<unsigned char> pixelsOf(const std::string& png) {
-  OIIO::ImageBuf image(png);
-  EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::UINT8)) << png;
-  const OIIO::ImageSpec& spec = image.spec();
-  std::vector<unsigned char> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
-  image.get_pixels(image.roi(), OIIO::TypeDesc::UINT8, pixels.data());
-  return pixels;
-}
 
 int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }
 
@@ -50,7 +41,8 @@ TEST_F(LabelsCli, HidingBoneChangesTheImageAndTheSidecarRendersItAgainByteForByt
   EXPECT_NE(hidden, ghost);
   render("plain.png", "");
   // Labels that render as unlabelled voxels change no pixel.
-  EXPECT_EQ(pixelsOf(file("shown.png")), pixelsOf(file("plain.png")));
+  // The decoded pixels (the file's metadata names the label file, the pixels do not).
+  EXPECT_EQ(pixelsOf(file("shown.png")).values, pixelsOf(file("plain.png")).values);
   const nlohmann::json sidecar = readJson("hidden.png.json");
   EXPECT_EQ(sidecar["tf"]["labels"][0]["mode"], "hidden");
   const auto again =

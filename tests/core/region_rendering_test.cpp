@@ -8,23 +8,15 @@
 #include "phantom/phantom.h"
 #include "core/reference_raycaster.h"
 #include "core/view_geometry.h"
+#include "tests/support/constant_opacity.h"
 #include "tests/support/varying_regions.h"
 
 namespace angio {
 namespace {
 
-TfTable constantTable(double opacity, glm::vec3 color) {
-  TransferFunction tf;
-  tf.points = {{-1024, color, 0}, {-901, color, 0}, {-900, color, opacity}, {3071, color, opacity}};
-  return buildTable(tf);
-}
+using test_support::constantTable;
 
-RenderParams plain() {
-  RenderParams p;
-  p.sampling = {1.0, 1.0, Filter::nearest, 1.0};
-  p.shading.enabled = false;
-  return p;
-}
+RenderParams plain() { return test_support::plainParams(); }
 
 // Every ray gets the same intervals.
 RayRegions sameForEveryRay(const ViewGeometry& view, std::vector<RegionInterval> intervals) {
@@ -84,15 +76,7 @@ TEST(RegionRendering, EachRegionUsesItsOwnTf) {
 
 TEST(RegionRendering, FastMatchesReferenceWithRegions) {
   const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
-  TransferFunction vessels;
-  vessels.points = {{-1024, {0, 0, 0}, 0},
-                    {150, {1, 0.2f, 0.1f}, 0},
-                    {300, {1, 0.4f, 0.3f}, 0.6},
-                    {3071, {1, 1, 1}, 0.8}};
-  TransferFunction context = vessels;
-  context.points[2].opacity = 0.05;
-  context.points[3].opacity = 0.1;
-  const TfTable focusTable = buildTable(vessels), contextTable = buildTable(context);
+  const auto [focusTable, contextTable] = test_support::vesselRegionTables();
   // The outside clipped; or the context clipped between a rendered focus and outside, so the
   // fast raycaster's leaps over clipped stretches start and end inside rays.
   const std::pair<const TfTable*, const TfTable*> contextAndOutside[] = {{&contextTable, nullptr},

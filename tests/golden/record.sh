@@ -57,6 +57,10 @@ case_render hybrid-window "$phantom" --quality medium "${vg[@]}" --hybrid-cpr --
 for angle in 0 90 180 270; do
   case_render "series-$angle" "$phantom" --quality fast --angle "$angle"
 done
+case_render clip-crop-trilinear "$phantom" --quality medium --filter trilinear --crop 60,340,80,330,250,950 --angle 30
+case_render clip-plane-mip "$phantom" --quality medium --mip --clip 200,200,600,0.4,-0.8,0.3 --angle 60
+case_render clip-facing-slab-high "$phantom" --quality high --clip-facing -30 --slab 10,120 --angle 15
+case_render clip-vg-crop "$phantom" --quality medium "${vg[@]}" --crop 100,300,0,405,300,1000 --angle 30
 case_render aorta-dvr "$aorta" --tf "$aorta_tf" --quality medium --axis j --angle 30
 case_render aorta-high "$aorta" --tf "$aorta_tf" --quality high --axis j --angle 200
 case_render aorta-vg-hybrid "$aorta" --tf "$aorta_tf" --quality medium --axis j --angle 30 \

@@ -22,7 +22,7 @@ using Json = nlohmann::json;
 using angio::test_support::runAngioray;
 
 // Tall enough for the side panel down to the Session section without scrolling.
-const std::string kWindow = " --size 1000x1600 --timeout 120";
+const std::string kWindow = " --size 1000x1800 --timeout 120";
 
 using angio::test_support::across;
 using angio::test_support::leftEnd;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "io/input_error.h"
+#include "tests/support/replaced_once.h"
 #include "tests/support/temp_folder_test.h"
 
 namespace angio {
@@ -166,10 +167,7 @@ TEST_F(RenderSidecarFiles, SidecarPathIsTheImagePlusJson) {
 TEST_F(RenderSidecarFiles, BrokenSidecarsGiveOneLineNamingTheFileAndKey) {
   const std::string good = renderSidecarJson(everything());
   auto replaced = [&](const std::string& from, const std::string& to) {
-    std::string text = good;
-    const std::size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return text.replace(at, from.size(), to);
+    return test_support::replacedOnce(good, from, to);
   };
   struct Case {
     std::string name, text, mention;

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/region_intervals.h"
+#include "core/transfer_function.h"
 #include "core/view_geometry.h"
 
 namespace angio::test_support {
@@ -23,6 +24,23 @@ inline RayRegions varyingRegions(const ViewGeometry& view, float minHalf, int sp
     }
   regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
   return regions;
+}
+
+// TFs for those regions on the phantom: the focus shows vessels and bone, the context the same
+// densities faintly.
+struct RegionTfTables {
+  TfTable focus, context;
+};
+inline RegionTfTables vesselRegionTables() {
+  TransferFunction vessels;
+  vessels.points = {{-1024, {0, 0, 0}, 0},
+                    {150, {1, 0.2f, 0.1f}, 0},
+                    {300, {1, 0.4f, 0.3f}, 0.6},
+                    {3071, {1, 1, 1}, 0.8}};
+  TransferFunction context = vessels;
+  context.points[2].opacity = 0.05;
+  context.points[3].opacity = 0.1;
+  return {buildTable(vessels), buildTable(context)};
 }
 
 }  // namespace angio::test_support

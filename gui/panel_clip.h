@@ -1,0 +1,19 @@
+#pragma once
+// The Crop & clip section (rendering model, "Crop, clip, slab"): a crop box along the voxel axes
+// (six sliders, mm of the volume frame), one clip plane (facing the viewer, or along a voxel axis,
+// at an offset from the volume centre) and a thick slab facing the viewer (offset, thickness),
+// each switched on and off; Reset switches everything off. Returns the edit when a widget changed
+// the settings.
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "gui/panel_widgets.h"
+#include "gui/workstation.h"
+
+namespace angio {
+
+// `extentMm`: the shown volume's domain extent (the sliders' ranges).
+std::optional<ClipEdit> drawClipPanel(const ClipState& clip, glm::dvec3 extentMm, WidgetRects& rects);
+
+}  // namespace angio

@@ -1,0 +1,94 @@
+// The Crop & clip section in the headless app: opened (it starts closed), its "thick slab"
+// checkbox turns the slab on, which changes the shown image and leaves the rays outside it
+// black; an export of that view writes a sidecar with the slab, from which `angioray render
+// --params` (another process) renders the same pixels.
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/phantom_folder_test.h"
+#include "tests/support/png_pixels.h"
+#include "tests/support/widget_points.h"
+
+namespace angio {
+namespace {
+
+using Json = nlohmann::json;
+using test_support::runAngioray;
+
+const std::string kWindow = " --size 1000x1600 --timeout 120";
+
+class GuiClip : public test_support::PhantomFolderTest {
+ protected:
+  const char* folderPrefix() const override { return "gui-clip"; }
+  test_support::ProgramRun run(const std::string& steps) {
+    std::ofstream(dir / "script.json") << steps;
+    return runAngioray("gui " + file("phantom.nrrd") + " --headless" + kWindow + " --script " +
+                       file("script.json"));
+  }
+  // Waits for the high level and writes the state to NAME.json and a screenshot to NAME.png.
+  std::string record(const std::string& name) const {
+    return R"({"wait_level": "high"}, {"state": ")" + file(name + ".json") + R"("}, {"screenshot": ")" +
+           file(name + ".png") + "\"}";
+  }
+};
+
+TEST_F(GuiClip, TheSlabCheckboxChangesTheImageAndAnExportKeepsTheSlab) {
+  auto closed = run("[" + record("closed") + "]");
+  ASSERT_EQ(closed.exitCode, 0) << closed.output;
+  const Json header = readJson("closed.json")["runtime"]["layout"]["section_Crop & clip"];
+  ASSERT_FALSE(header.is_null());
+  const std::string open = R"({"click": )" + test_support::middleOf(header) + R"(}, {"wait_ms": 100})";
+  auto opened = run("[" + open + ", " + record("open") + "]");
+  ASSERT_EQ(opened.exitCode, 0) << opened.output;
+  const Json layout = readJson("open.json")["runtime"]["layout"];
+  ASSERT_FALSE(layout["clip_slab"].is_null()) << layout;
+  const Json plain = readJson("open.json");
+  EXPECT_FALSE(plain["state"]["clip"]["slab_on"].get<bool>());
+
+  // The slab's sliders push the Export section down: its widgets are where they are with it on.
+  const std::string slabOn = R"({"click": )" + test_support::leftEnd(layout["clip_slab"]) + "}";
+  auto slab = run("[" + open + ", " + slabOn + ", " + record("slab") + "]");
+  ASSERT_EQ(slab.exitCode, 0) << slab.output;
+  const Json state = readJson("slab.json");
+  EXPECT_TRUE(state["state"]["clip"]["slab_on"].get<bool>()) << state["state"]["clip"];
+  EXPECT_NE(state["runtime"]["shown"]["checksum"], plain["runtime"]["shown"]["checksum"]);
+  const Json& slabLayout = state["runtime"]["layout"];
+  const std::string exportView = R"({"click": )" + test_support::middleOf(slabLayout["export_path"]) +
+                                 R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("view.png") +
+                                 R"("}, {"key": "Enter"}, {"click": )" +
+                                 test_support::middleOf(slabLayout["export_button"]) + "}";
+  auto exported = run("[" + open + ", " + slabOn + R"(, {"wait_level": "high"}, )" + exportView +
+                      R"(, {"wait_level": "high"}])");
+  ASSERT_EQ(exported.exitCode, 0) << exported.output;
+
+  // The default slab is 20 mm thick: far less of the phantom shows than without it.
+  ASSERT_TRUE(std::filesystem::exists(file("view.png"))) << exported.output;
+  const Json sidecar = readJson("view.png.json");
+  EXPECT_EQ(sidecar["clipping"]["slab"]["thickness_mm"], 20.0) << sidecar["clipping"];
+  EXPECT_TRUE(sidecar["clipping"]["crop"].is_null());
+  auto again = runAngioray("render --params " + file("view.png.json") + " --out " + file("again.png"));
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_EQ(test_support::pixelsOf(file("again.png")).values,
+            test_support::pixelsOf(file("view.png")).values);
+  // The same sidecar without the slab.
+  Json withoutSlab = sidecar;
+  withoutSlab["clipping"]["slab"] = nullptr;
+  std::ofstream(file("unclipped.json")) << withoutSlab.dump();
+  auto unclipped =
+      runAngioray("render --params " + file("unclipped.json") + " --out " + file("unclipped.png"));
+  ASSERT_EQ(unclipped.exitCode, 0) << unclipped.output;
+  const auto lit = [](const test_support::Pixels& image) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) count += image.at(x, y)[0] > 0;
+    return count;
+  };
+  EXPECT_LT(lit(test_support::pixelsOf(file("view.png"))),
+            lit(test_support::pixelsOf(file("unclipped.png"))) * 3 / 4);
+}
+
+}  // namespace
+}  // namespace angio
