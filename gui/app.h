@@ -104,7 +104,8 @@ class App {
 
   // Loads in the background and replaces the dataset on success (drag-and-drop, the file
   // browser, recent files, scripts).
-  void openDataset(const std::string& path);
+  // `ofSession`: the dataset a session named, whose state is already the document's.
+  void openDataset(const std::string& path, bool ofSession = false);
   Document session() const;  // what the window saves as the last session when it quits
   // Where a physical point (LPS mm) is on the shown image, in window pixels (none: no image yet);
   // scripts click there.
@@ -164,6 +165,7 @@ class App {
   void pollBackgroundJobs();  // data load, centerline load, series export
   bool backgroundBusy() const;
   void replaceDataset(LoadedDataset dataset);
+  std::string resetTfForNewDataset();  // what it did, for the status line ("" = nothing)
   // Sessions (gui/app_session.cpp).
   void startSession();  // panel states to apply, recent files, the last session offered
   void applySession(const Document& session);
@@ -278,6 +280,8 @@ class App {
   FileBrowser browser_;
   BackgroundJob<LoadedDataset> load_;
   std::string loadPath_, loadError_;
+  bool loadOfSession_ = false;              // the running load is a session's dataset (DatasetOpened)
+  std::string startPreset_;                 // the main TF a new dataset falls back to from an edited one
   std::optional<Document> offeredSession_;  // "Restore last session" banner
   SessionPanelUi sessionPanel_;
   std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame

@@ -6,10 +6,11 @@
 #include <exception>
 #include <filesystem>
 
-#include "io/input_error.h"
 #include "gui/app.h"
 #include "gui/panel_data.h"
 #include "gui/viewport.h"
+#include "io/input_error.h"
+#include "io/tf_file.h"
 #include "io/volume_reader.h"
 
 namespace angio {
@@ -29,15 +30,22 @@ LoadedDataset loadInBackground(const std::string& path, JobControl& control) {
   return LoadedDataset{std::move(loaded.volume), path, std::move(loaded.description)};
 }
 
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
 }  // namespace
 
-void App::openDataset(const std::string& path) {
+void App::openDataset(const std::string& path, bool ofSession) {
   if (path.empty()) return;
   if (load_.running()) {
     message_ = "still loading " + loadPath_ + "; cancel it first";
     return;
   }
   loadPath_ = absoluteDataset(path);  // a missing one stays as given: the load names it
+  loadOfSession_ = ofSession;
   loadError_.clear();
   load_.start([path = loadPath_](JobControl& control) { return loadInBackground(path, control); });
   message_ = "loading " + loadPath_;
@@ -53,13 +61,15 @@ void App::pollBackgroundJobs() {
   if (load_.ready()) {
     try {
       const double seconds = load_.seconds();
-      const std::size_t paths = vessels_.pending ? 0 : doc().vessels.paths.size();
+      const std::vector<std::string> dropped =
+          loadOfSession_ ? std::vector<std::string>{} : droppedByNewDataset(doc());
       replaceDataset(load_.take());
       char took[32];
       std::snprintf(took, sizeof took, " (%.2f s)", seconds);
       message_ = "opened " + loadPath_ + took;
-      if (paths > 0)
-        message_ += "; its " + std::to_string(paths) + " vessel paths went with the old dataset";
+      if (!dropped.empty()) message_ += "; dropped with the old dataset: " + joined(dropped);
+      if (const std::string tf = loadOfSession_ ? "" : resetTfForNewDataset(); !tf.empty())
+        message_ += "; " + tf;
     } catch (const LoadCancelled&) {
       message_ = "loading " + loadPath_ + " cancelled";
     } catch (const std::exception& error) {
@@ -97,7 +107,14 @@ void App::replaceDataset(LoadedDataset dataset) {
   requestTimes_.clear();
   latency_.restart();
   data_ = std::move(dataset);
-  commit(DatasetOpened{data_.name});
+  commit(DatasetOpened{data_.name, loadOfSession_});
+  if (!loadOfSession_) {
+    vessel_.ui.path.clear();  // the VesselGlyph section's centerline field named the old file
+    dropCenterlines();
+  }
+  const TfEditorView unzoomed;  // the editor's HU zoom was for the old data
+  tfPanel_.editor.huMin = unzoomed.huMin;
+  tfPanel_.editor.huMax = unzoomed.huMax;
   histogram_.clear();
   huRange_.reset();
   scene_.reset();  // of the old volume
@@ -105,6 +122,18 @@ void App::replaceDataset(LoadedDataset dataset) {
   resetLabels();
   resetVessels();
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
+}
+
+// An edited main TF was fitted to the old data: the start preset replaces it, one undo step away.
+std::string App::resetTfForNewDataset() {
+  if (!doc().tfPreset.empty() || startPreset_.empty()) return "";
+  if (tfTargets_.editing() != TfTarget::main) switchTfTarget(TfTarget::main);
+  try {
+    applyTf(loadPresetOrFile(startPreset_), startPreset_);
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  return "the edited TF gave way to " + startPreset_ + " (Undo brings it back)";
 }
 
 void App::drawDataSection() {

@@ -52,7 +52,7 @@ void App::applySession(const Document& session) {
   }
   if (isPhantomName(session.dataset))
     message_ = "the session's dataset is a " + session.dataset + "; kept " + data_.name;
-  else openDataset(session.dataset);
+  else openDataset(session.dataset, true);
 }
 
 bool App::sectionHeader(const char* title, bool openByDefault) {

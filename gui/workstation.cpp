@@ -45,6 +45,7 @@ void change(Document& d, const CenterlineFileEdit& edit) {
   d.vesselGlyph.centerlines = edit.given;
   d.vesselGlyph.centerlinesAbsolute = edit.absolute;
 }
+// A session's labels and paths come back from App once its dataset is there.
 void change(Document& d, const DatasetOpened& edit) {
   d.dataset = edit.dataset;
   d.labels.file.clear();    // the labels of the old dataset do not fit the new one
@@ -53,8 +54,14 @@ void change(Document& d, const DatasetOpened& edit) {
   d.vessels.unsaved = false;
   d.view.zoom = 1;
   d.view.panPx = glm::dvec2(0.0);
-  d.clip = {};
   addRecentFile(d.recentFiles, edit.dataset);
+  if (edit.ofSession) return;
+  d.vesselGlyph.centerlines.clear();
+  d.vesselGlyph.centerlinesAbsolute.clear();
+  d.vesselGlyph.enabled = false;  // nothing to show it on until paths are traced or loaded
+  d.cpr.shown = false;
+  d.cpr.hybrid = false;
+  d.clip = {};  // the crop box was in the old dataset's millimetres
 }
 void change(Document& d, const RecentFilesEdit& edit) { d.recentFiles = edit.recentFiles; }
 void change(Document& d, const LabelStylesEdit& edit) {
@@ -94,6 +101,21 @@ void normalise(Document& next, const Document& before, bool brought) {
 }
 
 }  // namespace
+
+std::vector<std::string> droppedByNewDataset(const Document& before) {
+  std::vector<std::string> dropped;
+  if (const std::size_t paths = before.vessels.paths.size(); paths > 0)
+    dropped.push_back(std::to_string(paths) + (paths == 1 ? " vessel path" : " vessel paths"));
+  const VesselGlyphState& vg = before.vesselGlyph;
+  if (!vg.centerlines.empty() || !vg.centerlinesAbsolute.empty())
+    dropped.push_back("the centerline file");
+  if (vg.enabled) dropped.push_back("VesselGlyph");
+  if (before.cpr.shown || before.cpr.hybrid) dropped.push_back("the CPR view");
+  if (!before.labels.file.empty()) dropped.push_back("the labels");
+  const ClipState& clip = before.clip;
+  if (clip.cropOn || clip.planeOn || clip.slabOn) dropped.push_back("the crop & clip");
+  return dropped;
+}
 
 Workstation::Workstation(Document initial) : document_(std::move(initial)) {
   normalise(document_, document_, true);

@@ -50,9 +50,12 @@ struct CenterlineFileEdit {
   friend bool operator==(const CenterlineFileEdit&, const CenterlineFileEdit&) = default;
 };
 // A dataset replaced the shown one: it is the document's, zoom and pan start over, it heads the
-// recent files.
+// recent files. What belonged to the old dataset goes (labels, vessel paths, the centerline file,
+// VesselGlyph and the CPR view that showed them, clipping in its millimetres) unless the dataset
+// is the one a session named: the session's own state, applied before its load, stays.
 struct DatasetOpened {
   std::string dataset;
+  bool ofSession = false;
   friend bool operator==(const DatasetOpened&, const DatasetOpened&) = default;
 };
 struct RecentFilesEdit {
@@ -104,6 +107,10 @@ using Edit =
                  CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit, LabelFileEdit,
                  VesselPathsEdit, VesselFileEdit, PanelOpenEdit, SessionEdit, ClipEdit>;
 
+// What a DatasetOpened (not of a session) drops from `before`, for the status line: "3 vessel
+// paths", "the centerline file", "VesselGlyph", "the CPR view", "the labels", "the crop & clip".
+std::vector<std::string> droppedByNewDataset(const Document& before);
+
 class Workstation {
  public:
   // `initial` is normalised as a session's contents are.
@@ -117,9 +124,9 @@ class Workstation {
   // DVR+CPR hybrid on turns VesselGlyph on (its focus is the hybrid's cut). VesselGlyph may be
   // turned off again while the hybrid is on: the CPR section then says the hybrid waits for it.
   // A main TF without labels (a preset) keeps the labels' styles: changing the TF does not bring
-  // back removed bone. A new dataset starts without labels and without vessel paths (they were traced in the old one).
-  // Every edit that sets the vessel paths bumps their revision. A new dataset starts without
-  // clipping (the crop box was in the old one's millimetres).
+  // back removed bone. A new dataset starts without labels and without vessel paths (they were
+  // traced in the old one), see DatasetOpened. Every edit that sets the vessel paths bumps their
+  // revision.
   void apply(const Edit& edit);
 
  private:

@@ -220,6 +220,44 @@ TEST_F(GuiHybrid, CheckboxShowsTheCprInTheFootprintAndTheExportIsWhatRenderParam
   EXPECT_EQ(c.changedOutside, 0);
 }
 
+TEST_F(GuiHybrid, AnotherDatasetDropsTheCenterlinesVesselGlyphCprAndTheEditedTfAndSaysSo) {
+  const auto other = runAngioray("phantom " + file("other.nrrd") + " --size 64x64x128");
+  ASSERT_EQ(other.exitCode, 0) << other.output;
+  const Json layout = startLayout();
+  const std::string steps = R"([
+    {"click": )" + at(layout["vg_enable"]) +
+                            R"(}, {"click": )" + at(layout["cpr_hybrid"]) + R"(}, {"click": )" +
+                            at(layout["cpr_shown"]) + R"(}, {"double_click": )" +
+                            middle(layout["tf_plot"]) +
+                            R"(}, {"move": [5, 5]}, {"wait_level": "high"},
+    {"state": ")" + file("before.json") +
+                            R"("}, {"open": ")" + file("other.nrrd") +
+                            R"("}, {"wait_level": "high"}, {"state": ")" + file("after.json") + R"("}])";
+  const auto run = runScript(steps);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json before = readJson("before.json"), after = readJson("after.json");
+  ASSERT_TRUE(before["runtime"]["vessel_glyph"]["hybrid"]["rendering"].get<bool>()) << before["runtime"];
+  ASSERT_TRUE(before["state"]["cpr"]["shown"].get<bool>());
+  ASSERT_EQ(before["state"]["tf_preset"], "") << "the double click should have edited the TF";
+
+  const Json& state = after["state"];
+  EXPECT_EQ(state["dataset"], file("other.nrrd"));
+  EXPECT_FALSE(state["vessel_glyph"]["enabled"].get<bool>());
+  EXPECT_EQ(state["vessel_glyph"]["centerlines"], "");
+  EXPECT_FALSE(state["cpr"]["shown"].get<bool>());
+  EXPECT_FALSE(state["cpr"]["hybrid"].get<bool>());
+  EXPECT_EQ(state["tf_preset"], readJson("start.json")["state"]["tf_preset"]);
+  EXPECT_TRUE(after["runtime"]["tf_undo_available"].get<bool>());  // the edited TF one undo away
+  const Json& shown = after["runtime"]["shown"];
+  EXPECT_EQ(shown["level"], "high");
+  EXPECT_GT(shown["samples"].get<long>(), 0);  // the new volume rendered, not a blank view
+  EXPECT_EQ(after["runtime"]["vessel_glyph"]["paths"], 0);
+  const std::string message = after["runtime"]["message"];
+  for (const char* said : {"dropped with the old dataset", "4 vessel paths", "the centerline file",
+                           "VesselGlyph", "the CPR view", "the edited TF gave way"})
+    EXPECT_NE(message.find(said), std::string::npos) << said << " not in: " << message;
+}
+
 TEST_F(GuiHybrid, SessionCarriesPathBandAndColoringInAndOut) {
   // A session the app saved itself, with the hybrid's settings edited in.
   const Json start = startLayout();

@@ -117,6 +117,51 @@ TEST(GuiWorkstation, AnOpenedDatasetStartsZoomAndPanOverAndHeadsTheRecentFiles) 
   EXPECT_EQ(document.recentFiles, (std::vector<std::string>{"/data/b.mha", "/data/a.mha"}));
 }
 
+// The old dataset's vessel state, as a user leaves it: centerlines loaded, VesselGlyph, the CPR
+// view with the hybrid, a crop box.
+Document withVesselState() {
+  Document d;
+  d.dataset = "/data/a.mha";
+  d.vesselGlyph.centerlines = "a.csv";
+  d.vesselGlyph.centerlinesAbsolute = "/data/a.csv";
+  d.vesselGlyph.enabled = true;
+  d.cpr.shown = d.cpr.hybrid = true;
+  d.vessels.paths = {VesselPath{}};
+  d.labels.file = "/data/a-labels.nrrd";
+  d.clip.cropOn = true;
+  return d;
+}
+
+TEST(GuiWorkstation, ANewDatasetDropsWhatBelongedToTheOldOneAndListsIt) {
+  const Document before = withVesselState();
+  EXPECT_EQ(droppedByNewDataset(before),
+            (std::vector<std::string>{"1 vessel path", "the centerline file", "VesselGlyph",
+                                      "the CPR view", "the labels", "the crop & clip"}));
+  Workstation workstation(before);
+  workstation.apply(DatasetOpened{"/data/b.mha"});
+  const Document& after = workstation.document();
+  EXPECT_TRUE(after.vesselGlyph.centerlines.empty());
+  EXPECT_TRUE(after.vesselGlyph.centerlinesAbsolute.empty());
+  EXPECT_FALSE(after.vesselGlyph.enabled);
+  EXPECT_FALSE(after.cpr.shown);
+  EXPECT_FALSE(after.cpr.hybrid);
+  EXPECT_TRUE(after.vessels.paths.empty());
+  EXPECT_TRUE(after.labels.file.empty());
+  EXPECT_EQ(after.clip, ClipState{});
+  EXPECT_TRUE(droppedByNewDataset(after).empty());
+}
+
+TEST(GuiWorkstation, ASessionsDatasetKeepsTheSessionsVesselGlyphCprAndClipping) {
+  Workstation workstation(withVesselState());
+  workstation.apply(DatasetOpened{"/data/a.mha", true});
+  const Document& after = workstation.document();
+  EXPECT_EQ(after.vesselGlyph.centerlines, "a.csv");
+  EXPECT_TRUE(after.vesselGlyph.enabled);
+  EXPECT_TRUE(after.cpr.shown && after.cpr.hybrid);
+  EXPECT_TRUE(after.clip.cropOn);
+  EXPECT_TRUE(after.vessels.paths.empty());  // App brings the session's paths back once it loaded
+}
+
 TEST(GuiWorkstation, ATfChangeGoesToItsTargetWithItsPreset) {
   Workstation workstation;
   workstation.apply(TfChange{TfTarget::focus, twoPointTf(200), ""});
