@@ -1,6 +1,7 @@
 // `angioray gui`: load the dataset (or generate the phantom), then open the workstation window or
 // run its headless twin.
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -60,6 +61,8 @@ AppStart initialState(const GuiOptions& options, const LoadedDataset& dataset,
   document.view.axis = *axis;
   document.view.angleDeg = options.angleDeg;
   document.tf = loadPresetOrFile(options.tf);
+  std::error_code error;
+  if (std::filesystem::is_regular_file(options.tf, error)) document.tfPreset = options.tf;  // a file
   for (const Preset& preset : listPresets())
     if (preset.id == options.tf) document.tfPreset = preset.id;
   if (options.mip) document.mode = Compositing::mip;

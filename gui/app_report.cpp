@@ -80,6 +80,7 @@ nlohmann::json App::report() const {
           {"top", std::string(1, letters.top)},
           {"bottom", std::string(1, letters.bottom)}}},
         {"tf_undo_available", tfTargets_.history().canUndo()},
+        {"tf_editor_hu", {tfPanel_.editor.huMin, tfPanel_.editor.huMax}},
         {"message", message_},
         {"data", dataReport()},
         {"vessel_glyph", vesselReport()},

@@ -40,6 +40,14 @@ struct StepParser {
   int button(const Json& object) const {
     return object.contains("button") ? int(number(object["button"], "button", 0, 2)) : 0;
   }
+  // "hold": "Ctrl", "Shift" or "Ctrl+Shift", the modifiers held during a wheel or a drag.
+  void hold(const Json& object, ScriptStep& step) const {
+    if (!object.contains("hold")) return;
+    const std::string keys = string(object["hold"], "hold");
+    step.ctrl = keys == "Ctrl" || keys == "Ctrl+Shift";
+    step.shift = keys == "Shift" || keys == "Ctrl+Shift";
+    if (!step.ctrl && !step.shift) fail("hold must be Ctrl, Shift or Ctrl+Shift");
+  }
 
   ScriptStep parse(const Json& object) const {
     if (!object.is_object() || object.empty()) fail("not an object with one action");
@@ -69,6 +77,7 @@ struct StepParser {
       step.to = point(drag["to"], "drag to");
       step.button = button(drag);
       if (drag.contains("steps")) step.steps = int(number(drag["steps"], "drag steps", 1, 1000));
+      hold(drag, step);
     } else if (object.contains("press")) {
       step.kind = ScriptStep::Kind::press;
       step.at = point(object["press"], "press");
@@ -83,6 +92,7 @@ struct StepParser {
       step.kind = ScriptStep::Kind::wheel;
       step.at = point(wheel["at"], "wheel at");
       step.value = wheel.contains("delta") ? number(wheel["delta"], "wheel delta", -100, 100) : 1;
+      hold(wheel, step);
     } else if (object.contains("key")) {
       step.kind = ScriptStep::Kind::key;
       step.text = string(object["key"], "key");

@@ -51,8 +51,9 @@ struct ScriptStep {
   glm::vec2 to{0.f};        // drag end
   glm::dvec3 pointMm{0.0};  // click_mm
   int button = 0;
-  int steps = 10;    // drag: mouse moves between press and release
-  double value = 0;  // wait_ms, wheel delta
+  bool ctrl = false, shift = false;  // wheel, drag: held during the step ("hold": "Ctrl+Shift")
+  int steps = 10;                    // drag: mouse moves between press and release
+  double value = 0;                  // wait_ms, wheel delta
   Quality level = Quality::high;
   std::string text;  // key name, typed text, output file
 };

@@ -114,7 +114,7 @@ struct Document {
   std::string dataset;  // file or folder; "phantom IxJxK" for the generated phantom
   ViewState view;
   TransferFunction tf;   // includes the MIP window/level
-  std::string tfPreset;  // empty if edited or loaded from a file
+  std::string tfPreset;  // the preset's id or the file it was loaded from; empty once edited
   Compositing mode = Compositing::dvr;
   Shading shading;
   LevelSamplings levels = defaultLevelSamplings();

@@ -131,9 +131,11 @@ class HeadlessSession {
         break;
       case Kind::wheel:
         input_.mouse = toImVec(step.at);
+        input_.ctrl = step.ctrl, input_.shift = step.shift;
         frame();
         input_.wheel = float(step.value);
         frame();
+        input_.ctrl = input_.shift = false;
         break;
       case Kind::key: pressKey(step.text); break;
       case Kind::text:
@@ -168,6 +170,7 @@ class HeadlessSession {
 
   void drag(const ScriptStep& step) {
     input_.mouse = toImVec(step.at);
+    input_.ctrl = step.ctrl, input_.shift = step.shift;
     frame();
     input_.buttons[step.button] = true;
     frame();
@@ -178,6 +181,7 @@ class HeadlessSession {
     }
     input_.buttons[step.button] = false;
     frame();
+    input_.ctrl = input_.shift = false;
   }
 
   void pressKey(const std::string& combination) {

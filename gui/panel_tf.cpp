@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -23,9 +24,18 @@ void drawTargets(const TfPanelInfo& info, TfPanelRequests& requests, WidgetRects
   }
 }
 
+// A preset by its id, a file by its name, an edited TF by its name and "(edited)".
+std::string presetLabel(const std::string& preset, const TransferFunction& tf,
+                        const std::vector<Preset>& presets) {
+  if (preset.empty()) return tf.name + " (edited)";
+  for (const Preset& candidate : presets)
+    if (candidate.id == preset) return preset;
+  return std::filesystem::path(preset).filename().string() + " (file)";
+}
+
 void drawPresets(const Document& document, const TfPanelInfo& info, TfPanelRequests& requests) {
   const std::string& preset = presetOf(document, info.editing);
-  const std::string current = preset.empty() ? tfOf(document, info.editing).name + " (edited)" : preset;
+  const std::string current = presetLabel(preset, tfOf(document, info.editing), *info.presets);
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("preset", current.c_str())) {
     for (const Preset& candidate : *info.presets) {
@@ -56,7 +66,7 @@ void drawFile(TfPanelUi& ui, TfTarget editing, TfPanelRequests& requests, Widget
   ImGui::SameLine();
   if (ImGui::Button("load")) {
     try {
-      requests.replace = TfChange{editing, loadTransferFunction(ui.path), ""};
+      requests.replace = TfChange{editing, loadTransferFunction(ui.path), ui.path};
       requests.message = "loaded " + ui.path;
     } catch (const std::exception& error) {
       requests.message = error.what();

@@ -108,15 +108,12 @@ void drawColorBar(ImDrawList* draw, const PlotFrame& plot, const TransferFunctio
 }
 
 void drawTicks(ImDrawList* draw, const PlotFrame& plot, float top) {
-  const double step = niceStep(plot.huMax - plot.huMin, 6);
-  for (double hu = std::ceil(plot.huMin / step) * step; hu <= plot.huMax; hu += step) {
-    const float x = plot.xOfHu(hu);
+  for (const HuTick& tick : huTicks(plot.huMin, plot.huMax)) {
+    const float x = plot.xOfHu(tick.hu);
     draw->AddLine(ImVec2(x, top), ImVec2(x, top + 4), IM_COL32(200, 200, 200, 255));
-    char label[16];
-    std::snprintf(label, sizeof label, "%.0f", hu);
-    const float w = ImGui::CalcTextSize(label).x;
+    const float w = ImGui::CalcTextSize(tick.label.c_str()).x;
     draw->AddText(ImVec2(std::clamp(x - w / 2, plot.min.x, plot.max.x - w), top + 3),
-                  IM_COL32(200, 200, 200, 255), label);
+                  IM_COL32(200, 200, 200, 255), tick.label.c_str());
   }
 }
 
@@ -141,6 +138,8 @@ void interactWithPlot(const PlotFrame& plot, TransferFunction& tf, TfEditorView&
   } else if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     view.selected = under;
     view.dragging = under;
+    if (under >= 0)
+      view.drag = {{io.MousePos.x, io.MousePos.y}, tf.points[under].hu, tf.points[under].opacity};
   }
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && under >= 0 && tf.points.size() > 1) {
     tf.points.erase(tf.points.begin() + under);
@@ -149,20 +148,22 @@ void interactWithPlot(const PlotFrame& plot, TransferFunction& tf, TfEditorView&
   }
   if (view.dragging >= 0 && view.dragging < int(tf.points.size()) &&
       ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-    if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0) {
-      // Points keep their order: a point stops at its neighbours' HU.
-      const int n = view.dragging;
-      const double lo = n > 0 ? tf.points[n - 1].hu : kMinHu;
-      const double hi = n + 1 < int(tf.points.size()) ? tf.points[n + 1].hu : kMaxHu;
-      ControlPoint& point = tf.points[n];
-      point.hu = std::clamp(std::round(plot.huOfX(io.MousePos.x) - tf.modulators.huShift), lo, hi);
-      point.opacity = plot.opacityOfY(io.MousePos.y);
-      changed = true;
-    }
+    // Points keep their order: a point stops at its neighbours' HU.
+    const int n = view.dragging;
+    const double lo = n > 0 ? tf.points[n - 1].hu : kMinHu;
+    const double hi = n + 1 < int(tf.points.size()) ? tf.points[n + 1].hu : kMaxHu;
+    const HuOpacity moved = followDrag(view.drag, {io.MousePos.x, io.MousePos.y}, io.KeyShift,
+                                       (plot.huMax - plot.huMin) / plot.width(), 1.0 / plot.height());
+    ControlPoint& point = tf.points[n];
+    const ControlPoint before = point;
+    point.hu = std::clamp(moved.hu, lo, hi);
+    point.opacity = std::clamp(moved.opacity, 0.0, 1.0);
+    changed = changed || point != before;
   } else {
     view.dragging = -1;
   }
-  if (hovered && io.MouseWheel != 0) {
+  // Ctrl: ImGui does not scroll the window on Ctrl+wheel, so the plot stays under the pointer.
+  if (hovered && io.MouseWheel != 0 && io.KeyCtrl) {
     const double hu = plot.huOfX(io.MousePos.x), scale = std::pow(0.8, double(io.MouseWheel));
     view.huMin = std::max(kMinHu, hu - (hu - view.huMin) * scale);
     view.huMax = std::min(kMaxHu, hu + (view.huMax - hu) * scale);
@@ -172,7 +173,9 @@ void interactWithPlot(const PlotFrame& plot, TransferFunction& tf, TfEditorView&
 
 void drawSelectedPointFields(TransferFunction& tf, TfEditorView& view, bool& changed) {
   if (view.selected < 0 || view.selected >= int(tf.points.size())) {
-    ImGui::TextDisabled("Click a point to edit it; double-click adds, right-click deletes.");
+    // Two rows, as the selected point's fields: the controls below do not move on a click.
+    ImGui::TextDisabled("Click a point: edit; double-click: add; right-click: delete.");
+    ImGui::TextDisabled("Shift-drag: along one axis; Ctrl+wheel: zoom the HU axis.");
     return;
   }
   ControlPoint& point = tf.points[view.selected];
@@ -182,11 +185,17 @@ void drawSelectedPointFields(TransferFunction& tf, TfEditorView& view, bool& cha
     point.color = glm::clamp(glm::vec3(rgb[0], rgb[1], rgb[2]), 0.f, 1.f);
     changed = true;
   }
+  // The HU the point is drawn at and colors: its own moved by the HU shift.
   const int n = view.selected;
-  const double lo = n > 0 ? tf.points[n - 1].hu : kMinHu;
-  const double hi = n + 1 < int(tf.points.size()) ? tf.points[n + 1].hu : kMaxHu;
+  const double shift = tf.modulators.huShift;
+  const double lo = (n > 0 ? tf.points[n - 1].hu : kMinHu) + shift;
+  const double hi = (n + 1 < int(tf.points.size()) ? tf.points[n + 1].hu : kMaxHu) + shift;
+  double shown = point.hu + shift;
   ImGui::SetNextItemWidth(120);
-  if (ImGui::DragScalar("HU", ImGuiDataType_Double, &point.hu, 1.0f, &lo, &hi, "%.0f")) changed = true;
+  if (ImGui::DragScalar("HU", ImGuiDataType_Double, &shown, 1.0f, &lo, &hi, "%.0f")) {
+    point.hu = std::clamp(shown, lo, hi) - shift;
+    changed = true;
+  }
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   const double zero = 0, one = 1;
@@ -215,6 +224,36 @@ void drawModulators(TransferFunction& tf, TfEditorView& view, bool& changed) {
 }
 
 }  // namespace
+
+std::vector<HuTick> huTicks(double huMin, double huMax) {
+  std::vector<HuTick> ticks;
+  const double step = niceStep(huMax - huMin, 6);
+  // Whole multiples of the step: no rounding builds up, and 0 is +0 ("-0" from ceil(-0.3) * step).
+  for (long k = long(std::ceil(huMin / step)); double(k) * step <= huMax; ++k) {
+    const double hu = k == 0 ? 0.0 : double(k) * step;
+    char label[16];
+    std::snprintf(label, sizeof label, "%.0f", hu);
+    ticks.push_back({hu, label});
+  }
+  return ticks;
+}
+
+HuOpacity followDrag(TfPointDrag& drag, glm::vec2 pointer, bool oneAxis, double huPerPx,
+                     double opacityPerPx) {
+  const glm::vec2 motion = pointer - drag.pressedAt;
+  drag.huFollows = drag.huFollows || std::abs(motion.x) > kTfDragDeadZonePx;
+  drag.opacityFollows = drag.opacityFollows || std::abs(motion.y) > kTfDragDeadZonePx;
+  bool huMoves = drag.huFollows, opacityMoves = drag.opacityFollows;
+  if (oneAxis) {
+    const bool sideways = std::abs(motion.x) >= std::abs(motion.y);
+    huMoves = huMoves && sideways;
+    opacityMoves = opacityMoves && !sideways;
+  }
+  HuOpacity moved{drag.hu, drag.opacity};
+  if (huMoves) moved.hu = std::round(drag.hu + double(motion.x) * huPerPx);
+  if (opacityMoves) moved.opacity = drag.opacity - double(motion.y) * opacityPerPx;
+  return moved;
+}
 
 std::vector<float> logHistogram(const DensityHistogram& histogram) {
   std::vector<float> result(histogram.size());

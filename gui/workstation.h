@@ -22,7 +22,8 @@ struct RotateEdit {
   double degrees = 0;
   friend bool operator==(const RotateEdit&, const RotateEdit&) = default;
 };
-// A TF of the TF editor's targets (main, focus or context) and its preset ("" = edited).
+// A TF of the TF editor's targets (main, focus or context) and its preset: a preset's id, the file
+// it was loaded from, or "" (edited).
 struct TfChange {
   TfTarget target = TfTarget::main;
   TransferFunction tf;

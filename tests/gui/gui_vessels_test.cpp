@@ -356,7 +356,9 @@ TEST_F(GuiVessels, ANewDatasetDropsThePathsAndSaysSo) {
                            "reopened.json");
   EXPECT_TRUE(after["state"]["vessels"]["paths"].empty());
   EXPECT_EQ(after["runtime"]["vessel_glyph"]["paths"], 0);
-  EXPECT_NE(after["runtime"]["message"].get<std::string>().find("dropped with the old dataset: 1 vessel path"), std::string::npos)
+  EXPECT_NE(
+      after["runtime"]["message"].get<std::string>().find("dropped with the old dataset: 1 vessel path"),
+      std::string::npos)
       << after["runtime"]["message"];
 }
 

@@ -1,6 +1,10 @@
 // The side panel's sections as functions: drawn in an ImGui context with no window or renderer
 // behind it, driven by mouse input over a few frames; what they return is checked, and applied.
+#include <filesystem>
+#include <string>
+
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <imgui.h>
 
@@ -12,8 +16,10 @@
 #include "gui/panel_tf.h"
 #include "gui/panel_vessel_glyph.h"
 #include "gui/panel_view.h"
+#include "gui/tf_editor.h"
 #include "gui/viewport.h"
 #include "gui/workstation.h"
+#include "io/tf_file.h"
 
 namespace angio {
 namespace {
@@ -198,6 +204,85 @@ TEST_F(GuiPanels, TheViewportZoomsWithTheWheelAndTurnsWithALeftDrag) {
   EXPECT_FALSE(turned.zoomedOrPanned);
 }
 
+TEST(GuiTfEditor, ADragMovesAnAxisOnlyOnceThePointerLeftItsDeadZone) {
+  TfPointDrag drag{{100, 100}, 200, 0.5};
+  const double huPerPx = 10, opacityPerPx = 0.01;
+  // Sideways with a pixel of slip: the HU follows, the opacity stays.
+  EXPECT_EQ(followDrag(drag, {140, 101}, false, huPerPx, opacityPerPx), (HuOpacity{600, 0.5}));
+  // Past the dead zone vertically too: from then on both follow, even back inside it.
+  EXPECT_EQ(followDrag(drag, {140, 90}, false, huPerPx, opacityPerPx).opacity, 0.5 + 10 * 0.01);
+  EXPECT_DOUBLE_EQ(followDrag(drag, {140, 99}, false, huPerPx, opacityPerPx).opacity, 0.51);
+  // Within the dead zone on both axes nothing moves.
+  TfPointDrag still{{100, 100}, 200, 0.5};
+  EXPECT_EQ(followDrag(still, {103, 97}, false, huPerPx, opacityPerPx), (HuOpacity{200, 0.5}));
+  // Shift: the dominant axis only.
+  TfPointDrag shifted{{100, 100}, 200, 0.5};
+  EXPECT_EQ(followDrag(shifted, {130, 80}, true, huPerPx, opacityPerPx), (HuOpacity{500, 0.5}));
+  EXPECT_EQ(followDrag(shifted, {110, 60}, true, huPerPx, opacityPerPx), (HuOpacity{200, 0.9}));
+}
+
+TEST(GuiTfEditor, HuTicksAreRoundAndZeroIsNeverNegative) {
+  const std::vector<HuTick> ticks = huTicks(-100, 1000);
+  ASSERT_FALSE(ticks.empty());
+  for (const HuTick& tick : ticks) {
+    EXPECT_NE(tick.label, "-0");
+    EXPECT_GE(tick.hu, -100);
+    EXPECT_LE(tick.hu, 1000);
+  }
+  EXPECT_EQ(ticks.front().label, "0");
+  EXPECT_EQ(huTicks(-1024, 3071).front().label, "-1000");
+  EXPECT_EQ(huTicks(-1024, 3071).size(), 5u);  // every 1000 HU
+}
+
+// The TF editor's plot, drawn alone: a two-point ramp, the plot's default HU range.
+class GuiTfEditorPlot : public GuiPanels {
+ protected:
+  GuiTfEditorPlot() {
+    tf.points = {ControlPoint{0, glm::vec3(1), 0.2}, ControlPoint{1000, glm::vec3(1), 0.6}};
+  }
+  TfEdit draw(ImVec2 mouse = ImVec2(-1, -1), bool down = false) {
+    return frame([&] { return drawTfEditor(tf, {}, view); }, mouse, down);
+  }
+  ImVec2 pointOnScreen(const ControlPoint& point) const {
+    const float width = view.plotMax.x - view.plotMin.x, height = view.plotMax.y - view.plotMin.y;
+    return ImVec2(view.plotMin.x + float((point.hu - view.huMin) / (view.huMax - view.huMin)) * width,
+                  view.plotMax.y - float(point.opacity) * height);
+  }
+  TransferFunction tf;
+  TfEditorView view;
+};
+
+TEST_F(GuiTfEditorPlot, ASidewaysDragWithAPixelOfSlipKeepsTheOpacity) {
+  draw();
+  const ImVec2 at = pointOnScreen(tf.points[1]);
+  draw(at);
+  draw(at, true);
+  TfEdit edit;
+  for (int step = 1; step <= 8; ++step) {
+    edit = draw(ImVec2(at.x + 5.f * step, at.y + (step % 2 ? 1.f : -1.f)), true);
+    if (edit.changed) tf = edit.tf;
+  }
+  const double huPerPx = (view.huMax - view.huMin) / (view.plotMax.x - view.plotMin.x);
+  EXPECT_DOUBLE_EQ(tf.points[1].opacity, 0.6);
+  EXPECT_NEAR(tf.points[1].hu, 1000 + 40 * huPerPx, 0.51);
+}
+
+TEST_F(GuiTfEditorPlot, ThePlainWheelLeavesTheHuRangeAndCtrlWheelZoomsIt) {
+  draw();
+  const ImVec2 middle((view.plotMin.x + view.plotMax.x) / 2, (view.plotMin.y + view.plotMax.y) / 2);
+  draw(middle);
+  const TfEditorView before = view;
+  ImGui::GetIO().MouseWheel = 2;
+  draw(middle);
+  EXPECT_EQ(view.huMin, before.huMin);
+  EXPECT_EQ(view.huMax, before.huMax);
+  ImGui::GetIO().MouseWheel = 2;
+  ImGui::GetIO().KeyCtrl = true;
+  draw(middle);
+  ImGui::GetIO().KeyCtrl = false;
+  EXPECT_LT(view.huMax - view.huMin, 0.7 * (before.huMax - before.huMin));
+}
+
 TEST_F(GuiPanels, TheTfSectionOffersTheRegionTfsOnlyWhenAskedAndSwitchesOnAClick) {
   Document document;
   TfPanelUi ui;
@@ -231,6 +316,27 @@ TEST_F(GuiPanels, TheTfSectionLoadsAMissingFileAsAMessageNotAnEdit) {
   const TfPanelRequests loaded = click(draw, centre(rects["tf_load"]));
   EXPECT_FALSE(loaded.replace);
   EXPECT_NE(loaded.message.find("/nonexistent/tf.json"), std::string::npos) << loaded.message;
+}
+
+TEST_F(GuiPanels, ATfLoadedFromAFileIsNamedByTheFileNotAsEdited) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("angioray-tf-" + std::to_string(::getpid()) + ".json");
+  TransferFunction saved;
+  saved.name = "mine";
+  saved.points = {ControlPoint{100, glm::vec3(1), 0.5}};
+  saveTransferFunction(saved, file.string());
+  Document document;
+  TfPanelUi ui;
+  ui.path = file.string();
+  TfPanelInfo info;
+  WidgetRects rects;
+  const auto draw = [&] { return drawTfPanel(document, ui, info, rects); };
+  frame(draw);
+  const TfPanelRequests loaded = click(draw, centre(rects["tf_load"]));
+  std::filesystem::remove(file);
+  ASSERT_TRUE(loaded.replace) << loaded.message;
+  EXPECT_EQ(loaded.replace->preset, file.string());  // not "" (edited)
+  EXPECT_EQ(loaded.replace->tf.points, saved.points);
 }
 
 TEST_F(GuiPanels, TheSessionSectionAsksToSaveOrLoad) {
