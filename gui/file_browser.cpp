@@ -30,11 +30,6 @@ const char* hintOf(BrowserPurpose purpose) {
   return kHints[int(purpose)];
 }
 
-// The typed path, relative ones in the listed folder.
-fs::path typedFile(const FileBrowser& browser) {
-  const fs::path typed(browser.typedPath);
-  return typed.is_relative() ? browser.folder / typed : typed;
-}
 constexpr int kDicomProbeFiles = 8;            // files looked at per folder
 constexpr std::size_t kDicomProbeLimit = 400;  // folders beyond this many are not probed
 
@@ -61,7 +56,26 @@ fs::path homeFolder() {
   return home && *home ? fs::path(home) : fs::current_path();
 }
 
+fs::path typedFile(const FileBrowser& browser) {
+  return resolveTypedPath(browser.folder, browser.typedPath, homeFolder());
+}
+
 }  // namespace
+
+fs::path resolveTypedPath(const fs::path& folder, const std::string& typed, const fs::path& home) {
+  const char* blanks = " \t\r\n";
+  const std::size_t first = typed.find_first_not_of(blanks);
+  if (first == std::string::npos) return folder;
+  std::string path = typed.substr(first, typed.find_last_not_of(blanks) - first + 1);
+  // A path copied from a file manager or a shell often comes quoted.
+  if (path.size() >= 2 && (path.front() == '"' || path.front() == '\'') && path.back() == path.front())
+    path = path.substr(1, path.size() - 2);
+  fs::path resolved;
+  if (path == "~") resolved = home;
+  else if (path.rfind("~/", 0) == 0) resolved = home / path.substr(2);
+  else resolved = fs::path(path).is_absolute() ? fs::path(path) : folder / path;
+  return resolved.lexically_normal();
+}
 
 bool isVolumeFileName(const fs::path& path) {
   const std::string name = lowered(path.filename().string());
@@ -171,6 +185,8 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
       choose(typed);
     }  // a file, or a DICOM folder; a missing one fails in the loader, named
   }
+  // A relative name is looked up here: shown, since the path field may say something else.
+  ImGui::TextDisabled("folder: %s", browser.folder.string().c_str());
   ImGui::TextDisabled("%s", hintOf(browser.purpose));
 
   const float footer = ImGui::GetFrameHeightWithSpacing() * 2 + 4;

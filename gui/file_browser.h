@@ -32,6 +32,12 @@ bool looksLikeDicomSeries(const std::filesystem::path& folder);
 std::vector<BrowserEntry> listFolder(const std::filesystem::path& folder,
                                      BrowserPurpose purpose = BrowserPurpose::openVolume);
 
+// What a path typed or pasted into the browser names: surrounding blanks and quotes trimmed, "~"
+// and "~/..." in the home folder (`home`), an absolute path as it is, a relative one in `folder`
+// (the listed folder, shown above the list); lexically normal.
+std::filesystem::path resolveTypedPath(const std::filesystem::path& folder, const std::string& typed,
+                                       const std::filesystem::path& home);
+
 struct FileBrowser {
   bool requestOpen = false;  // show() sets it; the modal opens on the next draw
   BrowserPurpose purpose = BrowserPurpose::openVolume;

@@ -149,6 +149,20 @@ TEST_F(GuiData, FileBrowserListsFoldersFirstThenVolumeFilesSortedByName) {
   EXPECT_THROW(angio::listFolder(folder / "missing"), std::runtime_error);
 }
 
+TEST(GuiFileBrowser, ATypedPathReplacesTheFolderUnlessRelativeAndHomeIsExpanded) {
+  const fs::path folder = "/data/a", home = "/home/reader";
+  EXPECT_EQ(angio::resolveTypedPath(folder, "/b/scan.mha", home), fs::path("/b/scan.mha"));
+  // Pasted with blanks or quotes around it: still the absolute path, not folder/" /b/...".
+  EXPECT_EQ(angio::resolveTypedPath(folder, "  /b/scan.mha \n", home), fs::path("/b/scan.mha"));
+  EXPECT_EQ(angio::resolveTypedPath(folder, "'/b/my scan.mha'", home), fs::path("/b/my scan.mha"));
+  EXPECT_EQ(angio::resolveTypedPath(folder, "\"/b/c\"", home), fs::path("/b/c"));
+  EXPECT_EQ(angio::resolveTypedPath(folder, "~/ct/x.nrrd", home), fs::path("/home/reader/ct/x.nrrd"));
+  EXPECT_EQ(angio::resolveTypedPath(folder, "~", home), home);
+  EXPECT_EQ(angio::resolveTypedPath(folder, "scan.mha", home), fs::path("/data/a/scan.mha"));
+  EXPECT_EQ(angio::resolveTypedPath(folder, "../b/./x.mha", home), fs::path("/data/b/x.mha"));
+  EXPECT_EQ(angio::resolveTypedPath(folder, "   ", home), folder);
+}
+
 // The Cancel button's hook: a progress callback that throws LoadCancelled stops readVolume, and
 // the exception arrives as itself (not as a load error).
 TEST_F(GuiData, ProgressCallbackCancelsALoad) {
