@@ -144,6 +144,7 @@ struct GuiOptions {
   std::string session;          // a saved session (gui/session_file.h): its dataset, view, TF, panels
   std::string centerlines;      // loaded into the VesselGlyph panel at start (errors shown there)
   std::string labels;           // a label volume or .seg.nrrd read at start (errors shown there)
+  double motionBudgetMs = 40;   // the first level's render time to aim at while dragging; 0: fixed
 };
 int runGui(const GuiOptions& options);
 // A display is there and GLFW can open windows on it.

@@ -73,6 +73,7 @@ AppStart initialState(const GuiOptions& options, const LoadedDataset& dataset,
   }
   start.centerlinesFile = options.centerlines;
   start.labelsFile = options.labels;
+  start.motionBudgetMs = options.motionBudgetMs;
   return start;
 }
 

@@ -214,6 +214,11 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--centerlines", o.centerlines,
                   "Centerlines (.vtp, .mrk.json, .csv) for the VesselGlyph panel");
+  cmd->add_option("--motion-budget", o.motionBudgetMs,
+                  "ms the first level may take while dragging: the finest image sampling between "
+                  "the medium and fast levels' that fits (0: always the fast level)")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
   cmd->add_option("--labels", o.labels,
                   "Label volume or Slicer .seg.nrrd on VOLUME's grid, read at start");
 }

@@ -25,6 +25,7 @@ App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& 
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
   ImGui::StyleColorsDark();
+  motionBudgetMs_ = start.motionBudgetMs;
   startPreset_ = doc().tfPreset.empty() && !presets_.empty() ? presets_.front().id : doc().tfPreset;
   syncVesselCenterlines();
   startSession();

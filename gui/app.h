@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "render/motion_sampling.h"
 #include "render/progressive_renderer.h"
 #include "core/ray_pick.h"
 #include "core/volume.h"
@@ -55,6 +56,7 @@ struct AppStart {
   Document document;
   std::string centerlinesFile;  // centerlines to load at start (`gui --centerlines`), if any
   std::string labelsFile;       // labels to read at start (`gui --labels`; else the session's)
+  double motionBudgetMs = 40;   // render/motion_sampling.h (0: the fast level as it is)
 };
 
 // UI frame times (ms, as the platform measured them: the window's exclude the buffer swap, the
@@ -280,7 +282,13 @@ class App {
   FileBrowser browser_;
   BackgroundJob<LoadedDataset> load_;
   std::string loadPath_, loadError_;
-  bool loadOfSession_ = false;              // the running load is a session's dataset (DatasetOpened)
+  bool loadOfSession_ = false;
+  // The first level's sampling while dragging (render/motion_sampling.h): the budget, the last
+  // first-level frame shown, the isd chosen by the last interactive request (kept for the
+  // release's request, which then continues above the frame the drag left).
+  double motionBudgetMs_ = 40;
+  std::optional<MeasuredFrame> lastFirstLevel_;
+  std::optional<double> motionIsd_;         // the running load is a session's dataset (DatasetOpened)
   std::string startPreset_;                 // the main TF a new dataset falls back to from an edited one
   std::optional<Document> offeredSession_;  // "Restore last session" banner
   SessionPanelUi sessionPanel_;

@@ -106,6 +106,8 @@ void App::replaceDataset(LoadedDataset dataset) {
   lastRequest_.reset();
   requestTimes_.clear();
   latency_.restart();
+  lastFirstLevel_.reset();  // the new volume's cost is its own
+  motionIsd_.reset();
   data_ = std::move(dataset);
   commit(DatasetOpened{data_.name, loadOfSession_});
   if (!loadOfSession_) {

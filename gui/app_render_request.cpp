@@ -44,6 +44,8 @@ void App::pollRenderer() {
   if (!complete) return;
   shown_ = std::move(incoming_);
   incoming_.reset();
+  if (shown_->level == Quality::fast && shown_->renderMs > 0)
+    lastFirstLevel_ = MeasuredFrame{shown_->renderMs, shown_->params.sampling.isd};
   latency_.shown(*shown_, Clock::now());
   // Input -> first image of the request that input made (whatever its level).
   const auto asked = std::find_if(requestTimes_.begin(), requestTimes_.end(),
@@ -63,6 +65,8 @@ void App::requestRender(bool interactive) {
   request.params = viewParams();
   request.interactive = interactive;
   request.levels = doc().levels;
+  if (interactive) motionIsd_ = motionSampling(request.levels, lastFirstLevel_, motionBudgetMs_).isd;
+  if (motionIsd_) request.levels[int(Quality::fast)].isd = *motionIsd_;
   if (lastRequest_ && *lastRequest_ == request) return;
   lastRequestId_ = renderer_->request(request);
   latency_.requested(lastRequestId_, frameStart_);

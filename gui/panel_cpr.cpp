@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "gui/message_row.h"
+
 namespace angio {
 
 namespace {
@@ -12,7 +14,6 @@ constexpr double kMaxTransitionMm = 10;
 constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
 constexpr const char* kColorings[] = {"CTA lumen", "calcium", "focus TF"};
 constexpr const char* kColoringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
-const ImVec4 kErrorColor(1, 0.45f, 0.35f, 1), kWarningColor(1, 0.8f, 0.4f, 1);
 
 void drawCprView(CprState& cpr, const Centerlines& centerlines, WidgetRects& rects) {
   ImGui::Checkbox("CPR view beside the image", &cpr.shown);
@@ -47,17 +48,21 @@ void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, Widg
     ImGui::SetTooltip(
         "The projected CPR of the path above, colored as above, in the VesselGlyph "
         "focus's footprint of the image (thesis fig. 5.4)");
-  if (!cpr.hybrid) return;
   ImGui::SameLine();
+  ImGui::BeginDisabled(!cpr.hybrid);  // there, greyed, while the hybrid is off: nothing moves
   ImGui::SetNextItemWidth(150);
   const double lo = 0, hi = kMaxTransitionMm;
   ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm");
+  ImGui::EndDisabled();
   noteRect(rects, "cpr_transition");
-  if (ImGui::IsItemHovered())
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Width of the band over which the CPR fades into the DVR (0: hard edge)");
-  if (!vesselGlyphOn)
-    ImGui::TextColored(kWarningColor, "the hybrid needs VesselGlyph on (its focus is the cut)");
-  if (!info.hybridProblem.empty()) ImGui::TextColored(kErrorColor, "%s", info.hybridProblem.c_str());
+  // The section's one message row: the CPR view's error, then the hybrid's.
+  const bool waits = cpr.hybrid && !vesselGlyphOn;
+  drawMessageRow(
+      {{MessageKind::error, info.error},
+       {MessageKind::error, cpr.hybrid ? info.hybridProblem : ""},
+       {MessageKind::warning, waits ? "the hybrid needs VesselGlyph on (its focus is the cut)" : ""}});
 }
 
 }  // namespace
@@ -72,7 +77,6 @@ std::optional<CprEdit> drawCprPanel(const CprState& cpr, const CprPanelInfo& inf
   if (!info.physical) return std::nullopt;
   CprState edited = cpr;
   drawCprView(edited, *info.physical, rects);
-  if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
   drawHybrid(edited, cpr.hybrid, info, rects);
   if (edited == cpr) return std::nullopt;
   return CprEdit{edited};

@@ -5,30 +5,36 @@
 #include <imgui.h>
 
 #include "core/voxel.h"
+#include "gui/message_row.h"
 #include "gui/viewport.h"
 
 namespace angio {
 
 namespace {
 
+// One row whatever happens (the dataset's lines below stay put): the load's bar and Cancel while
+// loading, a failed load's error and Dismiss, else empty.
 void drawLoad(const DataPanelInfo& info, DataPanelRequests& requests, WidgetRects& rects) {
   if (info.loading) {
     char label[64];
     std::snprintf(label, sizeof label, "loading %.0f%% (%.0f s)", 100 * info.loadProgress,
                   info.loadSeconds);
     ImGui::ProgressBar(float(info.loadProgress), ImVec2(260, 0), label);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.loadPath.c_str());
     ImGui::SameLine();
     ImGui::BeginDisabled(info.cancelRequested);
     if (ImGui::Button("Cancel##load")) requests.cancelLoad = true;
     ImGui::EndDisabled();
-    ImGui::TextDisabled("%s", info.loadPath.c_str());
+    return;
   }
-  if (info.loadError.empty()) return;
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.35f, 1));
-  ImGui::TextWrapped("could not open: %s", info.loadError.c_str());
-  ImGui::PopStyleColor();
-  if (ImGui::SmallButton("Dismiss##loaderror")) requests.dismissError = true;
+  if (info.loadError.empty()) {
+    drawBlankWidgetRows(1);
+    return;
+  }
+  if (ImGui::Button("Dismiss##loaderror")) requests.dismissError = true;
   noteRect(rects, "data_dismiss");
+  ImGui::SameLine();
+  drawMessageRow({{MessageKind::error, "could not open: " + info.loadError}});
 }
 
 void drawDataset(const DataPanelInfo& info) {

@@ -6,6 +6,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "gui/message_row.h"
+
 namespace angio {
 
 namespace {
@@ -84,11 +86,13 @@ ExportRequests drawSeriesExport(SeriesPanel& series, const JobInfo& job, WidgetR
     requests.cancel = ImGui::Button("Cancel##series");
     ImGui::EndDisabled();
     noteRect(rects, "series_cancel");
+    drawMessageRow({});  // the last movie's row
     return requests;
   }
   requests.start = ImGui::Button("Export rotation series");
   noteRect(rects, "series_button");
-  if (!series.movieNote.empty()) ImGui::TextDisabled("last movie: %s", series.movieNote.c_str());
+  drawMessageRow(
+      {{MessageKind::note, series.movieNote.empty() ? "" : "last movie: " + series.movieNote}});
   return requests;
 }
 

@@ -2,13 +2,14 @@
 
 #include <imgui.h>
 
+#include "gui/message_row.h"
+
 #include "render/label_styles.h"
 
 namespace angio {
 
 namespace {
 
-const ImVec4 kErrorColor(1, 0.45f, 0.35f, 1);
 constexpr const char* kModeNames[] = {"shown", "hidden", "own TF"};
 
 // The labels worth a row: those with voxels or a style.
@@ -144,7 +145,7 @@ LabelsPanelResult drawLabelsPanel(const Document& document, LabelsPanelUi& ui,
   result.redo = drawStepButton("Redo##labels", "labels_redo", info.canRedo && !info.busy,
                                "redo " + info.redoWhat, rects);
   drawFiles(ui, info, result, rects);
-  if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
+  drawMessageRow({{MessageKind::error, info.error}});
   if (styles != document.tf.labels || showRemoved != document.labels.showRemoved)
     result.edit = LabelStylesEdit{styles, showRemoved};
   return result;

@@ -6,12 +6,13 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "gui/message_row.h"
+
 namespace angio {
 
 namespace {
 
 constexpr const char* kContextNames[] = {"none", "slab", "tube"};
-const ImVec4 kErrorColor(1, 0.45f, 0.35f, 1), kWarningColor(1, 0.8f, 0.4f, 1);
 
 // A slider for a double; true when it changed.
 bool sliderMm(const char* label, double& value, double lo, double hi, const char* format = "%.1f mm") {
@@ -47,12 +48,17 @@ bool drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info, Widge
   const bool load = ImGui::Button("Load centerlines...");
   ImGui::EndDisabled();
   noteRect(rects, "vg_load");
-  if (info.loading) ImGui::TextDisabled("loading %s ...", info.loadingFile.c_str());
-  if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
-  if (info.physical)
-    ImGui::TextDisabled("%zu paths, %zu points: %s", info.physical->paths.size(),
-                        centerlinePointCount(*info.physical), info.file.c_str());
-  if (!info.warnings.empty()) ImGui::TextColored(kWarningColor, "%s", info.warnings.c_str());
+  // Two rows always: what is loaded (or loading), then an error, why VesselGlyph does not render,
+  // or the load's warnings.
+  std::string loaded;
+  if (info.loading) loaded = "loading " + info.loadingFile + " ...";
+  else if (info.physical)
+    loaded = std::to_string(info.physical->paths.size()) + " paths, " +
+             std::to_string(centerlinePointCount(*info.physical)) + " points: " + info.file;
+  drawMessageRow({{MessageKind::note, loaded}});
+  drawMessageRow({{MessageKind::error, info.error},
+                  {MessageKind::error, info.physical ? info.problem : ""},
+                  {MessageKind::warning, info.warnings}});
   return load;
 }
 
@@ -85,6 +91,7 @@ void drawContext(VesselGlyphSettings& s, WidgetRects& rects) {
     if (ImGui::RadioButton(label, int(s.context) == n)) s.context = ContextShape(n);
     noteRect(rects, std::string("vg_context_") + kContextNames[n]);
   }
+  // As many rows for every shape as for the slab's three sliders.
   if (s.context == ContextShape::slab) {
     sliderMm("in front (d1)", s.slab.frontMm, 0, 200);
     sliderMm("behind (d2)", s.slab.backMm, 0, 200);
@@ -92,6 +99,9 @@ void drawContext(VesselGlyphSettings& s, WidgetRects& rects) {
   } else if (s.context == ContextShape::tube) {
     s.contextTube.mode = RadiusMode::constant;
     sliderMm("radius##context", s.contextTube.value, 1, 150);
+    drawBlankWidgetRows(2);
+  } else {
+    drawBlankWidgetRows(3);
   }
 }
 
@@ -129,7 +139,6 @@ VesselGlyphPanelResult drawVesselGlyphPanel(const VesselGlyphState& state, Vesse
   ImGui::SameLine();
   ImGui::Checkbox("centerline overlay", &set.overlay);
   noteRect(rects, "vg_overlay");
-  if (!info.problem.empty()) ImGui::TextColored(kErrorColor, "%s", info.problem.c_str());
   drawFocus(set.settings.focus, rects);
   drawContext(set.settings, rects);
   drawOutsideAndCuts(set, rects);

@@ -4,11 +4,11 @@
 
 #include <imgui.h>
 
+#include "gui/message_row.h"
+
 namespace angio {
 
 namespace {
-
-const ImVec4 kErrorColor(1, 0.45f, 0.35f, 1);
 
 void drawTool(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsPanelResult& result,
               WidgetRects& rects) {
@@ -42,8 +42,12 @@ void drawTool(VesselsPanelUi& ui, const VesselsPanelInfo& info, VesselsPanelResu
     ImGui::SameLine();
     result.cancel = ImGui::Button("Cancel##vessels");
     noteRect(rects, "vessels_cancel");
-    if (info.queued > 0) ImGui::TextDisabled("%d click(s) wait for the tracer", info.queued);
+  } else {
+    drawBlankWidgetRows(1);  // the bar's row stays: every click starts the tracer
   }
+  const std::string queued =
+      info.busy && info.queued > 0 ? std::to_string(info.queued) + " click(s) wait for the tracer" : "";
+  drawMessageRow({{MessageKind::note, queued}});
 }
 
 // A tracer setting the user may fix (checkbox, then its value) or leave to the tracer; noted as
@@ -182,8 +186,7 @@ VesselsPanelResult drawVesselsPanel(const VesselsState& vessels, VesselsPanelUi&
   drawPathList(vessels, ui, result, rects);
   drawSelectedPath(vessels, ui, result, rects);
   drawUndoAndFiles(ui, info, result, rects);
-  if (!info.problem.empty()) ImGui::TextColored(kErrorColor, "%s", info.problem.c_str());
-  if (!info.error.empty()) ImGui::TextColored(kErrorColor, "%s", info.error.c_str());
+  drawMessageRow({{MessageKind::error, info.error}, {MessageKind::error, info.problem}});
   return result;
 }
 

@@ -35,7 +35,7 @@ using Json = nlohmann::json;
 using angio::test_support::runAngioray;
 
 // Tall enough for the side panel down to the Session section without scrolling.
-const std::string kWindow = " --size 1000x1600 --timeout 120";
+const std::string kWindow = " --size 1000x1800 --timeout 120";
 
 std::string at(const Json& rect, float dx = 8) {
   char text[64];

@@ -170,6 +170,27 @@ TEST_F(Gui, LeftDragRotatesAndChangesTheImage) {
   EXPECT_GT(meanDifference(dir / "before.png", dir / "after.png", viewport), 1.0);
 }
 
+// The drag's first level fits the motion budget (render/motion_sampling.h): with a budget the
+// small phantom's fast frame is far within, the drag renders at the medium level's isd; with the
+// budget off, at the fast level's. Letting go continues from there to high either way.
+TEST_F(Gui, TheDragsFirstLevelIsTheFinestThatFitsTheMotionBudget) {
+  const std::string steps = R"([{"wait_level": "high"},
+    {"press": [300, 300]}, {"move": [320, 300]}, {"move": [340, 300]}, {"wait_ms": 300},
+    {"state": ")" + file("held.json") +
+                            R"("}, {"release": [340, 300]}, {"wait_level": "high"}])";
+  for (const auto& [budget, isd] : {std::pair{"1000", 1.0}, std::pair{"0", 3.0}}) {
+    SCOPED_TRACE(budget);
+    const GuiRun run = runScript(steps, std::string(" --motion-budget ") + budget);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Json held = readJson(dir / "held.json")["runtime"]["shown"];
+    EXPECT_EQ(held["level"], "fast");
+    EXPECT_DOUBLE_EQ(held["isd"].get<double>(), isd);
+    const Json after = readJson(dir / "end.json")["runtime"]["shown"];
+    EXPECT_EQ(after["level"], "high");
+    EXPECT_DOUBLE_EQ(after["angle_deg"].get<double>(), 340);
+  }
+}
+
 // The latency breakdown (runtime.latency): every request a drag or key made ends up on screen
 // (its own image or a newer one) and the stages of each first frame add up to its input -> screen
 // total. Counts and sums only: no time limits here

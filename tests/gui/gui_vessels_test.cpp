@@ -29,7 +29,7 @@ using Json = nlohmann::json;
 using test_support::runAngioray;
 
 // Tall enough for the side panel down to the Export section with the Vessels section open.
-const std::string kWindow = " --size 1200x1800 --timeout 120";
+const std::string kWindow = " --size 1200x2000 --timeout 120";
 
 using test_support::leftEnd;
 using test_support::middleOf;

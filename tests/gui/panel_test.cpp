@@ -14,6 +14,7 @@
 #include "gui/panel_rendering.h"
 #include "gui/panel_session.h"
 #include "gui/panel_tf.h"
+#include "gui/panel_vessels.h"
 #include "gui/panel_vessel_glyph.h"
 #include "gui/panel_view.h"
 #include "gui/tf_editor.h"
@@ -61,6 +62,19 @@ class GuiPanels : public ::testing::Test {
     frame(draw, at, false);
     frame(draw, at, true);
     return frame(draw, at, false);
+  }
+
+  // Where the next widget would go after `draw`: what sits below a section does not move while
+  // this stays the same.
+  template <class Draw>
+  float bottomAfter(Draw draw) {
+    float bottom = 0;
+    frame([&] {
+      draw();
+      bottom = ImGui::GetCursorPosY();
+      return 0;
+    });
+    return bottom;
   }
 
   static ImVec2 centre(const std::pair<ImVec2, ImVec2>& rect) {
@@ -410,6 +424,86 @@ TEST_F(GuiPanels, ADoubleClickOnTheViewportResetsZoomAndPan) {
   ASSERT_TRUE(reset.zoomedOrPanned);
   EXPECT_DOUBLE_EQ(reset.zoomedOrPanned->zoom, 1);
   EXPECT_EQ(reset.zoomedOrPanned->panPx, glm::dvec2(0.0));
+}
+
+TEST_F(GuiPanels, ALoadItsErrorOrNothingTakeTheSameRowsInTheDataSection) {
+  const Document document;
+  WidgetRects rects;
+  DataPanelInfo info;
+  const auto draw = [&] { drawDataPanel(document, info, rects); };
+  const float idle = bottomAfter(draw);
+  info.loading = true;
+  info.loadPath = "/data/a.mha";
+  EXPECT_EQ(bottomAfter(draw), idle);
+  info.loading = false;
+  info.loadError = "/data/a.mha: not a volume, and a long explanation that would not fit on one row";
+  EXPECT_EQ(bottomAfter(draw), idle);
+}
+
+TEST_F(GuiPanels, TheHybridsControlsAndMessagesDoNotMoveTheRowsBelow) {
+  const Centerlines centerlines = twoPaths();
+  WidgetRects rects;
+  CprState cpr;
+  CprPanelInfo info{&centerlines, false, "", ""};
+  const auto draw = [&] { drawCprPanel(cpr, info, rects); };
+  const float off = bottomAfter(draw);
+  cpr.hybrid = true;  // the transition slider, and "needs VesselGlyph on"
+  EXPECT_EQ(bottomAfter(draw), off);
+  info.vesselGlyphEnabled = true;
+  info.hybridProblem = "path 0 lies outside the view";
+  info.error = "the CPR view failed";
+  EXPECT_EQ(bottomAfter(draw), off);
+}
+
+TEST_F(GuiPanels, EveryVesselGlyphContextShapeAndMessageTakesTheSameRows) {
+  const Centerlines centerlines = twoPaths();
+  WidgetRects rects;
+  VesselGlyphPanelUi ui;
+  VesselGlyphPanelInfo info;
+  info.physical = &centerlines;
+  VesselGlyphState state;
+  const auto draw = [&] { drawVesselGlyphPanel(state, ui, info, rects); };
+  state.settings.context = ContextShape::slab;
+  const float slab = bottomAfter(draw);
+  state.settings.context = ContextShape::tube;
+  EXPECT_EQ(bottomAfter(draw), slab);
+  state.settings.context = ContextShape::none;
+  EXPECT_EQ(bottomAfter(draw), slab);
+  info.error = "could not read b.csv";
+  info.warnings = "path 2 has one point";
+  info.problem = "no path in the volume";
+  EXPECT_EQ(bottomAfter(draw), slab);
+  info.loading = true;
+  info.loadingFile = "c.csv";
+  EXPECT_EQ(bottomAfter(draw), slab);
+}
+
+TEST_F(GuiPanels, TheTracersProgressAndTheSectionsErrorsDoNotMoveTheRowsBelow) {
+  const VesselsState vessels;
+  WidgetRects rects;
+  VesselsPanelUi ui;
+  ui.traceTool = true;
+  VesselsPanelInfo info;
+  info.hasVolume = true;
+  const auto draw = [&] { drawVesselsPanel(vessels, ui, info, rects); };
+  const float idle = bottomAfter(draw);
+  info.busy = true;
+  info.busyWhat = "lumen field";
+  info.queued = 2;
+  info.error = "could not write paths.vtp";
+  EXPECT_EQ(bottomAfter(draw), idle);
+}
+
+TEST_F(GuiPanels, TheLastMovieAndARunningSeriesTakeTheSameRows) {
+  SeriesPanel series;
+  WidgetRects rects;
+  JobInfo job;
+  const auto draw = [&] { drawSeriesExport(series, job, rects); };
+  const float none = bottomAfter(draw);
+  series.movieNote = "series.mp4 (H.264)";
+  EXPECT_EQ(bottomAfter(draw), none);
+  job.running = true;
+  EXPECT_EQ(bottomAfter(draw), none);
 }
 
 TEST(GuiOrientation, LpsLettersNameTheDominantAxisAndATieGoesToTheEarlierAxis) {
