@@ -1,10 +1,12 @@
 #include "vessel/vessel_glyph.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <limits>
@@ -208,6 +210,57 @@ std::vector<ViewSegment> viewSegments(const ViewGeometry& view, const GlyphTubes
   return segments;
 }
 
+// --- Per view: slab end caps -------------------------------------------------------------------
+
+// The slab's sideways reach is along image rows whatever the path's direction (thesis 5.3.3: the
+// row-wise sweep assumes vessels run vertically). Where a path runs sideways, its points lie in a
+// few rows and reach the half width along the path, so past its ends that slab would stick out as
+// a needle of one to a few rows. A cap ends the chain's slab at each end instead: the chain's slab
+// leaves out the rectangle beyond the end, up to the half width along the path's image-space
+// direction there and to either side of it.
+struct SlabCap {
+  glm::dvec2 end{0.0};      // the chain's end in image space (h, v)
+  glm::dvec2 outward{0.0};  // unit: the path's image-space direction at the end, pointing out
+};
+
+struct ChainCaps {
+  std::optional<SlabCap> first, last;
+};
+
+// The cap at *end, the next vertices inward from `next` to `stop`; none for a chain seen end-on.
+template <class Iterator>
+std::optional<SlabCap> capAt(const ViewGeometry& view, Iterator end, Iterator stop) {
+  constexpr double kEndOnMm = 1e-9;
+  const glm::dvec2 endPoint(toView(view, end->positionMm));
+  for (Iterator next = std::next(end); next != stop; ++next) {
+    const glm::dvec2 outward = endPoint - glm::dvec2(toView(view, next->positionMm));
+    if (glm::length(outward) > kEndOnMm) return SlabCap{endPoint, glm::normalize(outward)};
+  }
+  return std::nullopt;
+}
+
+std::vector<ChainCaps> slabCaps(const ViewGeometry& view, const GlyphTubes& tubes,
+                                const VesselGlyphSettings& settings) {
+  std::vector<ChainCaps> caps(tubes.chains.size());
+  if (settings.context != ContextShape::slab) return caps;
+  for (std::size_t c = 0; c < tubes.chains.size(); ++c) {
+    const auto& chain = tubes.chains[c];
+    caps[c] = {capAt(view, chain.begin(), chain.end()), capAt(view, chain.rbegin(), chain.rend())};
+  }
+  return caps;
+}
+
+// Narrows [lo, hi] to the h with min <= k h + c <= max.
+void requireBetween(double& lo, double& hi, double k, double c, double min, double max) {
+  if (k == 0) {
+    if (c < min || c > max) lo = kInfinity, hi = -kInfinity;
+    return;
+  }
+  const double a = (min - c) / k, b = (max - c) / k;
+  lo = std::max(lo, std::min(a, b));
+  hi = std::min(hi, std::max(a, b));
+}
+
 // --- Per view: rows -----------------------------------------------------------------------------
 
 struct RowGeometry {
@@ -228,6 +281,39 @@ struct RowGeometry {
     return {int(std::clamp(first, 0.0, double(height))), int(std::clamp(last, -1.0, height - 1.0))};
   }
 };
+
+struct ColumnRange {  // columns first..last; none when first > last
+  int first = 0, last = -1;
+  bool contains(int x) const { return first <= x && x <= last; }
+};
+
+// The columns of row v inside the cap's rectangle (see SlabCap).
+ColumnRange cappedColumns(const RowGeometry& rows, const SlabCap& cap, double v, double halfWidthMm) {
+  const glm::dvec2 o = cap.outward;
+  const double dv = v - cap.end.y;
+  double lo = -kInfinity, hi = kInfinity;
+  // along = (h - end.h) o.x + dv o.y in [0, w]; across = -(h - end.h) o.y + dv o.x in [-w, w]
+  requireBetween(lo, hi, o.x, dv * o.y - cap.end.x * o.x, 0, halfWidthMm);
+  requireBetween(lo, hi, -o.y, dv * o.x + cap.end.x * o.y, -halfWidthMm, halfWidthMm);
+  if (lo > hi) return {};
+  const auto [first, last] = rows.columns(lo, hi);
+  return {first, last};
+}
+
+using SlabCuts = std::array<ColumnRange, 2>;  // a chain's capped columns in one row
+
+// Calls piece(first, last) for each run of columns of [first, last] outside the cuts, in order.
+template <class Piece>
+void forEachPieceOutside(int first, int last, SlabCuts cuts, Piece piece) {
+  if (cuts[1].first < cuts[0].first) std::swap(cuts[0], cuts[1]);
+  for (const ColumnRange& cut : cuts) {
+    if (cut.first > cut.last || cut.last < first) continue;
+    if (cut.first > last) break;
+    if (cut.first > first) piece(first, cut.first - 1);
+    first = std::max(first, cut.last + 1);
+  }
+  if (first <= last) piece(first, last);
+}
 
 // The heights v a segment's regions reach.
 std::pair<double, double> verticalReach(const ViewSegment& segment, const VesselGlyphSettings& settings,
@@ -520,8 +606,9 @@ class RowBuilder {
  public:
   RowBuilder() : columns_(0), focusChain_(0, Region::focus), contextChain_(0, Region::context) {}
 
-  // Before the rows of a view; `settings` must outlive them.
-  void startView(const RowGeometry& rows, const VesselGlyphSettings& settings) {
+  // Before the rows of a view; `settings` and `caps` (per chain) must outlive them.
+  void startView(const RowGeometry& rows, const VesselGlyphSettings& settings,
+                 const std::vector<ChainCaps>& caps) {
     if (rows.width != rows_.width) {
       columns_ = ColumnSpans(rows.width);
       focusChain_ = ChainAccumulator(rows.width, Region::focus);
@@ -529,6 +616,7 @@ class RowBuilder {
     }
     rows_ = rows;
     settings_ = &settings;
+    caps_ = &caps;
   }
 
   // Appends row y's intervals to `out`; rowStarts[x] = the offset in `out` of column x's first.
@@ -538,13 +626,15 @@ class RowBuilder {
  private:
   void addTube(const ViewSegment& segment, const Tube& tube, double v, ChainAccumulator& chain,
                bool cut);
-  void addSlab(const ViewSegment& segment, double v);
+  SlabCuts slabCuts(std::size_t chain, double v) const;
+  void addSlab(const ViewSegment& segment, double v, const SlabCuts& cuts);
   void emitColumns(int xFirst, int xLast, IntervalBuffer& out, std::uint32_t* rowStarts);
   void advanceRuns(int x);
   void emitMixed(int x, IntervalBuffer& out);
 
   RowGeometry rows_;
   const VesselGlyphSettings* settings_ = nullptr;
+  const std::vector<ChainCaps>* caps_ = nullptr;
   ColumnSpans columns_;
   ChainAccumulator focusChain_, contextChain_;
   std::vector<RunSpan> runs_, activeRuns_;
@@ -558,16 +648,20 @@ class RowBuilder {
 void RowBuilder::build(int y, const std::vector<ViewSegment>& segments, const std::uint32_t* candidates,
                        std::size_t candidateCount, IntervalBuffer& out, std::uint32_t* rowStarts) {
   const double v = rows_.rowV(y);
+  const bool slab = settings_->context == ContextShape::slab;
   runs_.clear();
+  SlabCuts cuts;
   for (std::size_t n = 0; n < candidateCount; ++n) {
     const ViewSegment& segment = segments[candidates[n]];
-    if (n > 0 && segments[candidates[n - 1]].chain != segment.chain) {
+    const bool newChain = n == 0 || segments[candidates[n - 1]].chain != segment.chain;
+    if (newChain && n > 0) {
       focusChain_.flush(columns_);
       contextChain_.flush(columns_);
     }
+    if (newChain && slab) cuts = slabCuts(segment.chain, v);
     addTube(segment, segment.focus, v, focusChain_, settings_->halfVessel);
     if (segment.contextTube) addTube(segment, *segment.contextTube, v, contextChain_, false);
-    if (settings_->context == ContextShape::slab) addSlab(segment, v);
+    if (slab) addSlab(segment, v, cuts);
   }
   focusChain_.flush(columns_);
   contextChain_.flush(columns_);
@@ -614,10 +708,19 @@ void RowBuilder::addTube(const ViewSegment& segment, const Tube& tube, double v,
   }
 }
 
+// The columns of row v the chain's end caps take from its slab.
+SlabCuts RowBuilder::slabCuts(std::size_t chain, double v) const {
+  const ChainCaps& caps = (*caps_)[chain];
+  const double w = settings_->slab.halfWidthMm;
+  return {caps.first ? cappedColumns(rows_, *caps.first, v, w) : ColumnRange{},
+          caps.last ? cappedColumns(rows_, *caps.last, v, w) : ColumnRange{}};
+}
+
 // The slab of the segment's points inside the row's band |v(s) - v| <= D/2: pixel h gets the
 // depths of those with |h(s) - h| <= half width, widened by front and back. Where all of them
-// are within the half width (the interior) the span is the same for every column: one run.
-void RowBuilder::addSlab(const ViewSegment& segment, double v) {
+// are within the half width (the interior) the span is the same for every column: one run (or a
+// run on each side of a cut). The chain's end caps' columns are left out.
+void RowBuilder::addSlab(const ViewSegment& segment, double v, const SlabCuts& cuts) {
   const SlabContext& slab = settings_->slab;
   const double halfRow = rows_.pixelMm / 2;
   const glm::dvec3 along = segment.b - segment.a;
@@ -630,13 +733,17 @@ void RowBuilder::addSlab(const ViewSegment& segment, double v) {
   const auto [x0, x1] = rows_.columns(hMin - slab.halfWidthMm, hMax + slab.halfWidthMm);
   auto [i0, i1] = rows_.columns(hMax - slab.halfWidthMm, hMin + slab.halfWidthMm);
   if (i0 <= i1) {
-    runs_.push_back({i0, i1, std::min(p.z, q.z) - slab.frontMm, std::max(p.z, q.z) + slab.backMm});
+    const double begin = std::min(p.z, q.z) - slab.frontMm, end = std::max(p.z, q.z) + slab.backMm;
+    forEachPieceOutside(i0, i1, cuts, [&](int first, int last) {
+      runs_.push_back({first, last, begin, end});
+    });
   } else {
     i0 = x1 + 1, i1 = x1;  // no interior: every column on its own
   }
   for (int x = x0; x <= x1; ++x) {
     if (x == i0) x = i1 + 1;
     if (x > x1) break;
+    if (cuts[0].contains(x) || cuts[1].contains(x)) continue;
     const double h = rows_.columnH(x);
     SRange s = inRow;
     requireAtMost(s, along.x, slab.halfWidthMm + h - segment.a.x);   // h(s) - h <= w
@@ -848,6 +955,7 @@ void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGl
   if (const auto problem = settingsProblem(settings)) throw std::invalid_argument(*problem);
   const RowGeometry rows{view.width, view.height, view.pixelMm};
   const std::vector<ViewSegment> segments = viewSegments(view, tubes, settings);
+  const std::vector<ChainCaps> caps = slabCaps(view, tubes, settings);
   const int bandCount = (rows.height + kRowsPerBand - 1) / kRowsPerBand;
   const BandBins bins = binByBand(segments, rows, settings, bandCount);
   out.width = rows.width;
@@ -869,7 +977,7 @@ void buildInto(const ViewGeometry& view, const GlyphTubes& tubes, const VesselGl
         return nextBand++;
       }) & tbb::make_filter<int, int>(tbb::filter_mode::parallel, [&](int band) {
         RowBuilder& builder = scratch.builders.local();
-        builder.startView(rows, settings);
+        builder.startView(rows, settings, caps);
         buildBand(band, rows, segments, bins, builder, bands[std::size_t(band % tokens)], out.rayBegin);
         return band;
       }) & tbb::make_filter<int, void>(tbb::filter_mode::serial_in_order, [&](int band) {

@@ -16,7 +16,11 @@
 //     |h - h(c)| <= halfWidthMm and -frontMm <= t - t(c) <= backMm. A bone beside the vessel is thus
 //     either wholly outside or cut by a slab that follows one smooth vessel depth, instead of being
 //     cut into stripes by unbounded slabs of far-away paths (thesis 5.3.3); halfWidthMm = infinity
-//     gives the thesis's unbounded slabs.
+//     gives the thesis's unbounded slabs. The slab ends where its chain ends (a path's ends, a
+//     branch's start at the bifurcation, the sides of a non-finite point): the chain's slab leaves
+//     out the rectangle beyond each end, halfWidthMm deep along the end segment's image-space
+//     direction and halfWidthMm to either side of it. Without it a path running sideways in the
+//     image, whose points lie in few rows, would reach halfWidthMm past its ends along those rows.
 //   * tube: a second, wider tube around the centerlines (TubeRadius as the focus).
 //   * none: focus only.
 // - Focus wins where focus and context overlap.

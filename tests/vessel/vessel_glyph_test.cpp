@@ -79,6 +79,14 @@ VesselGlyphSettings exactFocusOnly() {
   return settings;
 }
 
+// exactFocusOnly() with `slab` as the context.
+VesselGlyphSettings exactFocusInSlab(SlabContext slab) {
+  VesselGlyphSettings settings = exactFocusOnly();
+  settings.context = ContextShape::slab;
+  settings.slab = slab;
+  return settings;
+}
+
 // exactFocusOnly(), simplified with `toleranceMm`.
 VesselGlyphSettings simplifiedFocusOnly(double toleranceMm) {
   VesselGlyphSettings settings = exactFocusOnly();
@@ -116,6 +124,17 @@ std::vector<RegionInterval> ofRegion(const std::vector<RegionInterval>& interval
     if (interval.region == region) found.push_back(interval);
   }
   return found;
+}
+
+// Image-space position (h, v) of a volume-frame point, and of a pixel's centre.
+glm::dvec2 imagePosition(const ViewGeometry& view, glm::dvec3 pointMm) {
+  const glm::dvec3 p = pointMm - view.centre;
+  return {glm::dot(p, view.right), glm::dot(p, view.up)};
+}
+
+glm::dvec2 pixelPosition(const ViewGeometry& view, Pixel pixel) {
+  return {(pixel.x + 0.5 - view.width * 0.5) * view.pixelMm,
+          (view.height * 0.5 - pixel.y - 0.5) * view.pixelMm};
 }
 
 void expectWellFormed(const RayRegions& regions, const ViewGeometry& view) {
@@ -241,6 +260,27 @@ std::vector<DepthSpan> expectedSlab(const std::vector<glm::dvec3>& rowPoints, co
   return spans;
 }
 
+// Whether pixel position (h, v) lies in an end cap of one of the paths (vessel_glyph.cpp,
+// SlabCap): beyond an end, within the half width along the end segment's image-space direction and
+// across it. `grow` widens the rectangle on every side (narrows it when negative).
+bool inEndCap(const std::vector<CenterlinePath>& paths, const ViewGeometry& view, glm::dvec2 pixel,
+              double halfWidthMm, double grow) {
+  const auto inCap = [&](glm::dvec3 end, glm::dvec3 inward) {
+    const glm::dvec2 e = imagePosition(view, end);
+    const glm::dvec2 outward = glm::normalize(e - imagePosition(view, inward));
+    const double along = glm::dot(pixel - e, outward);
+    const double across = glm::dot(pixel - e, glm::dvec2(-outward.y, outward.x));
+    return along >= -grow && along <= halfWidthMm + grow && std::abs(across) <= halfWidthMm + grow;
+  };
+  for (const CenterlinePath& path : paths) {
+    const auto& p = path.points;
+    if (p.size() < 2) continue;
+    if (inCap(p[0].positionMm, p[1].positionMm)) return true;
+    if (inCap(p.back().positionMm, p[p.size() - 2].positionMm)) return true;
+  }
+  return false;
+}
+
 std::vector<glm::dvec3> pointsInRow(const std::vector<glm::dvec3>& dense, double v, double halfHeight) {
   std::vector<glm::dvec3> found;
   for (const glm::dvec3& c : dense) {
@@ -256,7 +296,8 @@ bool inSpans(const std::vector<DepthSpan>& spans, double t) {
 
 // Samples every ray every 0.2 mm: a point deeper than `tolerance` inside the tube must be focus,
 // one farther than `outerSlackMm` + tolerance outside must not; with a slab, a point well inside
-// the expected slab (and outside the tube) must be context, one well outside it must not.
+// the expected slab (and outside the tube and the end caps) must be context, one well outside it
+// must not.
 void expectMatchesBruteForce(const std::vector<CenterlinePath>& paths, double angleDeg,
                              const VesselGlyphSettings& settings, double outerSlackMm) {
   constexpr double kTolerance = 0.01;
@@ -279,8 +320,13 @@ void expectMatchesBruteForce(const std::vector<CenterlinePath>& paths, double an
       const glm::dvec3 origin = view.rayOrigin(x, y);
       const double h = (x + 0.5 - view.width * 0.5) * view.pixelMm;
       const auto candidates = tube.near(view, h, v, far);
-      const auto slabInner = expectedSlab(rowInner, settings.slab, h, -kTolerance);
-      const auto slabOuter = expectedSlab(rowOuter, settings.slab, h, kTolerance);
+      const double w = settings.slab.halfWidthMm;
+      const auto slabInner = inEndCap(paths, view, {h, v}, w, kTolerance)
+                                 ? std::vector<DepthSpan>{}
+                                 : expectedSlab(rowInner, settings.slab, h, -kTolerance);
+      const auto slabOuter = inEndCap(paths, view, {h, v}, w, -kTolerance)
+                                 ? std::vector<DepthSpan>{}
+                                 : expectedSlab(rowOuter, settings.slab, h, kTolerance);
       if (candidates.empty() && slabOuter.empty()) {  // nothing can reach this ray
         ASSERT_TRUE(intervals.empty()) << "pixel (" << x << ", " << y << ")";
         ++outsideChecked;
@@ -393,9 +439,7 @@ TEST(VesselGlyph, OverlappingTubesOfSeveralPathsAreMerged) {
 // --- Context slab --------------------------------------------------------------------------------
 
 TEST(VesselGlyph, SlabContextFollowsTheCenterlineDepthWithinItsBounds) {
-  VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::slab;
-  settings.slab = {6.0, 9.0, 12.0};
+  const VesselGlyphSettings settings = exactFocusInSlab({6.0, 9.0, 12.0});
   // Slanted in depth at angle 0 (y changes with z), and a tortuous one.
   const std::vector<CenterlinePath> slanted{straightPath("slanted", {30, 18, 5}, {34, 45, 73}, 40, 2.0)};
   for (double angle : {0.0, 60.0, 145.0}) {
@@ -411,9 +455,7 @@ TEST(VesselGlyph, SlabContextFollowsTheCenterlineDepthWithinItsBounds) {
 }
 
 TEST(VesselGlyph, SlabIsBoundedSideways) {
-  VesselGlyphSettings settings = exactFocusOnly();
-  settings.context = ContextShape::slab;
-  settings.slab = {5.0, 5.0, 8.0};
+  VesselGlyphSettings settings = exactFocusInSlab({5.0, 5.0, 8.0});
   const Volume volume = testVolume();
   const ViewGeometry view = viewAt(volume, 0);  // h = x - 31.5, t = y - 31.5
   const Centerlines centerlines =
@@ -437,6 +479,40 @@ TEST(VesselGlyph, SlabIsBoundedSideways) {
     const auto context = ofRegion(intervalsOf(unbounded, {x, y}), Region::context);
     ASSERT_EQ(context.size(), 1u);
     EXPECT_NEAR(context[0].begin, -11.5, 1e-4);
+  }
+}
+
+// A path that runs sideways in the image has its points in few rows, and those reach the half
+// width sideways, i.e. along the path: without end caps, past its ends as a needle of one to a few
+// rows (thesis 5.3.3: the row-wise sweep assumes vessels run vertically).
+TEST(VesselGlyph, SlabEndsAtThePathsEnds) {
+  const VesselGlyphSettings settings = exactFocusInSlab({5.0, 5.0, 8.0});
+  const Volume volume = testVolume();
+  const ViewGeometry view = viewAt(volume, 0);  // h = x - 31.5, v = z - 39.375
+  struct Case {
+    const char* name;
+    glm::dvec3 from, to;
+  };
+  for (const Case& path :
+       {Case{"horizontal", {20, 30, 40}, {44, 30, 40}}, Case{"oblique", {16, 30, 24}, {44, 30, 52}}}) {
+    SCOPED_TRACE(path.name);
+    const CenterlinePath centerline = straightPath(path.name, path.from, path.to, 13, 1.5);
+    const RayRegions regions = buildRayRegions(volume, view, inVolumeFrame({centerline}), settings);
+    const glm::dvec2 start = imagePosition(view, path.from), end = imagePosition(view, path.to);
+    const glm::dvec2 along = glm::normalize(end - start);
+    int withContext = 0, beforeStart = 0, pastEnd = 0;
+    for (int y = 0; y < view.height; ++y) {
+      for (int x = 0; x < view.width; ++x) {
+        if (ofRegion(intervalsOf(regions, {x, y}), Region::context).empty()) continue;
+        ++withContext;
+        const glm::dvec2 pixel = pixelPosition(view, {x, y});
+        beforeStart += glm::dot(pixel - start, along) < -1e-9;
+        pastEnd += glm::dot(pixel - end, along) > 1e-9;
+      }
+    }
+    EXPECT_EQ(beforeStart, 0);
+    EXPECT_EQ(pastEnd, 0);
+    EXPECT_GT(withContext, 20);  // the slab is still there between the ends
   }
 }
 
