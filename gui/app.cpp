@@ -29,6 +29,11 @@ App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& 
   startPreset_ = doc().tfPreset.empty() && !presets_.empty() ? presets_.front().id : doc().tfPreset;
   syncVesselCenterlines();
   startSession();
+  if (!isPhantomName(doc().dataset)) {  // a dataset given on the command line is a recent file too
+    std::vector<std::string> recent = doc().recentFiles;
+    addRecentFile(recent, absoluteDataset(doc().dataset));
+    commit(RecentFilesEdit{recent});
+  }
   labels_.pendingFile = start.labelsFile.empty() ? doc().labels.file : start.labelsFile;
   resetLabels();
   if (!start.centerlinesFile.empty()) {  // `gui --centerlines` rather than a session's file
@@ -81,9 +86,9 @@ void App::frame(double previousFrameMs) {
   if (view.autoSpin) commit(RotateEdit{view.spinDegreesPerSecond * ImGui::GetIO().DeltaTime});
   // While anything is held (a drag on the image or the TF plot, a slider, an arrow key) or the
   // view spins, only the fast level is wanted; letting go asks for the full progression.
-  const bool interacting = ImGui::IsAnyItemActive() || doc().view.autoSpin ||
-                           ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)) ||
-                           ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow));
+  const bool arrowHeld = !popupOpen() && (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)) ||
+                                          ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow)));
+  const bool interacting = ImGui::IsAnyItemActive() || doc().view.autoSpin || arrowHeld;
   ImGui::Render();
   if (doc().vesselGlyph.enabled && vessel_.physical)
     loadMissingRegionTfs();  // the request's regions need them
@@ -114,9 +119,14 @@ void App::pollHistogram() {
   huRange_ = range;
 }
 
+// A modal (the file browser) or an open combo has the keys: the view does not turn behind it.
+bool App::popupOpen() const {
+  return ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+}
+
 void App::handleKeys() {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
+  if (io.WantTextInput || popupOpen()) return;
   const double step = io.KeyShift ? 10 : 1;
   // Arrows turn the patient like a drag in their direction (see drawViewport's grab semantics).
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) commit(RotateEdit{step});

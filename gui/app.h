@@ -121,6 +121,7 @@ class App {
   // The frame (gui/app.cpp): the document's one way to change, keys, the viewport window.
   const Document& doc() const { return workstation_.document(); }
   void commit(const Edit& edit);  // to workstation_.apply: every change of the document
+  bool popupOpen() const;
   template <class PanelEdit>
   void commit(const std::optional<PanelEdit>& edit) {
     if (edit) commit(Edit{*edit});

@@ -1,8 +1,8 @@
-#include "io/input_error.h"
 #include "gui/app_window.h"
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -16,6 +16,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "io/atomic_write.h"
+#include "io/input_error.h"
 #include "io/image_export.h"
 #include "gui/session_file.h"
 
@@ -106,6 +107,32 @@ void writeReport(const std::filesystem::path& path, const App& app) {
   });
 }
 
+// Sleeping while nothing happens: two frames a display frame apart after anything happened (ImGui
+// shows some consequences of an input, e.g. a hover after a click, a frame later), then until
+// input, a renderer's wake-up or the long tick. Drawing the idle UI twice a second cost about 7 %
+// of a core in software GL.
+class IdleWait {
+ public:
+  void wait(double longestSeconds) {
+    const double seconds = settleFrames_ < 2 ? kFrameMs / 1000 : std::min(kLongTick, longestSeconds);
+    const auto before = Clock::now();
+    glfwWaitEventsTimeout(std::max(seconds, 0.0));
+    const bool woken = Ms(Clock::now() - before).count() < seconds * 1000 * 0.9;
+    settleFrames_ = woken ? 0 : settleFrames_ + 1;
+  }
+  void busy() { settleFrames_ = 0; }
+
+ private:
+  static constexpr double kLongTick = 2;  // s: a SIGTERM is seen at the latest then
+  int settleFrames_ = 0;
+};
+
+// Seconds left before --quit-after closes the window (a day without it).
+double untilQuit(const WindowOptions& options, Clock::time_point opened) {
+  if (options.quitAfterSeconds <= 0) return 86400;
+  return options.quitAfterSeconds - Ms(Clock::now() - opened).count() / 1000;
+}
+
 }  // namespace
 
 bool windowSystemAvailable() {
@@ -128,6 +155,7 @@ int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& option
   const auto opened = Clock::now();
   double previousFrameMs = 0;
   Clock::time_point previousStart{};
+  IdleWait idle;
   bool closing = false;
   while (!closing) {
     closing = glfwWindowShouldClose(window.handle()) || app.wantsToQuit() || closeRequested.load() ||
@@ -146,8 +174,9 @@ int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& option
         break;
       }
       case FramePacing::progress: glfwWaitEventsTimeout(0.1); break;
-      case FramePacing::idle: glfwWaitEventsTimeout(0.5); break;
+      case FramePacing::idle: idle.wait(untilQuit(options, opened)); break;
     }
+    if (app.pacing() != FramePacing::idle) idle.busy();
     const auto start = Clock::now();
     previousStart = start;
     ImGui_ImplOpenGL3_NewFrame();

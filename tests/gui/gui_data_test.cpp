@@ -132,6 +132,25 @@ TEST_F(GuiData, FileBrowserOpensAVolumeThatReplacesThePhantom) {
   EXPECT_LT(end["runtime"]["shown"]["width"].get<int>(), 200);
 }
 
+TEST_F(GuiData, TheArrowKeysDoNotTurnTheViewBehindTheOpenBrowser) {
+  const Json layout = startup()["runtime"]["layout"];
+  // The browser opens in the window's middle; a click on its list takes the keys from the path
+  // field, so only the modal itself can keep them from the view.
+  const GuiRun run = runScript(R"([{"click": )" + centre(layout["data_open"]) +
+                               R"(}, {"wait_ms": 50}, {"click": [500, 700]}, {"key": "Left"},
+                                    {"key": "Right"}, {"key": "Right"}, {"wait_ms": 50}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_DOUBLE_EQ(readJson(dir_ / "end.json")["state"]["view"]["angle_deg"].get<double>(), 0);
+}
+
+TEST_F(GuiData, ADatasetGivenOnTheCommandLineIsARecentFile) {
+  const GuiRun run =
+      runAngioray("gui " + volume_.string() + " --headless --size 1000x1400 --timeout 120 --state-out " +
+                  file("end.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(readJson(dir_ / "end.json")["state"]["recent_files"], Json({volume_.string()}));
+}
+
 TEST_F(GuiData, FileBrowserListsFoldersFirstThenVolumeFilesSortedByName) {
   const fs::path folder = dir_ / "listing";
   for (const char* sub : {"beta", "Alpha", "series", ".hidden"}) fs::create_directories(folder / sub);
