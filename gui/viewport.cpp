@@ -113,7 +113,10 @@ ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& sh
   const ImVec2 centreOfViewport(min.x + size.x / 2, min.y + size.y / 2);
   if (ImGui::IsItemHovered() && io.MouseWheel != 0)
     zoomAboutCursor(view, centreOfViewport, io.MousePos, io.MouseWheel);
-  if (ImGui::IsItemActive()) {
+  // The press's frame moves nothing: its MouseDelta is the pointer's way to the press point (a
+  // jump of hundreds of pixels when a remote desktop warps the pointer and presses in one event
+  // batch), not a drag.
+  if (ImGui::IsItemActive() && !ImGui::IsItemActivated()) {
     // Grab semantics: dragging right carries the front of the patient to the right.
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
       result.rotateDegrees = -io.MouseDelta.x * view.degreesPerPixel;

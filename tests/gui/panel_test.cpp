@@ -410,6 +410,19 @@ TEST_F(GuiPanels, TheExportSectionStartsAJobUnlessOneIsRunning) {
   EXPECT_TRUE(click(draw, centre(rects["series_cancel"])).second.cancel);
 }
 
+TEST_F(GuiPanels, ThePressOfADragDoesNotTurnByThePointersJumpToIt) {
+  const ViewState view;
+  const ViewportOverlay overlay;
+  const auto draw = [&] { return drawViewport(nullptr, view, overlay); };
+  frame(draw, ImVec2(20, 20));
+  // Warped and pressed in one event batch (a remote desktop): one frame, 200 px from the last.
+  const ImVec2 pressed(220, 300);
+  const ViewportInteraction press = frame(draw, pressed, true);
+  EXPECT_EQ(press.rotateDegrees, 0);
+  const ViewportInteraction dragged = frame(draw, ImVec2(pressed.x + 40, pressed.y), true);
+  EXPECT_DOUBLE_EQ(dragged.rotateDegrees, -40 * view.degreesPerPixel);
+}
+
 TEST_F(GuiPanels, ADoubleClickOnTheViewportResetsZoomAndPan) {
   ViewState view;
   view.zoom = 4;
