@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -42,7 +43,51 @@ void drawSeriesFormat(SeriesSpec& spec) {
   spec.movieFps = std::clamp(spec.movieFps, 1.0, 120.0);
 }
 
+// The start button, or in its place (same row) the question whether to overwrite what is there:
+// a click on the button asks first when `overwrites`; `confirming` holds what was asked about.
+bool drawStartOrConfirm(const char* label, const char* name, const std::string& target, bool overwrites,
+                        std::string& confirming, WidgetRects& rects) {
+  if (!confirming.empty() && confirming != target) confirming.clear();  // the field changed
+  if (confirming.empty()) {
+    const bool clicked = ImGui::Button(label);
+    noteRect(rects, name);
+    if (!clicked) return false;
+    if (!overwrites) return true;
+    confirming = target;
+    return false;
+  }
+  ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "replace what is there?");
+  ImGui::SameLine();
+  const bool replace = ImGui::Button((std::string("Overwrite##") + name).c_str());
+  noteRect(rects, std::string(name) + "_overwrite");
+  ImGui::SameLine();
+  const bool keep = ImGui::Button((std::string("Keep##") + name).c_str());
+  noteRect(rects, std::string(name) + "_keep");
+  if (replace || keep) confirming.clear();
+  return replace;
+}
+
+bool exists(const std::filesystem::path& path) {
+  std::error_code error;
+  return std::filesystem::exists(path, error);
+}
+
 }  // namespace
+
+bool exportWouldOverwrite(const std::string& path) {
+  return !path.empty() && (exists(path) || exists(path + ".json"));
+}
+
+bool seriesWouldOverwrite(const std::string& folder, const std::string& prefix) {
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix + "-", 0) == 0 || name == prefix + ".mp4" || name == prefix + ".avi")
+      return true;
+  }
+  return false;
+}
 
 ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRects& rects) {
   ExportRequests requests;
@@ -62,8 +107,8 @@ ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRect
     requests.cancel = ImGui::SmallButton("cancel##export");
     return requests;
   }
-  requests.start = ImGui::Button("Export image");
-  noteRect(rects, "export_button");
+  requests.start = drawStartOrConfirm("Export image", "export_button", ui.path,
+                                      exportWouldOverwrite(ui.path), ui.confirmingPath, rects);
   return requests;
 }
 
@@ -89,8 +134,9 @@ ExportRequests drawSeriesExport(SeriesPanel& series, const JobInfo& job, WidgetR
     drawMessageRow({});  // the last movie's row
     return requests;
   }
-  requests.start = ImGui::Button("Export rotation series");
-  noteRect(rects, "series_button");
+  requests.start = drawStartOrConfirm("Export rotation series", "series_button", series.folder,
+                                      seriesWouldOverwrite(series.folder, series.spec.prefix),
+                                      series.confirmingFolder, rects);
   drawMessageRow(
       {{MessageKind::note, series.movieNote.empty() ? "" : "last movie: " + series.movieNote}});
   return requests;

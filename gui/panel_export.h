@@ -13,13 +13,21 @@ namespace angio {
 struct SeriesPanel {
   std::string folder = "angioray-series";
   SeriesSpec spec;
-  std::string movieNote;  // of the last series
+  std::string movieNote;         // of the last series
+  std::string confirmingFolder;  // asked whether to overwrite its views ("" = not asking)
 };
 
 struct ExportPanelUi {
   std::string path = "angioray-export.png";
-  double isd = 0.5;  // voxel units
+  double isd = 0.5;            // voxel units
+  std::string confirmingPath;  // asked whether to overwrite it ("" = not asking)
 };
+
+// Whether an export to `path` would replace a file the user has: the image or its sidecar.
+bool exportWouldOverwrite(const std::string& path);
+// Whether a series of `prefix` in `folder` would replace files: a view ("prefix-NNN.*") or its
+// movie ("prefix.mp4", "prefix.avi").
+bool seriesWouldOverwrite(const std::string& folder, const std::string& prefix);
 
 // A background job as the section shows it.
 struct JobInfo {

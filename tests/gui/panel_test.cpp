@@ -1,6 +1,7 @@
 // The side panel's sections as functions: drawn in an ImGui context with no window or renderer
 // behind it, driven by mouse input over a few frames; what they return is checked, and applied.
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -421,6 +422,30 @@ TEST_F(GuiPanels, ThePressOfADragDoesNotTurnByThePointersJumpToIt) {
   EXPECT_EQ(press.rotateDegrees, 0);
   const ViewportInteraction dragged = frame(draw, ImVec2(pressed.x + 40, pressed.y), true);
   EXPECT_DOUBLE_EQ(dragged.rotateDegrees, -40 * view.degreesPerPixel);
+}
+
+TEST_F(GuiPanels, AnExportOverAnExistingFileAsksFirstInTheButtonsRow) {
+  const std::filesystem::path existing = std::filesystem::temp_directory_path() /
+                                         ("angioray-exists-" + std::to_string(::getpid()) + ".png");
+  std::ofstream(existing) << "the user's image";
+  ExportPanelUi ui;
+  ui.path = existing.string();
+  const JobInfo idle;
+  WidgetRects rects;
+  const auto draw = [&] { return drawImageExport(ui, idle, rects); };
+  const float bottom = bottomAfter(draw);
+  const std::pair<ImVec2, ImVec2> button = rects["export_button"];
+  EXPECT_FALSE(click(draw, centre(button)).start);  // asks instead
+  frame(draw);
+  ASSERT_TRUE(rects.count("export_button_keep"));
+  EXPECT_EQ(bottomAfter(draw), bottom);  // in the button's row
+  EXPECT_FALSE(click(draw, centre(rects["export_button_keep"])).start);
+  EXPECT_TRUE(ui.confirmingPath.empty());
+  click(draw, centre(button));
+  frame(draw);
+  EXPECT_TRUE(click(draw, centre(rects["export_button_overwrite"])).start);
+  std::filesystem::remove(existing);
+  EXPECT_TRUE(click(draw, centre(button)).start);  // nothing there: no question
 }
 
 TEST_F(GuiPanels, ADoubleClickOnTheViewportResetsZoomAndPan) {
