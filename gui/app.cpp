@@ -162,6 +162,8 @@ void App::drawViewportWindow() {
   traceOnClick();
   drawTraceOverlay();
   if (viewport_.rotateDegrees != 0) commit(RotateEdit{viewport_.rotateDegrees});
+  if (viewport_.adjustPx != glm::vec2(0.f)) adjustByDrag(viewport_.adjustPx);
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) viewAdjusting_ = false;  // the gesture ended
   ImGui::End();
 }
 

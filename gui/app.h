@@ -159,6 +159,7 @@ class App {
   const TransferFunction& editedTf() const;
   const std::string& editedPreset() const;
   void applyTf(const TransferFunction& tf, const std::string& preset);  // one undo step
+  void adjustByDrag(glm::vec2 px);  // a Shift+drag on the view: TF shift/opacity or MIP window
   void undoTf();
   void redoTf();
   void saveEditedTf();
@@ -289,8 +290,10 @@ class App {
   // release's request, which then continues above the frame the drag left).
   double motionBudgetMs_ = 40;
   std::optional<MeasuredFrame> lastFirstLevel_;
-  std::optional<double> motionIsd_;         // the running load is a session's dataset (DatasetOpened)
-  std::string startPreset_;                 // the main TF a new dataset falls back to from an edited one
+  std::optional<double> motionIsd_;  // the running load is a session's dataset (DatasetOpened)
+  std::string startPreset_;
+  bool viewAdjusting_ =
+      false;  // a Shift+drag on the view is under way (one TF undo step)                 // the main TF a new dataset falls back to from an edited one
   std::optional<Document> offeredSession_;  // "Restore last session" banner
   SessionPanelUi sessionPanel_;
   std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame

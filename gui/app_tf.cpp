@@ -1,5 +1,7 @@
 // TF editing in App: the Transfer function section (gui/panel_tf.h) and what it asks for, the
 // editor's target (main, focus or context) with an undo stack each (gui/tf_targets.h).
+#include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include "gui/app.h"
@@ -15,6 +17,26 @@ void App::applyTf(const TransferFunction& tf, const std::string& preset) {
   tfTargets_.history().push(editedTf());
   commit(TfChange{tfTargets_.editing(), tf, preset});
   tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
+}
+
+// Shift+drag on the view, as Horos and Slicer adjust windows in their views: in DVR right/left
+// moves the edited TF along HU (the safe HU shift, thesis 4.2.2), up/down scales its opacity;
+// in MIP right/left widens/narrows the window, up/down raises/lowers the level.
+void App::adjustByDrag(glm::vec2 px) {
+  constexpr double kHuPerPx = 2, kOpacityPerPx = 0.01, kWindowPerPx = 4, kLevelPerPx = 2;
+  if (doc().mode == Compositing::mip) {
+    const TransferFunction& tf = doc().tf;
+    commit(RenderingEdit{doc().mode, doc().shading, std::max(1.0, tf.mipWindow + px.x * kWindowPerPx),
+                         tf.mipLevel - px.y * kLevelPerPx});
+    return;
+  }
+  TransferFunction tf = editedTf();
+  if (!viewAdjusting_) tfTargets_.history().push(tf);  // the whole drag: one undo step
+  viewAdjusting_ = true;
+  TfModulators& m = tf.modulators;
+  m.huShift = std::clamp(m.huShift + px.x * kHuPerPx, -500.0, 500.0);
+  m.opacityScale = std::clamp(m.opacityScale * std::exp(-px.y * kOpacityPerPx), 0.0, 3.0);
+  commit(TfChange{tfTargets_.editing(), tf, ""});
 }
 
 void App::undoTf() {

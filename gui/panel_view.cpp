@@ -56,7 +56,11 @@ void drawMotion(ViewState& view) {
     view.degreesPerPixel = perPixel;
   if (ImGui::Button("reset zoom/pan")) view.zoom = 1, view.panPx = glm::dvec2(0.0);
   ImGui::SameLine();
-  ImGui::TextDisabled("zoom %.2fx (wheel), pan: right/middle drag", view.zoom);
+  ImGui::TextDisabled("zoom %.2fx (wheel)", view.zoom);
+  helpMarker(
+      "Left drag turns, arrows +-1 deg (Shift +-10), wheel zooms, right or middle drag pans, a "
+      "double-click resets zoom and pan. Shift+left drag adjusts instead of turning: DVR, the "
+      "edited TF's HU shift (left/right) and opacity (up/down); MIP, window and level.");
 }
 
 }  // namespace

@@ -118,7 +118,9 @@ ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& sh
   // batch), not a drag.
   if (ImGui::IsItemActive() && !ImGui::IsItemActivated()) {
     // Grab semantics: dragging right carries the front of the patient to the right.
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && io.KeyShift)
+      result.adjustPx = {io.MouseDelta.x, io.MouseDelta.y};
+    else if (ImGui::IsMouseDown(ImGuiMouseButton_Left))
       result.rotateDegrees = -io.MouseDelta.x * view.degreesPerPixel;
     if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
       view.panPx += glm::dvec2(io.MouseDelta.x, io.MouseDelta.y);

@@ -28,7 +28,9 @@ struct ViewportOverlay {
 };
 
 struct ViewportInteraction {
-  double rotateDegrees = 0;                 // from a left drag this frame
+  double rotateDegrees = 0;  // from a left drag this frame
+  // A Shift+left drag's motion this frame (screen pixels): the TF or the MIP window, not a turn.
+  glm::vec2 adjustPx{0.f};
   std::optional<ViewState> zoomedOrPanned;  // the view with this frame's zoom and pan, if changed
   bool reset = false;                       // double-click: zoom and pan were reset
   ImVec2 min, max;                          // the viewport's screen rectangle

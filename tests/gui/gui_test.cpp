@@ -170,6 +170,34 @@ TEST_F(Gui, LeftDragRotatesAndChangesTheImage) {
   EXPECT_GT(meanDifference(dir / "before.png", dir / "after.png", viewport), 1.0);
 }
 
+// Shift+drag on the view adjusts what is seen instead of turning it: DVR, the edited TF's HU shift
+// (2 HU per pixel right) and opacity modulator (up: more), one undo step for the whole drag; MIP,
+// the window (4 HU per pixel right) and level (2 HU per pixel up).
+TEST_F(Gui, AShiftDragOnTheViewShiftsTheTfOrMovesTheMipWindowInsteadOfTurning) {
+  const std::string drag =
+      R"({"drag": {"from": [300, 300], "to": [340, 280], "steps": 4, "hold": "Shift"}})";
+  GuiRun run = runScript("[" + drag + R"(, {"wait_level": "fast"}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  Json end = readJson(dir / "end.json");
+  EXPECT_DOUBLE_EQ(end["state"]["view"]["angle_deg"].get<double>(), 0);
+  const Json& modulators = end["state"]["transfer_function"]["modulators"];
+  EXPECT_DOUBLE_EQ(modulators["hu_shift"].get<double>(), 80);
+  EXPECT_NEAR(modulators["opacity_scale"].get<double>(), std::exp(0.2), 1e-9);
+  EXPECT_TRUE(end["runtime"]["tf_undo_available"].get<bool>());
+  run = runScript("[" + drag + R"(, {"key": "Ctrl+Z"}, {"wait_level": "fast"}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  end = readJson(dir / "end.json");
+  EXPECT_DOUBLE_EQ(end["state"]["transfer_function"]["modulators"]["hu_shift"].get<double>(), 0);
+  EXPECT_FALSE(end["runtime"]["tf_undo_available"].get<bool>());  // the drag was one step
+
+  run = runScript("[" + drag + R"(, {"wait_level": "fast"}])", " --mip");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json mip = readJson(dir / "end.json")["state"]["transfer_function"]["mip"];
+  const Json start = startupState()["state"]["transfer_function"]["mip"];
+  EXPECT_DOUBLE_EQ(mip["window"].get<double>(), start["window"].get<double>() + 160);
+  EXPECT_DOUBLE_EQ(mip["level"].get<double>(), start["level"].get<double>() + 40);
+}
+
 // The drag's first level fits the motion budget (render/motion_sampling.h): with a budget the
 // small phantom's fast frame is far within, the drag renders at the medium level's isd; with the
 // budget off, at the fast level's. Letting go continues from there to high either way.
