@@ -155,6 +155,7 @@ void readVoxels(const std::filesystem::path& file, itk::ImageIOBase& io, const V
                      [&](double fraction) { report(options, 0.05 + 0.55 * fraction); });
       return;
     } catch (const VoxelStreamError&) {
+      // ITK reads the file again and reports its problem in its own words.
     }
   }
   readAllThroughItk(io, out);

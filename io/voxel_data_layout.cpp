@@ -112,8 +112,18 @@ std::optional<VoxelDataLayout> nrrdLayout(const std::filesystem::path& file,
 }
 
 // ---- NIfTI-1 single file: voxels at vox_offset (of the decompressed stream for .nii.gz).
+// ITK's NIfTI library opens x.nii in place of x.nii.gz when both exist (header and voxels);
+// reading the .gz here would mix the two files.
+bool hasUncompressedTwin(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  if (lowercase(file.extension().string()) != ".gz") return false;
+  std::error_code error;
+  return std::filesystem::exists(name.substr(0, name.size() - 3), error) || error;
+}
+
 std::optional<VoxelDataLayout> niftiLayout(const std::filesystem::path& file,
                                            const StoredDataSize& size) {
+  if (hasUncompressedTwin(file)) return std::nullopt;
   const auto header = readNiftiHeader(file);
   if (!header || header->nifti2 || header->swapped || !header->singleFile) return std::nullopt;
   // ITK scales the values unless the slope is 0 (none) or 1 with no intercept.

@@ -265,5 +265,14 @@ TEST_F(VoxelSlabReaderTest, ScaledOrSwappedNiftiHasNoLayout) {
   }
 }
 
+TEST_F(VoxelSlabReaderTest, NiftiGzBesideItsNiiIsLeftToItk) {
+  // ITK reads v.nii when asked for v.nii.gz if both exist; the layout must not read the .gz then.
+  writeImage<short>(randomImage<short>(5), dir_ / "v.nii.gz", true);
+  ASSERT_TRUE(layoutOf(dir_ / "v.nii.gz").has_value());
+  writeImage<short>(randomImage<short>(6), dir_ / "v.nii", false);
+  EXPECT_FALSE(layoutOf(dir_ / "v.nii.gz").has_value());
+  EXPECT_TRUE(itkBytes(dir_ / "v.nii.gz") == itkBytes(dir_ / "v.nii"));  // the premise
+}
+
 }  // namespace
 }  // namespace angio
