@@ -2,17 +2,13 @@
 
 #include <zlib.h>
 
-#include <algorithm>
-#include <array>
-#include <cstring>
 #include <fstream>
-#include <map>
-#include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "io/input_error.h"
+#include "io/metaimage_header.h"
+#include "io/nifti_header.h"
 
 namespace angio {
 
@@ -24,26 +20,10 @@ namespace {
                              " bytes of voxel data, the file holds " + std::to_string(found));
 }
 
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  const auto last = text.find_last_not_of(" \t\r");
-  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
-}
-
-// ---- MetaImage: a text header of "Key = Value" lines ending with ElementDataFile; LOCAL data
-// follows that line directly.
+// ---- MetaImage: LOCAL data follows the header; a data file may skip HeaderSize bytes.
 void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t voxelBytes) {
-  std::ifstream in(file, std::ios::binary);
-  std::map<std::string, std::string> fields;
-  std::string line;
-  for (int lines = 0; lines < 4096 && std::getline(in, line); ++lines) {
-    const auto equals = line.find('=');
-    if (equals == std::string::npos) continue;
-    const std::string key = trimmed(line.substr(0, equals));
-    fields[key] = trimmed(line.substr(equals + 1));
-    if (key == "ElementDataFile") break;
-  }
-  const auto field = [&](const char* key) { return fields.count(key) ? fields[key] : std::string(); };
+  const MetaImageHeader header = readMetaImageHeader(file);
+  const auto field = [&](const char* key) { return header.field(key); };
   if (field("ElementDataFile").empty() || field("BinaryData") == "False") return;
   const bool compressed = field("CompressedData") == "True";
   std::uint64_t expected = voxelBytes;
@@ -57,8 +37,8 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
   std::uint64_t found = 0;
   const std::string dataFile = field("ElementDataFile");
   if (dataFile == "LOCAL") {
-    if (!in) return;
-    const std::uint64_t dataStart = std::uint64_t(in.tellg());
+    if (!header.dataStart) return;
+    const std::uint64_t dataStart = *header.dataStart;
     const std::uint64_t size = std::filesystem::file_size(file);
     found = size > dataStart ? size - dataStart : 0;
   } else {
@@ -78,47 +58,6 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
     if (headerBytes > 0) found = found > std::uint64_t(headerBytes) ? found - headerBytes : 0;
   }
   if (found < expected) truncated(file, expected, found);
-}
-
-// ---- NIfTI-1/-2: a binary header giving the data offset, dims and bits per voxel; .nii.gz is the
-// same gzip-compressed. zlib's gz* functions read plain files too.
-template <class T>
-T fieldAt(const std::array<unsigned char, 540>& header, std::size_t offset, bool swap) {
-  std::array<unsigned char, sizeof(T)> bytes;
-  std::memcpy(bytes.data(), header.data() + offset, sizeof(T));
-  if (swap) std::reverse(bytes.begin(), bytes.end());
-  T value;
-  std::memcpy(&value, bytes.data(), sizeof(T));
-  return value;
-}
-
-struct NiftiLayout {
-  std::uint64_t dataOffset = 0;
-  std::uint64_t dataBytes = 0;
-};
-
-std::optional<NiftiLayout> niftiLayout(const std::array<unsigned char, 540>& header, int headerBytes) {
-  for (bool swap : {false, true}) {
-    const std::int32_t size = fieldAt<std::int32_t>(header, 0, swap);
-    const bool nifti2 = size == 540;
-    if (size != 348 && !nifti2) continue;
-    if (nifti2 && headerBytes < 540) return std::nullopt;
-    const int rank =
-        nifti2 ? int(fieldAt<std::int64_t>(header, 16, swap)) : fieldAt<std::int16_t>(header, 40, swap);
-    const int bitsPerVoxel = fieldAt<std::int16_t>(header, nifti2 ? 14 : 72, swap);
-    if (rank < 1 || rank > 7 || bitsPerVoxel <= 0) return std::nullopt;
-    double voxels = 1.0;
-    for (int d = 1; d <= rank; ++d) {
-      const double n = nifti2 ? double(fieldAt<std::int64_t>(header, 16 + 8 * d, swap))
-                              : double(fieldAt<std::int16_t>(header, 40 + 2 * d, swap));
-      voxels *= std::max(n, 1.0);
-    }
-    const double offset = nifti2 ? double(fieldAt<std::int64_t>(header, 168, swap))
-                                 : double(fieldAt<float>(header, 108, swap));
-    if (!(offset >= 0.0) || voxels * bitsPerVoxel / 8 > 1e18) return std::nullopt;
-    return NiftiLayout{std::uint64_t(offset), std::uint64_t(voxels * bitsPerVoxel / 8)};
-  }
-  return std::nullopt;
 }
 
 // Uncompressed length of a gzip file: the trailer's ISIZE (length mod 2^32) when it matches
@@ -146,20 +85,15 @@ std::uint64_t gzipLength(const std::filesystem::path& file, std::uint64_t expect
   return length;
 }
 
+// ---- NIfTI-1/-2: the header gives the data offset and size; .nii.gz is gzip-compressed.
 void requireCompleteNifti(const std::filesystem::path& file) {
-  gzFile gz = gzopen(file.c_str(), "rb");
-  if (!gz) return;
-  std::array<unsigned char, 540> header{};
-  const int headerBytes = gzread(gz, header.data(), unsigned(header.size()));
-  const bool compressed = gzdirect(gz) == 0;
-  gzclose(gz);
-  if (headerBytes < 348) return;  // the reader reports the broken header itself
-  const auto layout = niftiLayout(header, headerBytes);
-  if (!layout) return;
-  const std::uint64_t expected = layout->dataOffset + layout->dataBytes;
-  const std::uint64_t found = compressed ? gzipLength(file, expected) : std::filesystem::file_size(file);
+  const auto header = readNiftiHeader(file);
+  if (!header) return;  // the reader reports the broken header itself
+  const std::uint64_t expected = header->dataOffset + header->dataBytes;
+  const std::uint64_t found =
+      header->compressed ? gzipLength(file, expected) : std::filesystem::file_size(file);
   if (found < expected)
-    truncated(file, layout->dataBytes, found > layout->dataOffset ? found - layout->dataOffset : 0);
+    truncated(file, header->dataBytes, found > header->dataOffset ? found - header->dataOffset : 0);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -313,16 +314,77 @@ TEST_F(VolumeReaderTest, NanAndInfinityBecomeMinus1024WithWarning) {
   expectOneWarning(read.warnings, {"3 voxels"});
 }
 
-TEST_F(VolumeReaderTest, ReportsProgressFromStartToEnd) {
-  const fs::path file = writeAsymmetric("p.mha");
+// Every progress report of reading `file`.
+std::vector<double> progressReports(const fs::path& file) {
   std::vector<double> reports;
   ReadOptions options;
   options.progress = [&](double p) { reports.push_back(p); };
   readVolume(file, options);
+  return reports;
+}
+
+TEST_F(VolumeReaderTest, ReportsProgressFromStartToEnd) {
+  const std::vector<double> reports = progressReports(writeAsymmetric("p.mha"));
   ASSERT_GE(reports.size(), 2u);
   EXPECT_EQ(reports.front(), 0.0);
   EXPECT_EQ(reports.back(), 1.0);
   EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
+}
+
+// A 64 x 64 x 256 volume in each single-file format, raw and compressed.
+std::vector<fs::path> writeTallVolumes(const fs::path& folder) {
+  const auto image = makeImage<short>({64, 64, 256}, [](auto i) { return i[0] + i[1] - i[2]; });
+  std::vector<fs::path> files;
+  for (const char* name : {"z.mha", "r.mha", "z.nrrd", "r.nrrd", "r.nii", "z.nii.gz"}) {
+    files.push_back(folder / name);
+    writeImage(image.GetPointer(), files.back(), name[0] == 'z');
+  }
+  return files;
+}
+
+TEST_F(VolumeReaderTest, SingleFileFormatsReportProgressWhileReadingVoxels) {
+  for (const fs::path& file : writeTallVolumes(dir_)) {
+    SCOPED_TRACE(file.filename().string());
+    const std::vector<double> reports = progressReports(file);
+    EXPECT_GE(reports.size(), 50u);
+    EXPECT_EQ(reports.front(), 0.0);
+    EXPECT_EQ(reports.back(), 1.0);
+    EXPECT_TRUE(std::adjacent_find(reports.begin(), reports.end(), std::greater_equal<>()) ==
+                reports.end())
+        << "not strictly increasing";
+  }
+}
+
+TEST_F(VolumeReaderTest, CancelStopsASingleFileReadAfterItsFirstSlab) {
+  for (const fs::path& file : writeTallVolumes(dir_)) {
+    SCOPED_TRACE(file.filename().string());
+    std::vector<double> reports;
+    ReadOptions options;
+    options.progress = [&](double p) {
+      reports.push_back(p);
+      if (reports.size() == 3) throw LoadCancelled();
+    };
+    EXPECT_THROW(readVolume(file, options), LoadCancelled);
+    ASSERT_EQ(reports.size(), 3u);  // nothing reported after the cancel
+    // The 3rd report (after "started" and "header read") comes a slab into the voxels, not after all.
+    EXPECT_LT(reports[2], 0.1);
+  }
+}
+
+TEST_F(VolumeReaderTest, NiftiScalingIsApplied) {
+  const fs::path file = writeAsymmetric("scaled.nii");
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const float slope = 2.0f, intercept = 10.0f;  // scl_slope and scl_inter of the NIfTI-1 header
+  std::memcpy(bytes.data() + 112, &slope, 4);
+  std::memcpy(bytes.data() + 116, &intercept, 4);
+  writeText(file, bytes);
+  const Volume v = readVolume(file).volume;
+  for (const std::array<int, 3> i : {std::array<int, 3>{0, 0, 0}, {3, 2, 1}, {1, 2, 0}})
+    EXPECT_EQ(v.densityAt(i[0], i[1], i[2]), 2 * asymmetricHu(i) + 10 + 1024);
 }
 
 TEST_F(VolumeReaderTest, LabelsOnTheSameGridGoToTheLabelBits) {

@@ -1,0 +1,24 @@
+#pragma once
+// A MetaImage (.mha/.mhd) header as text fields: "Key = Value" lines up to ElementDataFile, which
+// MetaIO requires to be the last field; LOCAL voxel data starts on the line after it.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace angio {
+
+struct MetaImageHeader {
+  std::map<std::string, std::string> fields;  // values trimmed of blanks
+  // Offset of the byte after the ElementDataFile line; empty if the header has no such line.
+  std::optional<std::uint64_t> dataStart;
+  bool dataLineEndsWithCr = false;  // a CRLF header: where MetaIO starts its data is less certain
+
+  // The field's value, or "" if the header does not have it.
+  std::string field(const std::string& key) const;
+};
+
+MetaImageHeader readMetaImageHeader(const std::filesystem::path& file);
+
+}  // namespace angio

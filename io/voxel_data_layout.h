@@ -1,0 +1,36 @@
+#pragma once
+// Where a single-file volume's voxel bytes lie (MetaImage, NRRD, NIfTI), read from its header, for
+// the files whose voxels io/ decodes itself (voxel_slab_reader.h): one block, raw or one zlib/gzip
+// stream, in this machine's byte order, holding exactly the values ITK would return. Anything else
+// (ASCII or bzip2 data, file lists, line or byte skips, the other byte order, NIfTI scaling, which
+// ITK applies while reading) has no layout here and is left to ITK's own reader.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include "io/volume_formats.h"
+
+namespace angio {
+
+enum class VoxelEncoding {
+  raw,
+  deflate,  // a zlib or gzip stream (or several gzip members), told apart by its first bytes
+};
+
+struct VoxelDataLayout {
+  std::filesystem::path dataFile;
+  std::uint64_t fileOffset = 0;  // where the raw data or the compressed stream starts
+  VoxelEncoding encoding = VoxelEncoding::raw;
+  std::uint64_t skipBytes = 0;  // decoded bytes before the first voxel (a .nii.gz's header)
+};
+
+// The voxel data's size as ITK reports it for the header.
+struct StoredDataSize {
+  std::uint64_t voxelBytes = 0;
+  unsigned componentBytes = 0;
+};
+
+std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,
+                                               const StoredDataSize& size);
+
+}  // namespace angio

@@ -1,0 +1,29 @@
+#pragma once
+// Reading a volume file's voxel bytes from a VoxelDataLayout in slabs of whole slices, raw or
+// inflated with zlib, straight into the caller's buffer: a load reports progress and can be stopped
+// between slabs, where ITK reads a single-file volume in one call that neither reports nor stops.
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+
+#include "io/voxel_data_layout.h"
+
+namespace angio {
+
+// The data cannot be opened, ends early or does not decode.
+struct VoxelStreamError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct SlabbedVoxels {
+  std::uint64_t sliceBytes = 0;
+  std::uint64_t slices = 0;
+};
+
+// Fills out[0, sliceBytes * slices) with the voxel bytes, then leaves the rest of the file unread.
+// Calls betweenSlabs(fraction read so far) after every slab but the last; it may throw to stop the
+// read. Throws VoxelStreamError on bad data.
+void readVoxelSlabs(const VoxelDataLayout& layout, const SlabbedVoxels& voxels, char* out,
+                    const std::function<void(double)>& betweenSlabs);
+
+}  // namespace angio
