@@ -124,6 +124,13 @@ bool App::popupOpen() const {
   return ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }
 
+double App::fitViewZoom() const {
+  const ImVec2 size(viewport_.max.x - viewport_.min.x, viewport_.max.y - viewport_.min.y);
+  if (size.x <= 0 || size.y <= 0) return 1;
+  const ViewState& view = doc().view;
+  return zoomToFitView(domainExtent(data_.volume), view.axis, view.angleDeg, glm::dvec2(size.x, size.y));
+}
+
 void App::handleKeys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput || popupOpen()) return;

@@ -122,6 +122,7 @@ class App {
   const Document& doc() const { return workstation_.document(); }
   void commit(const Edit& edit);  // to workstation_.apply: every change of the document
   bool popupOpen() const;
+  double fitViewZoom() const;  // "fit view": the current view filling the viewport
   template <class PanelEdit>
   void commit(const std::optional<PanelEdit>& edit) {
     if (edit) commit(Edit{*edit});

@@ -22,7 +22,7 @@ void App::drawSidePanel() {
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
   ImGui::Begin("##panel", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
   drawDataSection();
-  if (sectionHeader("View")) commit(drawViewPanel(doc().view));
+  if (sectionHeader("View")) commit(drawViewPanel(doc().view, fitViewZoom()));
   drawTfSection();
   drawVesselSection();
   drawCprSection();

@@ -44,7 +44,7 @@ void drawAxisAndAngle(ViewState& view) {
   }
 }
 
-void drawMotion(ViewState& view) {
+void drawMotion(ViewState& view, double fitZoom) {
   ImGui::Checkbox("auto-spin", &view.autoSpin);
   ImGui::SameLine();
   float spin = float(view.spinDegreesPerSecond);
@@ -56,6 +56,10 @@ void drawMotion(ViewState& view) {
     view.degreesPerPixel = perPixel;
   if (ImGui::Button("reset zoom/pan")) view.zoom = 1, view.panPx = glm::dvec2(0.0);
   ImGui::SameLine();
+  if (ImGui::Button("fit view")) view.zoom = fitZoom, view.panPx = glm::dvec2(0.0);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Zoom so the volume as seen now fills the viewport; turning keeps the zoom");
+  ImGui::SameLine();
   ImGui::TextDisabled("zoom %.2fx (wheel)", view.zoom);
   helpMarker(
       "Left drag turns, arrows +-1 deg (Shift +-10), wheel zooms, right or middle drag pans, a "
@@ -65,10 +69,10 @@ void drawMotion(ViewState& view) {
 
 }  // namespace
 
-std::optional<ViewEdit> drawViewPanel(const ViewState& view) {
+std::optional<ViewEdit> drawViewPanel(const ViewState& view, double fitZoom) {
   ViewState edited = view;
   drawAxisAndAngle(edited);
-  drawMotion(edited);
+  drawMotion(edited, fitZoom);
   if (edited == view) return std::nullopt;
   return ViewEdit{edited};
 }

@@ -7,6 +7,7 @@
 
 namespace angio {
 
-std::optional<ViewEdit> drawViewPanel(const ViewState& view);
+// `fitZoom`: the zoom of "fit view" (the current view filling the viewport, zoomToFitView).
+std::optional<ViewEdit> drawViewPanel(const ViewState& view, double fitZoom = 1);
 
 }  // namespace angio

@@ -86,6 +86,17 @@ OrientationLetters orientationLetters(Axis axis, double angleDeg) {
   return {lpsLetter(right), lpsLetter(-right), lpsLetter(up), lpsLetter(-up)};
 }
 
+double zoomToFitView(glm::dvec3 extentMm, Axis axis, double angleDeg, glm::dvec2 sizePx) {
+  const int a = int(axis), b = (a + 1) % 3, c = (a + 2) % 3;
+  const double t = angleDeg * std::acos(-1.0) / 180;
+  const double across = std::max(std::hypot(extentMm[b], extentMm[c]), 1e-3);
+  const double wide =
+      std::max(extentMm[b] * std::abs(std::cos(t)) + extentMm[c] * std::abs(std::sin(t)), 1e-3);
+  const double high = std::max(extentMm[a], 1e-3);
+  const double atZoomOne = std::min(sizePx.x / across, sizePx.y / high);
+  return std::min(sizePx.x / wide, sizePx.y / high) / atZoomOne;
+}
+
 double scaleBarMm(double pixelsPerMm, double targetPx) {
   const double target = targetPx / std::max(pixelsPerMm, 1e-9);
   const double power = std::pow(10.0, std::floor(std::log10(target)));

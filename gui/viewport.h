@@ -49,6 +49,11 @@ struct OrientationLetters {
 };
 OrientationLetters orientationLetters(Axis axis, double angleDeg);
 
+// The zoom at which the view at `angleDeg` about `axis` fills a viewport of `sizePx`: the
+// domain's projection (E_b |cos t| + E_c |sin t| wide, E_a high) rather than zoom 1's
+// rotation-proof fit to hypot(E_b, E_c), so an elongated volume seen across fills the width.
+double zoomToFitView(glm::dvec3 extentMm, Axis axis, double angleDeg, glm::dvec2 sizePx);
+
 // A scale bar length (mm) of 1, 2 or 5 times a power of ten, about `targetPx` long on screen.
 double scaleBarMm(double pixelsPerMm, double targetPx);
 

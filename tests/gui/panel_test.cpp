@@ -1,5 +1,6 @@
 // The side panel's sections as functions: drawn in an ImGui context with no window or renderer
 // behind it, driven by mouse input over a few frames; what they return is checked, and applied.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -542,6 +543,17 @@ TEST_F(GuiPanels, TheLastMovieAndARunningSeriesTakeTheSameRows) {
   EXPECT_EQ(bottomAfter(draw), none);
   job.running = true;
   EXPECT_EQ(bottomAfter(draw), none);
+}
+
+TEST(GuiViewport, FitViewFillsTheViewportWithTheVolumeAsSeenNow) {
+  // The aorta's domain about k: 138 mm wide at 0 deg, 345 mm at 90, hypot 371; 51 mm high.
+  const glm::dvec3 extent(138, 345, 51);
+  const glm::dvec2 viewport(570, 970);
+  const double atZoomOne = std::min(570 / std::hypot(138.0, 345.0), 970 / 51.0);
+  EXPECT_NEAR(zoomToFitView(extent, Axis::k, 0, viewport), (570 / 138.0) / atZoomOne, 1e-12);
+  EXPECT_NEAR(zoomToFitView(extent, Axis::k, 90, viewport), (570 / 345.0) / atZoomOne, 1e-9);
+  // A viewport too short for the height: the height decides, at every angle alike.
+  EXPECT_DOUBLE_EQ(zoomToFitView(extent, Axis::k, 0, {5000, 100}), 1);
 }
 
 TEST(GuiOrientation, LpsLettersNameTheDominantAxisAndATieGoesToTheEarlierAxis) {
