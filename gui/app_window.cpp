@@ -166,7 +166,8 @@ int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& option
     // (e.g. Xvfb) the display rate is about 60 frames per second, and input or a published frame
     // ends that wait too: sleeping through either would add up to a display frame to what the
     // hand waits for.
-    switch (app.pacing()) {
+    const FramePacing pacing = app.pacing();
+    switch (pacing) {
       case FramePacing::continuous: {
         const double rest = kFrameMs - Ms(Clock::now() - previousStart).count();
         if (rest > 0) glfwWaitEventsTimeout(rest / 1000);
@@ -176,7 +177,7 @@ int runWindow(LoadedDataset dataset, AppStart start, const WindowOptions& option
       case FramePacing::progress: glfwWaitEventsTimeout(0.1); break;
       case FramePacing::idle: idle.wait(untilQuit(options, opened)); break;
     }
-    if (app.pacing() != FramePacing::idle) idle.busy();
+    if (pacing != FramePacing::idle) idle.busy();
     const auto start = Clock::now();
     previousStart = start;
     ImGui_ImplOpenGL3_NewFrame();

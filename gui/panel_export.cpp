@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -44,15 +45,17 @@ void drawSeriesFormat(SeriesSpec& spec) {
 }
 
 // The start button, or in its place (same row) the question whether to overwrite what is there:
-// a click on the button asks first when `overwrites`; `confirming` holds what was asked about.
-bool drawStartOrConfirm(const char* label, const char* name, const std::string& target, bool overwrites,
-                        std::string& confirming, WidgetRects& rects) {
+// a click on the button asks first when `overwrites()` (asked on the click only: it looks at the
+// disk); `confirming` holds what was asked about.
+bool drawStartOrConfirm(const char* label, const char* name, const std::string& target,
+                        const std::function<bool()>& overwrites, std::string& confirming,
+                        WidgetRects& rects) {
   if (!confirming.empty() && confirming != target) confirming.clear();  // the field changed
   if (confirming.empty()) {
     const bool clicked = ImGui::Button(label);
     noteRect(rects, name);
     if (!clicked) return false;
-    if (!overwrites) return true;
+    if (!overwrites()) return true;
     confirming = target;
     return false;
   }
@@ -107,8 +110,9 @@ ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRect
     requests.cancel = ImGui::SmallButton("cancel##export");
     return requests;
   }
-  requests.start = drawStartOrConfirm("Export image", "export_button", ui.path,
-                                      exportWouldOverwrite(ui.path), ui.confirmingPath, rects);
+  requests.start = drawStartOrConfirm(
+      "Export image", "export_button", ui.path, [&] { return exportWouldOverwrite(ui.path); },
+      ui.confirmingPath, rects);
   return requests;
 }
 
@@ -134,9 +138,10 @@ ExportRequests drawSeriesExport(SeriesPanel& series, const JobInfo& job, WidgetR
     drawMessageRow({});  // the last movie's row
     return requests;
   }
-  requests.start = drawStartOrConfirm("Export rotation series", "series_button", series.folder,
-                                      seriesWouldOverwrite(series.folder, series.spec.prefix),
-                                      series.confirmingFolder, rects);
+  requests.start = drawStartOrConfirm(
+      "Export rotation series", "series_button", series.folder,
+      [&] { return seriesWouldOverwrite(series.folder, series.spec.prefix); }, series.confirmingFolder,
+      rects);
   drawMessageRow(
       {{MessageKind::note, series.movieNote.empty() ? "" : "last movie: " + series.movieNote}});
   return requests;
