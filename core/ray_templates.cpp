@@ -15,9 +15,10 @@ int tileOf(double q, int n) { return cellBase(q, n) / kTileSize; }
 
 std::vector<TileRun> columnRuns(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles,
                                 int x) {
-  // Any row inside the axis extent has the same in-plane samples; use the middle one.
+  // Any row inside the axis extent has the same in-plane samples; use the domain's middle (not
+  // the image's, which an image window may move above or below the domain).
   glm::dvec3 origin = view.rayOrigin(x, 0);
-  origin[view.axis] = view.centre[view.axis];
+  origin[view.axis] = view.extent[view.axis] * 0.5;
   const SampleRange range = sampleRange(view, origin);
   const int nb = volume.dims[tiles.axisB], nc = volume.dims[tiles.axisC];
   const RaySamples positions(volume, view, origin);

@@ -9,6 +9,14 @@ double wrapDegrees(double degrees) {
   return wrapped < 0 ? wrapped + 360.0 : wrapped;
 }
 
+std::string imageWindowProblem(const ImageWindow& w) {
+  for (double mm : {w.leftMm, w.rightMm, w.bottomMm, w.topMm})
+    if (!std::isfinite(mm)) return "the image window's bounds must be finite numbers (mm)";
+  if (!(w.leftMm < w.rightMm) || !(w.bottomMm < w.topMm))
+    return "the image window must have left < right and bottom < top";
+  return "";
+}
+
 Sampling qualitySampling(Quality quality) {
   switch (quality) {
     case Quality::fast: return {3.0, 1.0, Filter::mean, 0.98};

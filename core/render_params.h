@@ -36,6 +36,20 @@ struct MipWindow {
   friend bool operator==(const MipWindow&, const MipWindow&) = default;
 };
 
+// A part of the image plane to render instead of the whole image (rendering model, View): mm
+// about P0 along image right (h) and up (v). Its pixels are the whole image's (same D, same pixel
+// centres), cut to the whole image: the pixels that overlap the window. So a window renders
+// exactly those pixels of the whole image, and a zoomed view renders only what it shows.
+struct ImageWindow {
+  double leftMm = 0, rightMm = 0;  // h
+  double bottomMm = 0, topMm = 0;  // v
+
+  friend bool operator==(const ImageWindow&, const ImageWindow&) = default;
+};
+
+// Why `window` cannot be rendered (non-finite, or empty), or "".
+std::string imageWindowProblem(const ImageWindow& window);
+
 struct RenderParams {
   Axis axis = Axis::k;
   double angleDeg = 0;
@@ -43,7 +57,8 @@ struct RenderParams {
   Shading shading;
   Compositing compositing = Compositing::dvr;
   MipWindow mip;
-  ViewClipping clipping;  // crop box, clip plane, thick slab (none: the whole volume)
+  ViewClipping clipping;              // crop box, clip plane, thick slab (none: the whole volume)
+  std::optional<ImageWindow> window;  // none: the whole image
 
   friend bool operator==(const RenderParams&, const RenderParams&) = default;
 };

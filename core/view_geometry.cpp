@@ -1,5 +1,6 @@
 #include "core/view_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,19 @@ glm::dvec3 unitAxis(int index) {
   glm::dvec3 e(0.0);
   e[index] = 1.0;
   return e;
+}
+
+// Makes `view` the window's: its pixels, and the centre moved so that rayOrigin(x, y) is the whole
+// image's rayOrigin(windowX + x, windowY + y).
+void applyWindow(ViewGeometry& view, const ImageWindow& window) {
+  const PixelSpan span = windowPixels(window, view.wholeWidth, view.wholeHeight, view.pixelMm);
+  view.windowX = span.x0;
+  view.windowY = span.y0;
+  view.width = span.x1 - span.x0;
+  view.height = span.y1 - span.y0;
+  const double h = (span.x0 + view.width * 0.5 - view.wholeWidth * 0.5) * view.pixelMm;
+  const double v = (view.wholeHeight * 0.5 - span.y0 - view.height * 0.5) * view.pixelMm;
+  view.centre += h * view.right + v * view.up;
 }
 
 }  // namespace
@@ -32,9 +46,24 @@ ViewGeometry makeViewGeometry(const Volume& volume, const RenderParams& params) 
   view.extent = domainExtent(volume);
   view.centre = view.extent * 0.5;
   const double diagonal = std::hypot(view.extent[view.axisB], view.extent[view.axisC]);
-  view.width = std::max(1, int(std::ceil(diagonal / view.pixelMm)));
-  view.height = std::max(1, int(std::ceil(view.extent[view.axis] / view.pixelMm)));
+  view.wholeWidth = view.width = std::max(1, int(std::ceil(diagonal / view.pixelMm)));
+  view.wholeHeight = view.height = std::max(1, int(std::ceil(view.extent[view.axis] / view.pixelMm)));
+  if (params.window) applyWindow(view, *params.window);
   return view;
+}
+
+PixelSpan windowPixels(const ImageWindow& window, int wholeWidth, int wholeHeight, double pixelMm) {
+  // Pixel x covers h in [(x - W/2) D, (x + 1 - W/2) D); row y covers v in ((H/2 - y - 1) D, (H/2 - y) D].
+  const auto cut = [](double first, double end, int size, int& from, int& to) {
+    from = int(std::clamp(std::floor(first), 0.0, size - 1.0));
+    to = int(std::clamp(std::ceil(end), from + 1.0, double(size)));
+  };
+  PixelSpan span;
+  cut(window.leftMm / pixelMm + wholeWidth * 0.5, window.rightMm / pixelMm + wholeWidth * 0.5,
+      wholeWidth, span.x0, span.x1);
+  cut(wholeHeight * 0.5 - window.topMm / pixelMm, wholeHeight * 0.5 - window.bottomMm / pixelMm,
+      wholeHeight, span.y0, span.y1);
+  return span;
 }
 
 glm::dvec3 ViewGeometry::rayOrigin(int x, int y) const {

@@ -157,9 +157,15 @@ void App::drawViewportWindow() {
   ImGui::PopStyleVar();
 
   ViewportImage image;
-  if (shown_ && !texture_.empty())
-    image = {texture_.id(), shown_->image->width, shown_->image->height,
-             shown_->params.sampling.isd * voxelUnit(data_.volume)};
+  if (shown_ && !texture_.empty()) {
+    const ViewGeometry geometry = makeViewGeometry(data_.volume, shown_->params);
+    const glm::dvec3 offset = geometry.centre - geometry.extent * 0.5;
+    image = {texture_.id(),
+             shown_->image->width,
+             shown_->image->height,
+             geometry.pixelMm,
+             {glm::dot(offset, geometry.right), glm::dot(offset, geometry.up)}};
+  }
   viewport_ = drawViewport(image.texture ? &image : nullptr, doc().view, viewportOverlay());
   if (viewport_.zoomedOrPanned) commit(ViewEdit{*viewport_.zoomedOrPanned});
   drawCenterlineOverlay();
@@ -193,6 +199,23 @@ ViewportOverlay App::viewportOverlay() const {
                 shown_->image->width, shown_->image->height, s.isd, s.osd, toString(s.filter));
   overlay.levelLabel = label;
   return overlay;
+}
+
+ViewportFit App::viewportFit() const {
+  return {glm::dvec2(viewport_.max.x - viewport_.min.x, viewport_.max.y - viewport_.min.y),
+          viewportOverlay().fitMm};
+}
+
+RenderParams App::zoomedViewParams() const {
+  RenderParams params = viewParams();
+  params.window = visibleWindow(doc().view, viewportFit());
+  return params;
+}
+
+LevelSamplings App::zoomedLevelSamplings() const {
+  const double perMm = viewportPixelsPerMm(viewportFit(), doc().view.zoom);
+  const double screenIsd = perMm > 0 ? 1 / (perMm * voxelUnit(data_.volume)) : 0;
+  return zoomedLevels(doc().levels, doc().view.zoom, screenIsd);
 }
 
 FramePacing App::pacing() const {

@@ -39,6 +39,7 @@
 #include "gui/tf_editor.h"
 #include "gui/tf_targets.h"
 #include "gui/viewport.h"
+#include "gui/zoomed_rendering.h"
 #include "gui/workstation.h"
 #include "render/recipe_json.h"
 #include "io/tf_file.h"
@@ -132,6 +133,10 @@ class App {
   void handleKeys();
   void drawViewportWindow();
   ViewportOverlay viewportOverlay() const;
+  ViewportFit viewportFit() const;  // the viewport's size (last drawn) and the fit at zoom 1
+  // What the window renders of the view: the visible window and each level's isd at the zoom.
+  RenderParams zoomedViewParams() const;
+  LevelSamplings zoomedLevelSamplings() const;
   // The render-request path (gui/app_render_request.cpp): reads the document, never writes it.
   std::unique_ptr<ProgressiveRenderer> makeRenderer();
   void pollRenderer();

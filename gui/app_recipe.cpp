@@ -91,8 +91,12 @@ RenderParams App::viewParams() const {
 }
 
 RenderRecipe App::exportRecipe() const {
-  RenderRecipe recipe = exportSidecar(doc(), data_.name, export_.ui.isd);
-  recipe.params.clipping = viewParams().clipping;
+  // What the window shows: a zoomed view's visible part, at the export's isd over the zoom.
+  RenderRecipe recipe =
+      exportSidecar(doc(), data_.name, export_.ui.isd / std::max(doc().view.zoom, 1.0));
+  const RenderParams view = zoomedViewParams();
+  recipe.params.clipping = view.clipping;
+  recipe.params.window = view.window;
   recipe.labels = exportLabelFile();
   if (!scene_) return recipe;  // nothing rendered yet: plain DVR/MIP
   recipe.vesselGlyph = scene_->recipe().vesselGlyph;

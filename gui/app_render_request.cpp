@@ -62,9 +62,9 @@ void App::pollRenderer() {
 void App::requestRender(bool interactive) {
   ProgressiveRequest request;
   request.scene = currentScene();
-  request.params = viewParams();
+  request.params = zoomedViewParams();
   request.interactive = interactive;
-  request.levels = doc().levels;
+  request.levels = zoomedLevelSamplings();
   if (interactive) motionIsd_ = motionSampling(request.levels, lastFirstLevel_, motionBudgetMs_).isd;
   if (motionIsd_) request.levels[int(Quality::fast)].isd = *motionIsd_;
   if (lastRequest_ && *lastRequest_ == request) return;

@@ -10,7 +10,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinZoom = 0.1, kMaxZoom = 64;
-constexpr float kFitMargin = 0.95f;  // leave room for the letters at zoom 1
 
 void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 color, const char* text) {
   draw->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
@@ -147,12 +146,12 @@ ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& sh
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(min, max, true);
   draw->AddRectFilled(min, max, IM_COL32(0, 0, 0, 255));
-  const double fit = std::min(size.x / overlay.fitMm.x, size.y / overlay.fitMm.y) * kFitMargin;
-  const double pixelsPerMm = fit * view.zoom;
-  const ImVec2 centre(centreOfViewport.x + float(view.panPx.x),
-                      centreOfViewport.y + float(view.panPx.y));
+  const double pixelsPerMm = viewportPixelsPerMm({glm::dvec2(size.x, size.y), overlay.fitMm}, view.zoom);
   if (image && image->texture) {
-    // The image centre is P0 whatever W and H (rendering model), so every level lines up.
+    // The image centre is P0 whatever W and H (rendering model), so every level lines up; an
+    // image window's centre is off P0 by its offset.
+    const ImVec2 centre(centreOfViewport.x + float(view.panPx.x + image->centreMm.x * pixelsPerMm),
+                        centreOfViewport.y + float(view.panPx.y - image->centreMm.y * pixelsPerMm));
     const float halfW = float(image->width * image->pixelMm * pixelsPerMm / 2);
     const float halfH = float(image->height * image->pixelMm * pixelsPerMm / 2);
     const ImVec2 imageMin(centre.x - halfW, centre.y - halfH),

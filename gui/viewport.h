@@ -10,6 +10,7 @@
 
 #include "core/render_params.h"
 #include "gui/document.h"
+#include "gui/zoomed_rendering.h"
 
 namespace angio {
 
@@ -18,6 +19,7 @@ struct ViewportImage {
   ImTextureID texture = nullptr;
   int width = 0, height = 0;  // pixels
   double pixelMm = 0;         // D
+  glm::dvec2 centreMm{0.0};   // the image's centre from P0 (h right, v up): an image window's
 };
 
 // What to draw around the image.

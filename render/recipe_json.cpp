@@ -49,6 +49,17 @@ Json hybridJson(const HybridCprRecipe& hybrid) {
 Json vectorJson(glm::dvec3 v) { return Json::array({v.x, v.y, v.z}); }
 
 // Each part null when off (render/recipe_json.h).
+// The window only when there is one, so sidecars of whole images stay as they were.
+Json viewJson(const RenderParams& p) {
+  Json view = {{"axis", toString(p.axis)}, {"angle_deg", p.angleDeg}};
+  if (p.window)
+    view["window"] = {{"left_mm", p.window->leftMm},
+                      {"right_mm", p.window->rightMm},
+                      {"bottom_mm", p.window->bottomMm},
+                      {"top_mm", p.window->topMm}};
+  return view;
+}
+
 Json clippingJson(const ViewClipping& c) {
   Json json = {{"crop", nullptr}, {"plane", nullptr}, {"slab", nullptr}};
   if (c.crop)
@@ -204,11 +215,24 @@ ViewClipping readClipping(const Reader& r, const Json& json) {
   return c;
 }
 
+// Absent (the whole image) in sidecars of unzoomed views and those written before windows existed.
+std::optional<ImageWindow> readWindow(const Reader& r, const Json& view) {
+  if (!view.contains("window")) return std::nullopt;
+  const Json& json = r.at(view, "window", "view.");
+  const std::string where = "view.window.";
+  const ImageWindow window{r.number(json, "left_mm", where), r.number(json, "right_mm", where),
+                           r.number(json, "bottom_mm", where), r.number(json, "top_mm", where)};
+  if (const std::string problem = imageWindowProblem(window); !problem.empty())
+    throw InputError(r.source, "\"view.window\": " + problem);
+  return window;
+}
+
 RenderParams readParams(const Reader& r, const Json& json) {
   RenderParams p;
   const Json& view = r.at(json, "view", "");
   p.axis = r.choice(view, "axis", parseAxis, "view.");
   p.angleDeg = r.number(view, "angle_deg", "view.");
+  p.window = readWindow(r, view);
   const Json& sampling = r.at(json, "sampling", "");
   p.sampling.isd = r.number(sampling, "isd", "sampling.");
   p.sampling.osd = r.number(sampling, "osd", "sampling.");
@@ -309,7 +333,7 @@ std::string renderSidecarJson(const RenderRecipe& s) {
       {"labels", s.labels},
       {"quality", s.quality ? Json(toString(*s.quality)) : Json(nullptr)},
       {"raycaster", s.raycaster == Raycaster::reference ? "reference" : "fast"},
-      {"view", {{"axis", toString(p.axis)}, {"angle_deg", p.angleDeg}}},
+      {"view", viewJson(p)},
       {"sampling",
        {{"isd", p.sampling.isd},
         {"osd", p.sampling.osd},

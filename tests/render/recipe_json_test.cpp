@@ -159,6 +159,24 @@ TEST_F(RenderSidecarFiles, PlainRenderHasNoVesselGlyphAndSavingReplacesAtomicall
     EXPECT_EQ(entry.path().filename(), "p.png.json") << "left behind: " << entry.path();
 }
 
+TEST_F(RenderSidecarFiles, AnImageWindowSurvivesAndABrokenOneIsNamed) {
+  RenderRecipe s;
+  s.dataset = "/data/p.mha";
+  s.tf = tf("plain", 0);
+  s.params.window = ImageWindow{-12.5, 30.25, -4, 17.125};
+  const fs::path file = dir_ / "w.png.json";
+  saveRenderSidecar(s, file);
+  EXPECT_EQ(loadRenderSidecar(file).params.window, s.params.window);
+  s.params.window.reset();  // the whole image: no key at all, as before windows existed
+  EXPECT_EQ(renderSidecarJson(s).find("left_mm"), std::string::npos);
+  s.params.window = ImageWindow{-12.5, 30.25, -4, 17.125};
+  const std::string text =
+      test_support::replacedOnce(renderSidecarJson(s), "\"right_mm\": 30.25", "\"right_mm\": -20");
+  const std::string message = loadError(write("inverted.json", text));
+  EXPECT_NE(message.find("view.window"), std::string::npos) << message;
+  EXPECT_NE(message.find("left < right"), std::string::npos) << message;
+}
+
 TEST_F(RenderSidecarFiles, SidecarPathIsTheImagePlusJson) {
   EXPECT_EQ(sidecarPathFor("/a/b.png"), fs::path("/a/b.png.json"));
   EXPECT_EQ(sidecarPathFor("c.nii.exr"), fs::path("c.nii.exr.json"));
