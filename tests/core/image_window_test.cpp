@@ -83,7 +83,8 @@ TEST(ImageWindow, BothRaycastersRenderExactlyTheWholeImagesPixels) {
   for (const Case& c : cases(E)) {
     RenderParams p = c.params;
     const SliceTiles tiles = buildSliceTiles(volume, p.axis);
-    const TileClassification classification(tiles, singleTable(table), p.compositing == Compositing::mip);
+    const TileClassification classification(tiles, singleTable(table),
+                                            p.compositing == Compositing::mip);
     const Image wholeFast = renderFast(volume, classification, table, p);
     const Image wholeReference = renderReference(volume, singleTable(table), p);
     // A window about the vessels, one reaching over the image's top left corner, one beside it.
