@@ -31,7 +31,7 @@ using Clock = std::chrono::steady_clock;
 // The interrupt must cut the high render short, not wait for it to finish (which takes far longer
 // than this). The 10 ms target itself is a performance figure measured outside unit tests; a
 // tight bound here would fail on a loaded CI machine or under sanitizers.
-constexpr double kInterruptBudgetMs = 150;
+constexpr double kInterruptBudgetMs = 400;  // ASan on a loaded 2-core box took 190 ms once
 
 const test_support::PhantomInVolumeFrame& testData() {
   static const test_support::PhantomInVolumeFrame data =
