@@ -20,7 +20,7 @@ App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& 
          std::function<void()> wakeUi)
     : data_(std::move(dataset)), workstation_(std::move(start.document)), texture_(gl),
       wakeUi_(std::move(wakeUi)), threads_(threads), renderer_(makeRenderer()), presets_(listPresets()),
-      cprView_(gl) {
+      cprView_(gl), slices_(gl) {
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the layout is fixed; the session file will hold what persists
@@ -80,6 +80,7 @@ void App::frame(double previousFrameMs) {
   handleKeys();
   drawSidePanel();
   drawViewportWindow();
+  drawSliceView();
   drawCprView();
   drawStatusBar();
   const ViewState& view = doc().view;
@@ -88,7 +89,9 @@ void App::frame(double previousFrameMs) {
   // view spins, only the fast level is wanted; letting go asks for the full progression.
   const bool arrowHeld = !popupOpen() && (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)) ||
                                           ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow)));
-  const bool interacting = ImGui::IsAnyItemActive() || doc().view.autoSpin || arrowHeld;
+  // (A press in a slice is not an interaction with the 3-D view.)
+  const bool interacting =
+      (ImGui::IsAnyItemActive() && !slices_.held) || doc().view.autoSpin || arrowHeld;
   ImGui::Render();
   if (doc().vesselGlyph.enabled && vessel_.physical)
     loadMissingRegionTfs();  // the request's regions need them
@@ -148,8 +151,9 @@ void App::handleKeys() {
 void App::drawViewportWindow() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(std::max(io.DisplaySize.x - kPanelWidth - cprViewWidth(), 64.f),
-                                  std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
+  ImGui::SetNextWindowSize(
+      ImVec2(std::max(io.DisplaySize.x - kPanelWidth - cprViewWidth() - sliceViewWidth(), 64.f),
+             std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::Begin("##viewport", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -158,7 +162,7 @@ void App::drawViewportWindow() {
 
   ViewportImage image;
   if (shown_ && !texture_.empty()) {
-    const ViewGeometry geometry = makeViewGeometry(data_.volume, shown_->params);
+    const ViewGeometry& geometry = shownView_;
     const glm::dvec3 offset = geometry.centre - geometry.extent * 0.5;
     image = {texture_.id(),
              shown_->image->width,
@@ -173,7 +177,9 @@ void App::drawViewportWindow() {
   moveCprCursorOnClick();
   growOnClick();
   traceOnClick();
+  moveSliceCursorOnClick();
   drawTraceOverlay();
+  drawSliceCursorOnImage();
   if (viewport_.rotateDegrees != 0) commit(RotateEdit{viewport_.rotateDegrees});
   if (viewport_.adjustPx != glm::vec2(0.f)) adjustByDrag(viewport_.adjustPx);
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) viewAdjusting_ = false;  // the gesture ended
@@ -183,11 +189,8 @@ void App::drawViewportWindow() {
 // The fit of the volume at zoom 1, the angle caption, the shown level's label.
 ViewportOverlay App::viewportOverlay() const {
   ViewportOverlay overlay;
-  const glm::dvec3 extent = domainExtent(data_.volume);
   const ViewState& view = doc().view;
-  const int a = int(view.axis), b = (a + 1) % 3, c = (a + 2) % 3;
-  overlay.fitMm =
-      glm::dvec2(std::max(std::hypot(extent[b], extent[c]), 1e-3), std::max(extent[a], 1e-3));
+  overlay.fitMm = fitAtZoomOne();
   char caption[96];
   std::snprintf(caption, sizeof caption, "%.1f deg about %s%s", view.angleDeg, toString(view.axis),
                 doc().mode == Compositing::mip ? "   MIP" : "");
@@ -201,9 +204,16 @@ ViewportOverlay App::viewportOverlay() const {
   return overlay;
 }
 
+// The volume's extent across the rotation axis (its diagonal, so any angle fits) and along it.
+glm::dvec2 App::fitAtZoomOne() const {
+  const glm::dvec3 extent = domainExtent(data_.volume);
+  const int a = int(doc().view.axis), b = (a + 1) % 3, c = (a + 2) % 3;
+  return {std::max(std::hypot(extent[b], extent[c]), 1e-3), std::max(extent[a], 1e-3)};
+}
+
 ViewportFit App::viewportFit() const {
   return {glm::dvec2(viewport_.max.x - viewport_.min.x, viewport_.max.y - viewport_.min.y),
-          viewportOverlay().fitMm};
+          fitAtZoomOne()};
 }
 
 RenderParams App::zoomedViewParams() const {

@@ -29,6 +29,7 @@
 #include "gui/app_cpr.h"
 #include "gui/app_export.h"
 #include "gui/app_labels.h"
+#include "gui/app_slices.h"
 #include "gui/app_vessel.h"
 #include "gui/app_vessels.h"
 #include "gui/panel_export.h"
@@ -133,6 +134,7 @@ class App {
   void handleKeys();
   void drawViewportWindow();
   ViewportOverlay viewportOverlay() const;
+  glm::dvec2 fitAtZoomOne() const;  // mm the viewport fits at zoom 1 (across, along the axis)
   ViewportFit viewportFit() const;  // the viewport's size (last drawn) and the fit at zoom 1
   // What the window renders of the view: the visible window and each level's isd at the zoom.
   RenderParams zoomedViewParams() const;
@@ -234,6 +236,22 @@ class App {
   void takeComputedCpr();
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
+  // The linked slice view (gui/app_slices.cpp): a column beside the image, sliceViewWidth() wide
+  // (0 when hidden), left of the CPR view.
+  glm::dvec3 sliceCursor() const;  // the document's cursor in the volume, else its centre
+  float sliceViewWidth() const;
+  void resetSliceView();  // a new dataset: its slices are its own
+  void drawSlicesSection();
+  void drawSliceView();
+  void drawSlicePane(SliceOrientation orientation, ImVec2 min, ImVec2 size,
+                     const Centerlines* centerlines);
+  void updateSliceTexture(SliceOrientation orientation);
+  void drawSliceCrosshair(SliceOrientation orientation);
+  void handleSliceMouse(SliceOrientation orientation);
+  void moveSliceCursor(glm::dvec3 cursorMm);
+  void moveSliceCursorOnClick();  // right after drawViewport: a click with no tool on
+  void drawSliceCursorOnImage();
+  nlohmann::json slicesReport() const;
   // The state report's parts (gui/app_report.cpp).
   nlohmann::json dataReport() const;
   nlohmann::json vesselReport() const;
@@ -254,7 +272,8 @@ class App {
   Centerlines sceneCenterlines_;                // ... with these centerlines
   std::optional<ProgressiveRequest> lastRequest_;
   std::uint64_t lastRequestId_ = 0;
-  std::shared_ptr<const ProgressiveFrame> shown_;     // the frame the texture shows
+  std::shared_ptr<const ProgressiveFrame> shown_;  // the frame the texture shows
+  ViewGeometry shownView_;  // its view geometry (set with shown_: overlays and picks read it)
   std::shared_ptr<const ProgressiveFrame> incoming_;  // the frame being uploaded
   std::deque<std::pair<std::uint64_t, Clock::time_point>> requestTimes_;
   // Request -> its first image on screen: the start-up request (slice tiles built first) apart.
@@ -308,6 +327,7 @@ class App {
 
   VesselGlyphPanel vessel_;  // the VesselGlyph panel (gui/app_vessel.cpp)
   CprViewPanel cprView_;     // the CPR view (gui/app_cpr.cpp)
+  SliceViewPanel slices_;    // the slice view (gui/app_slices.cpp)
   LabelsPanel labels_;       // the Labels section (gui/app_labels.cpp); its job reads data_
   VesselsPanel vessels_;     // the Vessels section (gui/app_vessels.cpp); last: its job reads data_
 };

@@ -8,7 +8,7 @@ namespace angio {
 
 void App::drawCropOverlay() {
   if (!doc().clip.cropOn || !shown_ || !viewport_.hasImage) return;
-  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ViewGeometry& view = shownView_;
   const CropBox& box = doc().clip.crop;
   // Corner n has bit `axis` set where it sits at the box's maximum along that axis.
   const auto corner = [&](int n) {

@@ -55,7 +55,7 @@ void App::moveCprCursorOnClick() {
   } catch (const std::exception&) {
     return;
   }
-  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ViewGeometry& view = shownView_;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   float best = kClickReachPx * kClickReachPx;
   for (std::size_t p = 0; p < centerlines->paths.size(); ++p) {
@@ -221,7 +221,7 @@ void App::drawCprView() {
                   IM_COL32(90, 255, 120, 160));
   }
   if (shown_ && viewport_.hasImage) {  // the hovered point (yellow) and the cursor (green) on the DVR
-    const ViewGeometry shownView = makeViewGeometry(data_.volume, shown_->params);
+    const ViewGeometry& shownView = shownView_;
     ImDrawList* front = ImGui::GetForegroundDrawList();
     front->PushClipRect(viewport_.min, viewport_.max, true);
     if (panel.cursor)

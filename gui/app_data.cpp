@@ -123,6 +123,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   renderer_ = makeRenderer();
   resetLabels();
   resetVessels();
+  resetSliceView();
   histogramJob_ = std::async(std::launch::async, [this] { return densityHistogram(data_.volume); });
 }
 

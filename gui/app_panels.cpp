@@ -29,6 +29,7 @@ void App::drawSidePanel() {
   drawVesselsSection();
   drawLabelsSection();
   if (sectionHeader("Rendering")) commit(drawRenderingPanel(doc()));
+  drawSlicesSection();
   if (sectionHeader("Crop & clip", false))
     commit(drawClipPanel(doc().clip, domainExtent(data_.volume), widgetRects_));
   drawExportSection();

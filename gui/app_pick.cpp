@@ -22,7 +22,7 @@ std::optional<glm::dvec2> App::clickedImagePoint() const {
   const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
   if (drag.x * drag.x + drag.y * drag.y > kClickSlopPx * kClickSlopPx) return std::nullopt;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ViewGeometry& view = shownView_;
   return glm::dvec2{
       (mouse.x - viewport_.imageMin.x) / (viewport_.imageMax.x - viewport_.imageMin.x) * view.width,
       (mouse.y - viewport_.imageMin.y) / (viewport_.imageMax.y - viewport_.imageMin.y) * view.height};
@@ -38,7 +38,7 @@ std::optional<PickedPoint> App::pickVisible(glm::dvec2 imagePoint) const {
 
 std::optional<glm::vec2> App::screenOfPhysical(const glm::dvec3& physicalMm) const {
   if (!shown_ || !viewport_.hasImage) return std::nullopt;
-  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ViewGeometry& view = shownView_;
   const ImVec2 at = dvrScreenOf(view, volumeFrameMm(data_.volume, physicalMm));
   return glm::vec2(at.x, at.y);
 }

@@ -27,6 +27,7 @@ void App::pollRenderer() {
   if (frame && frame != shown_ && frame != incoming_) {
     if (shown_ && frame->serial == shown_->serial && !incoming_) {
       shown_ = frame;
+      shownView_ = makeViewGeometry(data_.volume, shown_->params);
       latency_.shown(*frame, Clock::now());
     } else if (incoming_ && frame->serial == incoming_->serial) {
       incoming_ = frame;
@@ -44,6 +45,7 @@ void App::pollRenderer() {
   if (!complete) return;
   shown_ = std::move(incoming_);
   incoming_.reset();
+  shownView_ = makeViewGeometry(data_.volume, shown_->params);
   if (shown_->level == Quality::fast && shown_->renderMs > 0)
     lastFirstLevel_ = MeasuredFrame{shown_->renderMs, shown_->params.sampling.isd};
   latency_.shown(*shown_, Clock::now());

@@ -85,6 +85,7 @@ nlohmann::json App::report() const {
         {"data", dataReport()},
         {"vessel_glyph", vesselReport()},
         {"labels", labelsReport()},
+        {"slices", slicesReport()},
         {"vessels", vesselsReport()},
         {"layout", layout}}},
   };

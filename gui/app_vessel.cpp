@@ -19,14 +19,8 @@ namespace angio {
 
 namespace fs = std::filesystem;
 
-glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm) {
-  const glm::dvec3 offset = pointMm - view.centre;
-  return {glm::dot(offset, view.right) / view.pixelMm + view.width * 0.5,
-          view.height * 0.5 - glm::dot(offset, view.up) / view.pixelMm};
-}
-
 ImVec2 App::dvrScreenOf(const ViewGeometry& shownView, const glm::dvec3& pointMm) const {
-  const glm::dvec2 pixel = imagePixelOf(shownView, pointMm);
+  const glm::dvec2 pixel = imagePointOf(shownView, pointMm);
   const ImVec2 origin = viewport_.imageMin;
   return {origin.x + float(pixel.x / std::max(shownView.width, 1)) * (viewport_.imageMax.x - origin.x),
           origin.y + float(pixel.y / std::max(shownView.height, 1)) * (viewport_.imageMax.y - origin.y)};
@@ -196,7 +190,7 @@ void App::drawCenterlineOverlay() {
     vessel_.problem = error.what();
     return;
   }
-  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ViewGeometry& view = shownView_;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(viewport_.min, viewport_.max, true);
   std::vector<ImVec2> screen;

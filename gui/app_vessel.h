@@ -51,8 +51,4 @@ struct VesselGlyphPanel {
   std::string hybridProblem;            // why the hybrid is not rendered although on
 };
 
-// Continuous pixel coordinates (x right, y down; pixel n spans [n, n + 1)) of a volume-frame
-// point in the view's parallel projection: the inverse of ViewGeometry::rayOrigin.
-glm::dvec2 imagePixelOf(const ViewGeometry& view, const glm::dvec3& pointMm);
-
 }  // namespace angio

@@ -267,7 +267,7 @@ void App::drawTraceOverlay() {
   const std::vector<VesselPath>& paths = doc().vessels.paths;
   if (!shown_ || !viewport_.hasImage || ui.selectedPath < 0 || ui.selectedPath >= int(paths.size()))
     return;
-  const ViewGeometry view = makeViewGeometry(data_.volume, shown_->params);
+  const ViewGeometry& view = shownView_;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(viewport_.min, viewport_.max, true);
   const std::vector<glm::dvec3>& points = paths[ui.selectedPath].controlPointsMm;

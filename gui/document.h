@@ -1,12 +1,13 @@
 #pragma once
 // The workstation's document: what the user edits and a session file keeps (dataset, view, main
 // TF with its MIP window, mode, shading, the quality levels' sampling, the CPR view and DVR+CPR
-// hybrid, the VesselGlyph panel's settings and TFs, crop box, clip plane and slab, which side-panel sections are open, recent
-// files), as plain values. Only Workstation::apply (gui/workstation.h) changes one; the session
+// hybrid, the VesselGlyph panel's settings and TFs, crop box, clip plane and slab, the slice view,
+// which side-panel sections are open, recent files), as plain values. Only Workstation::apply (gui/workstation.h) changes one; the session
 // file (gui/session_file.h) is its JSON. Runtime things (textures, the renderer, jobs) live in App.
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "core/transfer_function.h"
 #include "gui/clip_state.h"
 #include "render/progressive_renderer.h"
+#include "render/slice_images.h"
 #include "vessel/centerline.h"
 #include "vessel/cpr_layout.h"
 #include "vessel/vessel_glyph.h"
@@ -110,6 +112,17 @@ struct VesselsState {
 // The paths with a traced centerline (2 points or more), as centerlines in the physical frame.
 Centerlines centerlinesOf(const VesselsState& vessels);
 
+// The linked slice view (render/slice_images.h): axial, coronal and sagittal slices through the
+// 3-D cursor beside the image, grey through a window/level. The cursor is in mm of the volume frame
+// and belongs to the dataset: a new one starts at its centre.
+struct SliceViewState {
+  bool shown = false;
+  std::optional<glm::dvec3> cursorMm;  // none: the volume's centre
+  WindowLevel windowLevel{600, 250};   // CTA
+
+  friend bool operator==(const SliceViewState&, const SliceViewState&) = default;
+};
+
 struct Document {
   std::string dataset;  // file or folder; "phantom IxJxK" for the generated phantom
   ViewState view;
@@ -123,6 +136,7 @@ struct Document {
   LabelsState labels;
   VesselsState vessels;
   ClipState clip;                          // the Crop & clip section
+  SliceViewState slices;                   // the linked slice view
   std::map<std::string, bool> panelsOpen;  // side-panel section title -> open
   std::vector<std::string> recentFiles;    // newest first, at most kMaxRecentFiles
 

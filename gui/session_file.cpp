@@ -66,6 +66,14 @@ Json clipJson(const ClipState& clip) {
           {"slab_thickness_mm", clip.slab.thicknessMm}};
 }
 
+// The slice view; the cursor only where the user put it (null: the volume's centre).
+Json slicesJson(const SliceViewState& slices) {
+  return {{"shown", slices.shown},
+          {"window", slices.windowLevel.window},
+          {"level", slices.windowLevel.level},
+          {"cursor_mm", slices.cursorMm ? vectorJson(*slices.cursorMm) : Json(nullptr)}};
+}
+
 Json samplingJson(const Sampling& sampling) {
   return {{"isd", sampling.isd},
           {"osd", sampling.osd},
@@ -239,6 +247,17 @@ struct SessionReader {
     return clip;
   }
 
+  // The slice view (where = "slices."): a window of at least 1 HU.
+  SliceViewState slices(const Json& s) const {
+    SliceViewState slices;
+    slices.shown = flag(s, "shown", slices.shown);
+    slices.windowLevel.window = number(s, "window", 1, 1e5, slices.windowLevel.window);
+    slices.windowLevel.level = number(s, "level", -1e5, 1e5, slices.windowLevel.level);
+    if (s.contains("cursor_mm") && !s["cursor_mm"].is_null())
+      slices.cursorMm = vector(s, "cursor_mm", glm::dvec3(0.0));
+    return slices;
+  }
+
   CprState cpr(const Json& c) const {
     CprState cpr;
     cpr.shown = flag(c, "shown", cpr.shown);
@@ -286,6 +305,7 @@ struct SessionReader {
       session.levels[q] = sampling(section(levels, toString(Quality(q))), session.levels[q]);
     session.cpr = cpr(section(json, "cpr"));
     session.clip = in("clip").clip(section(json, "clip"));
+    session.slices = in("slices").slices(section(json, "slices"));
     session.vesselGlyph = in("vessel_glyph").vesselGlyph(section(json, "vessel_glyph"));
     const Json& labels = section(json, "labels");
     session.labels.file = in("labels").text(labels, "file");
@@ -337,6 +357,7 @@ std::string toJson(const Document& session) {
       {"levels", levels},
       {"cpr", cprJson(session.cpr)},
       {"clip", clipJson(session.clip)},
+      {"slices", slicesJson(session.slices)},
       {"vessel_glyph", vesselGlyphJson(session.vesselGlyph)},
       {"labels", {{"file", session.labels.file}, {"show_removed", session.labels.showRemoved}}},
       {"vessels", vesselsJson(session.vessels)},

@@ -61,7 +61,8 @@ void change(Document& d, const DatasetOpened& edit) {
   d.vesselGlyph.enabled = false;  // nothing to show it on until paths are traced or loaded
   d.cpr.shown = false;
   d.cpr.hybrid = false;
-  d.clip = {};  // the crop box was in the old dataset's millimetres
+  d.clip = {};                // the crop box was in the old dataset's millimetres
+  d.slices.cursorMm.reset();  // so was the slice cursor
 }
 void change(Document& d, const RecentFilesEdit& edit) { d.recentFiles = edit.recentFiles; }
 void change(Document& d, const LabelStylesEdit& edit) {
@@ -80,6 +81,7 @@ void change(Document& d, const VesselFileEdit& edit) {
   d.vessels.unsaved = false;
 }
 void change(Document& d, const ClipEdit& edit) { d.clip = edit.clip; }
+void change(Document& d, const SliceViewEdit& edit) { d.slices = edit.slices; }
 void change(Document& d, const PanelOpenEdit& edit) { d.panelsOpen[edit.title] = edit.open; }
 void change(Document& d, const SessionEdit& edit) {
   std::string dataset = std::move(d.dataset);

@@ -52,8 +52,8 @@ struct CenterlineFileEdit {
 };
 // A dataset replaced the shown one: it is the document's, zoom and pan start over, it heads the
 // recent files. What belonged to the old dataset goes (labels, vessel paths, the centerline file,
-// VesselGlyph and the CPR view that showed them, clipping in its millimetres) unless the dataset
-// is the one a session named: the session's own state, applied before its load, stays.
+// VesselGlyph and the CPR view that showed them, clipping in its millimetres, the slice cursor)
+// unless the dataset is the one a session named: the session's own state, applied before its load, stays.
 struct DatasetOpened {
   std::string dataset;
   bool ofSession = false;
@@ -90,6 +90,11 @@ struct ClipEdit {
   ClipState clip;
   friend bool operator==(const ClipEdit&, const ClipEdit&) = default;
 };
+// The slice view's settings, or its cursor moved (by a click in a slice or in the 3-D view).
+struct SliceViewEdit {
+  SliceViewState slices;
+  friend bool operator==(const SliceViewEdit&, const SliceViewEdit&) = default;
+};
 // A side-panel section opened or closed.
 struct PanelOpenEdit {
   std::string title;
@@ -106,7 +111,7 @@ struct SessionEdit {
 using Edit =
     std::variant<ViewEdit, RotateEdit, TfChange, RenderingEdit, VesselGlyphEdit, CprEdit,
                  CenterlineFileEdit, DatasetOpened, RecentFilesEdit, LabelStylesEdit, LabelFileEdit,
-                 VesselPathsEdit, VesselFileEdit, PanelOpenEdit, SessionEdit, ClipEdit>;
+                 VesselPathsEdit, VesselFileEdit, PanelOpenEdit, SessionEdit, ClipEdit, SliceViewEdit>;
 
 // What a DatasetOpened (not of a session) drops from `before`, for the status line: "3 vessel
 // paths", "the centerline file", "VesselGlyph", "the CPR view", "the labels", "the crop & clip".

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "core/volume.h"
+#include "core/window_level.h"
 #include "vessel/centerline.h"
 
 namespace angio {
@@ -25,12 +26,6 @@ enum class SliceOrientation { axial = 0, coronal = 1, sagittal = 2 };
 const char* sliceOrientationName(SliceOrientation orientation);  // "axial", "coronal", "sagittal"
 
 // Grey = clamp((HU - (level - window/2)) / window, 0, 1) * 255, rounded.
-struct WindowLevel {
-  double window = 600;  // HU; the MIP's CTA default
-  double level = 250;
-  friend bool operator==(const WindowLevel&, const WindowLevel&) = default;
-};
-
 std::uint8_t greyOfHu(double hu, WindowLevel windowLevel);
 
 struct SliceImage {

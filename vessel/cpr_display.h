@@ -9,16 +9,10 @@
 
 #include "core/image.h"
 #include "core/transfer_function.h"
+#include "core/window_level.h"
 #include "vessel/cpr_layout.h"
 
 namespace angio {
-
-struct WindowLevel {
-  double window = 800;  // HU
-  double level = 250;   // HU
-
-  friend bool operator==(const WindowLevel&, const WindowLevel&) = default;
-};
 
 // Presets (calibrated HU). "cta-lumen": contrast-filled lumen (~250-500 HU) mid-grey to white
 // against soft tissue; "calcium": wide enough to tell calcified plaque (~700-1500+ HU) from the

@@ -124,19 +124,7 @@ TEST(ImageWindow, RegionsOfTheWindowGiveTheWholeImagesPixels) {
                  RegionTables{&wholeRegions, &focus, &context, nullptr}, p);
   p.window = ImageWindow{-30, 25, -80, 140};
   const ViewGeometry view = makeViewGeometry(volume, p);
-  // The window's regions: the whole image's, pixel for pixel.
-  RayRegions regions;
-  regions.width = view.width;
-  regions.height = view.height;
-  for (int y = 0; y < view.height; ++y)
-    for (int x = 0; x < view.width; ++x) {
-      regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
-      const std::size_t n = std::size_t(view.windowY + y) * whole.width + view.windowX + x;
-      regions.intervals.insert(regions.intervals.end(),
-                               wholeRegions.intervals.begin() + wholeRegions.rayBegin[n],
-                               wholeRegions.intervals.begin() + wholeRegions.rayBegin[n + 1]);
-    }
-  regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+  const RayRegions regions = test_support::cropRegions(wholeRegions, whole.width, view);
   const RegionTables tables{&regions, &focus, &context, nullptr};
   const Image image =
       renderFast(volume, TileClassification(buildSliceTiles(volume, p.axis), tables), tables, p);

@@ -66,6 +66,7 @@ Document unusualSession() {
   s.levels[0] = {2.0, 1.5, Filter::nearest, 0.9};
   s.levels[2] = {0.25, 0.125, Filter::mean, 1.0};
   s.cpr = {true, CprMode::projected, 1, CprColoring::focusTf, true, 3.5};
+  s.slices = {true, glm::dvec3(12.5, -3.25, 80), {2000, 500}};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
   VesselGlyphState& vg = s.vesselGlyph;
@@ -248,6 +249,9 @@ TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
   expectRejected(R"({"cpr": {"path": -2}})", "path");
   expectRejected(R"({"cpr": {"transition_mm": -1}})", "transition_mm");
   expectRejected(R"({"cpr": {"hybrid": "yes"}})", "hybrid is not true or false");
+  expectRejected(R"({"slices": {"window": 0}})", "slices.window 0 is out of range");
+  expectRejected(R"({"slices": {"cursor_mm": [1, 2]}})", "slices.cursor_mm is not [x, y, z]");
+  expectRejected(R"({"slices": {"shown": 1}})", "slices.shown is not true or false");
   expectRejected(R"({"transfer_function": {"name": "t", "points": [{"hu": 0}]}})", "point 1");
 }
 

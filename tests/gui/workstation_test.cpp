@@ -151,6 +151,17 @@ TEST(GuiWorkstation, ANewDatasetDropsWhatBelongedToTheOldOneAndListsIt) {
   EXPECT_TRUE(droppedByNewDataset(after).empty());
 }
 
+TEST(GuiWorkstation, ANewDatasetStartsTheSliceCursorAtItsCentreAndKeepsTheSliceSettings) {
+  Document before;
+  before.slices = {true, glm::dvec3(10, 20, 30), {2000, 500}};
+  Workstation workstation(before);
+  workstation.apply(DatasetOpened{"/data/b.mha"});
+  EXPECT_EQ(workstation.document().slices, (SliceViewState{true, std::nullopt, {2000, 500}}));
+  Workstation ofSession(before);
+  ofSession.apply(DatasetOpened{"/data/a.mha", true});
+  EXPECT_EQ(ofSession.document().slices, before.slices);  // the session's own cursor
+}
+
 TEST(GuiWorkstation, ASessionsDatasetKeepsTheSessionsVesselGlyphCprAndClipping) {
   Workstation workstation(withVesselState());
   workstation.apply(DatasetOpened{"/data/a.mha", true});

@@ -28,11 +28,6 @@ namespace {
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
-// The interrupt must cut the high render short, not wait for it to finish (which takes far longer
-// than this). The 10 ms target itself is a performance figure measured outside unit tests; a
-// tight bound here would fail on a loaded CI machine or under sanitizers.
-constexpr double kInterruptBudgetMs = 400;  // ASan on a loaded 2-core box took 190 ms once
-
 const test_support::PhantomInVolumeFrame& testData() {
   static const test_support::PhantomInVolumeFrame data =
       test_support::phantomInVolumeFrame({96, 96, 200});
@@ -231,12 +226,21 @@ TEST(ProgressiveRenderer, NewRequestInterruptsHighAndRestartsAtFast) {
   const double toFastMs = std::chrono::duration<double, std::milli>(Clock::now() - asked).count();
 
   const ProgressiveStatus status = renderer.status();
-  EXPECT_GE(status.lastInterruptMs, 0);
-  EXPECT_LE(status.lastInterruptMs, kInterruptBudgetMs);
   const std::vector<ProgressiveFrame> frames = log.copy();
   std::vector<Quality> firstLevels;
+  double mediumMs = 0;
   for (const ProgressiveFrame& frame : frames)
-    if (frame.request == first) firstLevels.push_back(frame.level);
+    if (frame.request == first) {
+      firstLevels.push_back(frame.level);
+      if (frame.level == Quality::medium) mediumMs = frame.renderMs;
+    }
+  // The interrupt cuts the high render short rather than waiting for it: this high level has 25x
+  // the medium level's rays at half its samples each, trilinear and without ERT, so the whole
+  // render takes more than a dozen medium renders; stopping within two of them is well inside it. (Relative to the medium frame timed on
+  // the same machine in the same moment, so load and sanitizers scale both; the 10 ms target itself
+  // is a performance figure, measured by `angioray bench`.)
+  EXPECT_GE(status.lastInterruptMs, 0);
+  EXPECT_LE(status.lastInterruptMs, 2 * mediumMs + 5);
   EXPECT_EQ(firstLevels, (std::vector<Quality>{Quality::fast, Quality::medium}));  // high dropped
   ASSERT_GE(frames.size(), 3u);
   EXPECT_EQ(frames[2].request, second);

@@ -2,6 +2,7 @@
 // VesselGlyph ray regions for raycaster tests: per pixel, focus around depth 0 with a half-width
 // that varies across the image (`minHalf` + (x * 7 + y * 3) mod `spread`), a gap of `gap`, then
 // context up to `contextEnd` beyond the focus, so every ray's regions start and end elsewhere.
+#include <cstddef>
 #include <cstdint>
 
 #include "core/region_intervals.h"
@@ -21,6 +22,23 @@ inline RayRegions varyingRegions(const ViewGeometry& view, float minHalf, int sp
       const float half = minHalf + float((x * 7 + y * 3) % spread);
       regions.intervals.push_back({-half, half, Region::focus});
       regions.intervals.push_back({half + gap, half + contextEnd, Region::context});
+    }
+  regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+  return regions;
+}
+
+// The regions of the rays of `window` (a window of the image `wholeWidth` pixels wide whose regions
+// are `whole`): the whole image's, pixel for pixel.
+inline RayRegions cropRegions(const RayRegions& whole, int wholeWidth, const ViewGeometry& window) {
+  RayRegions regions;
+  regions.width = window.width;
+  regions.height = window.height;
+  for (int y = 0; y < window.height; ++y)
+    for (int x = 0; x < window.width; ++x) {
+      regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
+      const std::size_t n = std::size_t(window.windowY + y) * wholeWidth + window.windowX + x;
+      regions.intervals.insert(regions.intervals.end(), whole.intervals.begin() + whole.rayBegin[n],
+                               whole.intervals.begin() + whole.rayBegin[n + 1]);
     }
   regions.rayBegin.push_back(std::uint32_t(regions.intervals.size()));
   return regions;
