@@ -50,7 +50,9 @@ struct WindowLevelPreset {
   const char* name;
   WindowLevel windowLevel;
 };
-// CTA 600/250, soft tissue 400/40, bone 2000/500, lung 1500/-600 (window/level, HU).
+// The windows CT readers switch between (window/level, HU): CTA shows contrast lumen bright against
+// soft tissue and keeps calcium apart; soft tissue for organs; bone for cortex and marrow; lung
+// for air-filled parenchyma.
 constexpr std::array<WindowLevelPreset, 4> kWindowLevelPresets{
     {{"CTA", {600, 250}}, {"Soft", {400, 40}}, {"Bone", {2000, 500}}, {"Lung", {1500, -600}}}};
 
