@@ -56,11 +56,13 @@ DensityRange densityRange(const Volume& volume) {
   return range;
 }
 
-bool looksHuCalibrated(const Volume& volume) {
-  const DensityHistogram histogram = densityHistogram(volume);
+bool looksHuCalibrated(const Volume& volume) { return looksHuCalibrated(densityHistogram(volume)); }
+
+bool looksHuCalibrated(const DensityHistogram& histogram) {
+  const std::size_t all = std::accumulate(histogram.begin(), histogram.end(), std::size_t(0));
   const std::size_t below =
       std::accumulate(histogram.begin(), histogram.begin() + densityOfHu(-500), std::size_t(0));
-  return below * 1000 >= volume.voxelCount();
+  return below * 1000 >= all;
 }
 
 }  // namespace angio

@@ -52,6 +52,7 @@ DensityHistogram densityHistogram(const Volume& volume);
 // it, in the lungs and bowel) below -500 HU, at least 0.1 % of its voxels. Exported and cropped
 // research data (../shared/data/aorta.mha) often hold none.
 bool looksHuCalibrated(const Volume& volume);
+bool looksHuCalibrated(const DensityHistogram& histogram);  // the same from the volume's histogram
 
 struct DensityRange {
   int minDensity = 0;

@@ -61,6 +61,7 @@ App::~App() {
 }
 
 void App::noteRect(const std::string& name) { angio::noteRect(widgetRects_, name); }
+void App::noteRect(const std::string& name, ImVec2 min, ImVec2 max) { widgetRects_[name] = {min, max}; }
 
 void App::commit(const Edit& edit) {
   workstation_.apply(edit);
@@ -89,9 +90,9 @@ void App::frame(double previousFrameMs) {
   // view spins, only the fast level is wanted; letting go asks for the full progression.
   const bool arrowHeld = !popupOpen() && (ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_LeftArrow)) ||
                                           ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_RightArrow)));
-  // (A press in a slice is not an interaction with the 3-D view.)
+  // (A press in a slice or the CPR pane is not an interaction with the 3-D view.)
   const bool interacting =
-      (ImGui::IsAnyItemActive() && !slices_.held) || doc().view.autoSpin || arrowHeld;
+      (ImGui::IsAnyItemActive() && !slices_.held && !cprView_.held) || doc().view.autoSpin || arrowHeld;
   ImGui::Render();
   if (doc().vesselGlyph.enabled && vessel_.physical)
     loadMissingRegionTfs();  // the request's regions need them
@@ -120,6 +121,7 @@ void App::pollHistogram() {
   for (int d = 0; d < kDensityLevels; ++d)
     if (counts[d]) range.minDensity = std::min(range.minDensity, d), range.maxDensity = d;
   huRange_ = range;
+  huCalibrated_ = looksHuCalibrated(counts);
 }
 
 // A modal (the file browser) or an open combo has the keys: the view does not turn behind it.

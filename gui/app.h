@@ -27,6 +27,7 @@
 #include "gui/latency_trace.h"
 #include "render/series_export.h"
 #include "gui/app_cpr.h"
+#include "gui/cpr_pane.h"
 #include "gui/app_export.h"
 #include "gui/app_labels.h"
 #include "gui/app_slices.h"
@@ -158,6 +159,7 @@ class App {
   // A CollapsingHeader whose open state the session keeps.
   bool sectionHeader(const char* title, bool openByDefault = true);
   void noteRect(const std::string& name);  // the last widget's rectangle, for report()
+  void noteRect(const std::string& name, ImVec2 min, ImVec2 max);  // a drawn rectangle
   void drawStatusBar();
   void drawTfSection();
   void drawExportSection();
@@ -234,6 +236,14 @@ class App {
   void drawCprView();
   void updateCpr();
   void takeComputedCpr();
+  CprLook cprLook() const;
+  void showCprLook();
+  void handleCprMouse(const CprPlacement& placement);
+  void moveCprCursorTo(const CprPick& pick);
+  void drawCprRuler(const CprPlacement& placement);
+  void drawCprCursor(const CprPlacement& placement, ImVec2 paneMin, ImVec2 paneMax);
+  void drawCrossSectionInset(ImVec2 paneMin, ImVec2 paneMax);
+  void markCprOnDvr();
   void moveCprCursorOnClick();  // right after drawViewport: a click near a centerline
   float cprViewWidth() const;
   // The linked slice view (gui/app_slices.cpp): a column beside the image, sliceViewWidth() wide
@@ -293,6 +303,7 @@ class App {
   std::future<DensityHistogram> histogramJob_;
   std::vector<float> histogram_;  // log counts per density, empty until counted
   std::optional<DensityRange> huRange_;
+  bool huCalibrated_ = true;  // core/volume.h looksHuCalibrated, once counted
   ViewportInteraction viewport_;
   WidgetRects widgetRects_;
   bool quit_ = false;

@@ -11,6 +11,10 @@
 
 #include "core/view_geometry.h"
 #include "gui/app.h"
+#include "gui/cpr_pane.h"
+#include "gui/slice_pane.h"
+#include "gui/viewport.h"
+#include "gui/zoom_pan.h"
 #include "gui/panel_cpr.h"
 #include "io/tf_file.h"
 
@@ -21,6 +25,22 @@ namespace {
 constexpr float kCprShare = 0.35f;      // of the room left of the side panel
 constexpr double kMaxCprPixelMm = 1.0;  // finer than coarse volumes' DVR pixels, for the ruler
 constexpr float kClickReachPx = 12;     // a click this near a projected centerline moves the cursor
+constexpr double kRulerOffsetMm = 15;   // the ruler beside the lumen: past an aorta's radius
+constexpr double kInsetExtentMm = 40, kInsetPixelMm = 0.5;  // the cross-section: an aorta and its wall
+
+ImVec2 toIm(glm::dvec2 p) { return {float(p.x), float(p.y)}; }
+
+// The cross-section colored as the CPR (vessel/cpr_display.h cprColor); outside the volume black.
+Image crossSectionImage(const CrossSection& section, const CprLook& look) {
+  const CprDisplay display{look.window, look.focusTf};
+  const std::optional<TfTable> table =
+      look.focusTf ? std::optional<TfTable>(buildTable(*look.focusTf)) : std::nullopt;
+  Image image = makeImage(section.size, section.size);
+  for (std::size_t n = 0; n < section.hu.size(); ++n)
+    if (!std::isnan(section.hu[n]))
+      image.pixels[n] = cprColor(section.hu[n], display, table ? &*table : nullptr);
+  return image;
+}
 
 // Where a centerline point lies in the CPR image: on its path's curve, or, on a trunk the path
 // shares with an earlier path (drawn once, vessel/cpr_layout.h), on that path's curve.
@@ -103,8 +123,8 @@ void App::updateCpr() {
       vessel_.framedFor, vessel_.file, vessel_.revision, state.view.axis, state.view.angleDeg,
       // The high level's pixel size, so a projected CPR registers with the DVR image.
       std::min(state.levels[int(Quality::high)].isd * voxelUnit(data_.volume), kMaxCprPixelMm),
-      state.cpr.mode, state.cpr.path, state.cpr.coloring, std::nullopt};
-  if (state.cpr.coloring == CprColoring::focusTf) inputs.focusTf = state.vesselGlyph.focusTf;
+      state.cpr.mode, state.cpr.path, std::nullopt};
+  if (state.cpr.mode != CprMode::projected) inputs.widthMm = state.cpr.widthMm;
   if (inputs == panel.madeFor || panel.job.running()) return;  // one at a time: the next one after it
   if (panel.cpr && (ImGui::IsAnyItemActive() || state.view.autoSpin)) return;
   panel.computing = inputs;
@@ -122,30 +142,21 @@ void App::updateCpr() {
   }
   panel.job.start([&volume = data_.volume, inputs, paths = std::move(paths)](JobControl&) {
     const ViewGeometry geometry = cprView(volume, inputs.axis, inputs.angleDeg, inputs.pixelMm);
-    Cpr cpr = computeCpr(volume, paths, geometry, CprSettings{inputs.mode, {}});
-    CprDisplay display;
-    if (inputs.coloring == CprColoring::calcium) display.windowLevel = kCalciumWindow;
-    if (inputs.focusTf) display.tf = *inputs.focusTf;
-    std::shared_ptr<const DisplayImage> image =
-        makeDisplayImage(displayCpr(cpr.layout, cpr.hu, display));
-    return ComputedCpr{inputs, std::move(cpr), std::move(image)};
+    return ComputedCpr{inputs,
+                       computeCpr(volume, paths, geometry, CprSettings{inputs.mode, inputs.widthMm})};
   });
 }
 
-// A finished CPR replaces the shown one (uploaded at once: a CPR image is small).
+// A finished CPR replaces the shown one (colored and uploaded by showCprLook).
 void App::takeComputedCpr() {
   CprViewPanel& panel = cprView_;
   if (!panel.job.ready()) return;
   panel.hovered.reset();
   panel.madeFor = panel.computing;
   panel.computing.reset();
+  panel.look.reset();
   try {
-    ComputedCpr computed = panel.job.take();
-    panel.frame = std::move(computed.image);
-    panel.texture.begin(panel.frame);
-    while (!panel.texture.step(std::size_t(64) << 20)) {
-    }
-    panel.cpr = std::move(computed.cpr);
+    panel.cpr = panel.job.take().cpr;
     panel.error.clear();
   } catch (const std::exception& error) {
     panel.error = error.what();
@@ -154,14 +165,174 @@ void App::takeComputedCpr() {
   }
 }
 
-// The CPR hovered: what it shows, and the same point marked on the DVR image.
+CprLook App::cprLook() const {
+  CprLook look{doc().cpr.window, std::nullopt};
+  if (doc().cpr.coloring == CprColoring::focusTf) look.focusTf = doc().vesselGlyph.focusTf;
+  return look;
+}
+
+// The shown CPR colored as the section says, made here (a few hundred thousand pixels at most,
+// well under a frame) so a window drag follows the hand; uploaded at once.
+void App::showCprLook() {
+  CprViewPanel& panel = cprView_;
+  const CprLook look = cprLook();
+  if (!panel.cpr || panel.look == look) return;
+  CprDisplay display{look.window, look.focusTf};
+  display.ruler = false;  // the pane draws its own beside the lumen, crisp at any zoom
+  panel.frame = makeDisplayImage(displayCpr(panel.cpr->layout, panel.cpr->hu, display));
+  panel.texture.begin(panel.frame);
+  while (!panel.texture.step(std::size_t(64) << 20)) {
+  }
+  panel.look = look;
+}
+
+// The pane's gestures, right after its button: the wheel zooms about the pointer, a left or middle
+// drag pans, a right drag sets the window, a double click fits the image again; a left click (no
+// drag) puts the cursor on the centerline of the line clicked, or with the trace tool adds a point.
+void App::handleCprMouse(const CprPlacement& placement) {
+  CprViewPanel& panel = cprView_;
+  const ImGuiIO& io = ImGui::GetIO();
+  CprState cpr = doc().cpr;
+  if (ImGui::IsItemActive()) panel.held = true;
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0)
+    zoomAboutPointer(cpr.zoom, cpr.panPx, glm::dvec2(io.MousePos.x, io.MousePos.y) - placement.home,
+                     io.MouseWheel, kMinCprZoom, kMaxCprZoom);
+  // As in the 3-D view, the press's frame moves nothing (its delta is the way to the press point).
+  if (ImGui::IsItemActive() && !ImGui::IsItemActivated() &&
+      (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 3) || ImGui::IsMouseDown(ImGuiMouseButton_Middle)))
+    cpr.panPx += glm::dvec2(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+    if (!panel.windowAtPress) panel.windowAtPress = cpr.window;
+    const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Right, 0.f);
+    cpr.window = draggedWindowLevel(*panel.windowAtPress, {drag.x, drag.y});
+  }
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) fitCprPane(cpr);
+  if (!(cpr == doc().cpr)) commit(CprEdit{cpr});
+
+  if (!ImGui::IsItemHovered()) return;
+  const glm::ivec2 pixel = cprPixelUnder(placement, {io.MousePos.x, io.MousePos.y});
+  panel.hovered = pickCpr(*panel.cpr, pixel.x, pixel.y);
+  const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
+  if (!panel.hovered || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) ||
+      drag.x * drag.x + drag.y * drag.y > 9)
+    return;
+  if (vessels_.ui.traceTool) traceOnCprClick(*panel.hovered);
+  else moveCprCursorTo(*panel.hovered);
+}
+
+// The clicked line's centerline point is the cursor, in the CPR, on the DVR image and in the
+// slices (one 3-D cursor).
+void App::moveCprCursorTo(const CprPick& pick) {
+  const Centerlines* centerlines = framedCenterlines();
+  const int path = doc().cpr.path < 0 ? pick.path : doc().cpr.path;
+  if (!centerlines || path < 0 || path >= int(centerlines->paths.size()) ||
+      centerlines->paths[path].points.size() < 2)
+    return;
+  const PathPlace place = placeOnPath(centerlines->paths[path], pick.arcMm);
+  cprView_.cursor = CenterlinePlace{path, pick.arcMm, place.pointMm};
+  moveSliceCursor(place.pointMm);
+}
+
+// Ticks every rulerStepMm beside the lumen (kRulerOffsetMm off the centerline, on its left in
+// the image), labelled every fifth, and each path's name at its far end.
+void App::drawCprRuler(const CprPlacement& placement) {
+  const Cpr& cpr = *cprView_.cpr;
+  const double screenPerMm = placement.scale / cpr.layout.pixelMm;
+  const double offsetMm = std::min(kRulerOffsetMm, 0.3 * cpr.layout.widthMm);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 color = IM_COL32(255, 217, 26, 255);
+  for (const CprRulerTick& tick : cprRulerTicks(cpr.layout.curves, rulerStepMm(screenPerMm))) {
+    const glm::dvec2 at = screenOfCprPixel(placement, tick.pixel) + offsetMm * screenPerMm * tick.across;
+    const double length = tick.major ? 9 : 4;
+    draw->AddLine(toIm(at), toIm(at + length * tick.across), color, 1.5f);
+    if (!tick.major) continue;
+    char label[32];
+    std::snprintf(label, sizeof label, "%.0f", tick.arcMm);
+    const ImVec2 size = ImGui::CalcTextSize(label);
+    const glm::dvec2 end = at + (length + 3) * tick.across;
+    textWithShadow(draw,
+                   ImVec2(float(end.x) - (tick.across.x < 0 ? size.x : 0), float(end.y) - size.y / 2),
+                   color, label);
+  }
+  const Centerlines* centerlines = framedCenterlines();
+  for (const CprCurve& curve : cpr.layout.curves) {
+    const int path = doc().cpr.path < 0 ? curve.path : doc().cpr.path;
+    if (curve.pixels.empty() || path >= int(centerlines->paths.size())) continue;
+    const std::string& name = centerlines->paths[path].name;
+    const std::string label = name.empty() ? "path " + std::to_string(path) : name;
+    const glm::dvec2 end = screenOfCprPixel(placement, curve.pixels.back());
+    textWithShadow(draw, ImVec2(float(end.x) + 6, float(end.y) - ImGui::GetTextLineHeight() - 4),
+                   IM_COL32(230, 230, 230, 255), label.c_str());
+  }
+}
+
+// The cursor on the CPR: a ring and a line across the image at its arc length.
+void App::drawCprCursor(const CprPlacement& placement, ImVec2 paneMin, ImVec2 paneMax) {
+  CprViewPanel& panel = cprView_;
+  const CprState& state = doc().cpr;
+  panel.cursorPixel.reset();
+  if (panel.cursor && (state.path < 0 || state.path == panel.cursor->path))
+    panel.cursorPixel =
+        cprPixelOf(panel.cpr->layout, state.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
+  if (!panel.cursorPixel) return;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 mark = toIm(screenOfCprPixel(placement, *panel.cursorPixel));
+  const ImU32 green = IM_COL32(90, 255, 120, 255), faint = IM_COL32(90, 255, 120, 160);
+  draw->AddCircle(mark, 7, green, 0, 2);
+  draw->AddLine(ImVec2(paneMin.x, mark.y), ImVec2(mark.x - 8, mark.y), faint);
+  draw->AddLine(ImVec2(mark.x + 8, mark.y), ImVec2(paneMax.x, mark.y), faint);
+}
+
+// The section perpendicular to the path at the cursor, in the pane's lower right corner, colored
+// as the CPR; image up is the DVR view's up (towards the viewer for a vessel along it).
+void App::drawCrossSectionInset(ImVec2 paneMin, ImVec2 paneMax) {
+  CprViewPanel& panel = cprView_;
+  CrossSectionInset& inset = panel.inset;
+  const Centerlines* centerlines = framedCenterlines();
+  if (!panel.cursor || !panel.cursorPixel || panel.cursor->path >= int(centerlines->paths.size()))
+    return;
+  const std::pair<CenterlinePlace, CprLook> wanted{*panel.cursor, cprLook()};
+  if (inset.madeFor != wanted) {
+    const PathPlace place = placeOnPath(centerlines->paths[panel.cursor->path], panel.cursor->arcMm);
+    const glm::dvec3 up = shownView_.up, towardsViewer = -shownView_.viewDir;
+    const glm::dvec3 hint = std::abs(glm::dot(place.tangent, up)) < 0.7 ? up : towardsViewer;
+    inset.section = sampleCrossSection(data_.volume, place.pointMm, place.tangent, hint, kInsetExtentMm,
+                                       kInsetPixelMm);
+    inset.texture.begin(makeDisplayImage(crossSectionImage(*inset.section, wanted.second)));
+    while (!inset.texture.step(std::size_t(16) << 20)) {
+    }
+    inset.madeFor = wanted;
+  }
+  const float side = std::floor(std::min(paneMax.x - paneMin.x, paneMax.y - paneMin.y) * 0.4f);
+  if (side < 48) return;
+  const ImVec2 max(paneMax.x - 6, paneMax.y - 6), min(max.x - side, max.y - side);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddImage(inset.texture.id(), min, max);
+  draw->AddRect(ImVec2(min.x - 1, min.y - 1), ImVec2(max.x + 1, max.y + 1), IM_COL32(90, 255, 120, 255));
+  const ImVec2 centre((min.x + max.x) / 2, (min.y + max.y) / 2);
+  const ImU32 mark = IM_COL32(90, 255, 120, 200);
+  for (const float sign : {-1.f, 1.f}) {  // a crosshair with a gap over the lumen's centre
+    draw->AddLine(ImVec2(centre.x + sign * 6, centre.y), ImVec2(centre.x + sign * 14, centre.y), mark);
+    draw->AddLine(ImVec2(centre.x, centre.y + sign * 6), ImVec2(centre.x, centre.y + sign * 14), mark);
+  }
+  char caption[48];
+  std::snprintf(caption, sizeof caption, "section %.0f mm", kInsetExtentMm);
+  textWithShadow(draw, ImVec2(min.x + 4, min.y + 2), IM_COL32(230, 230, 230, 255), caption);
+  noteRect("cpr_section", min, max);
+}
+
+// The pane: the CPR at its zoom and pan with the ruler, names, cursor and cross-section; hovering
+// reads arc length and HU and marks the point on the DVR image.
 void App::drawCprView() {
   CprViewPanel& panel = cprView_;
   panel.hovered.reset();
   panel.markedOnDvr.reset();
+  panel.held = false;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Right)) panel.windowAtPress.reset();
   const float width = cprViewWidth();
   if (width <= 0) return;
   updateCpr();
+  showCprLook();
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(std::max(io.DisplaySize.x - kPanelWidth - width, 64.f), 0));
   ImGui::SetNextWindowSize(ImVec2(width, std::max(io.DisplaySize.y - kStatusHeight, 64.f)));
@@ -178,28 +349,28 @@ void App::drawCprView() {
     ImGui::End();
     return;
   }
-  const Rgb8Image& image = panel.frame->levels.front();
-  const ImVec2 avail = ImGui::GetContentRegionAvail(), at = ImGui::GetCursorScreenPos();
-  const float scale =
-      std::max(std::min(avail.x / float(image.width), avail.y / float(image.height)), 1e-3f);
-  const ImVec2 size(float(image.width) * scale, float(image.height) * scale);
-  panel.imageMin = ImVec2(at.x + std::max(avail.x - size.x, 0.f) / 2, at.y);
-  panel.imageMax = ImVec2(panel.imageMin.x + size.x, panel.imageMin.y + size.y);
-  ImGui::SetCursorScreenPos(panel.imageMin);
-  ImGui::InvisibleButton("cpr_image", ImVec2(std::max(size.x, 1.f), std::max(size.y, 1.f)));
-  noteRect("cpr_image");
+  const ImVec2 paneMin = ImGui::GetCursorScreenPos();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const ImVec2 paneMax(paneMin.x + std::max(avail.x, 16.f), paneMin.y + std::max(avail.y, 16.f));
+  const glm::ivec2 imageSize{panel.cpr->layout.width, panel.cpr->layout.height};
+  ImGui::InvisibleButton("cpr_pane", ImVec2(paneMax.x - paneMin.x, paneMax.y - paneMin.y),
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  noteRect("cpr_pane");
+  const glm::dvec2 panePx{paneMin.x, paneMin.y}, paneSize{paneMax.x - paneMin.x, paneMax.y - paneMin.y};
+  handleCprMouse(placeCpr(imageSize, panePx, paneSize, doc().cpr.zoom, doc().cpr.panPx));
+  const CprPlacement placement = placeCpr(imageSize, panePx, paneSize, doc().cpr.zoom, doc().cpr.panPx);
+  panel.imageMin = toIm(placement.min);
+  panel.imageMax = toIm(placement.min + glm::dvec2(imageSize) * placement.scale);
+  noteRect("cpr_image", panel.imageMin, panel.imageMax);
   ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(paneMin, paneMax, true);
   draw->AddImage(panel.texture.id(), panel.imageMin, panel.imageMax);
+  drawCprRuler(placement);
+  drawCprCursor(placement, paneMin, paneMax);
+  drawCrossSectionInset(paneMin, paneMax);
+  draw->PopClipRect();
 
-  if (ImGui::IsItemHovered()) {
-    const int x = int(std::floor((io.MousePos.x - panel.imageMin.x) / scale));
-    const int y = int(std::floor((io.MousePos.y - panel.imageMin.y) / scale));
-    panel.hovered = pickCpr(*panel.cpr, x, y);
-    const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
-    if (panel.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
-        drag.x * drag.x + drag.y * drag.y <= 9)
-      traceOnCprClick(*panel.hovered);
-  }
   char text[128];
   if (panel.hovered)
     std::snprintf(text, sizeof text, "arc %.1f mm   %.0f HU   path %d", panel.hovered->arcMm,
@@ -207,33 +378,24 @@ void App::drawCprView() {
   else std::snprintf(text, sizeof text, "hover the CPR: arc length, HU");
   draw->AddText(hoverLine, panel.hovered ? IM_COL32(255, 230, 90, 255) : IM_COL32(150, 150, 150, 255),
                 text);
-  panel.cursorPixel.reset();
-  if (panel.cursor && (cprState.path < 0 || cprState.path == panel.cursor->path))
-    panel.cursorPixel =
-        cprPixelOf(panel.cpr->layout, cprState.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
-  if (panel.cursorPixel) {
-    const ImVec2 mark(panel.imageMin.x + float(panel.cursorPixel->x + 0.5) * scale,
-                      panel.imageMin.y + float(panel.cursorPixel->y + 0.5) * scale);
-    draw->AddCircle(mark, 7, IM_COL32(90, 255, 120, 255), 0, 2);
-    draw->AddLine(ImVec2(panel.imageMin.x, mark.y), ImVec2(mark.x - 8, mark.y),
-                  IM_COL32(90, 255, 120, 160));
-    draw->AddLine(ImVec2(mark.x + 8, mark.y), ImVec2(panel.imageMax.x, mark.y),
-                  IM_COL32(90, 255, 120, 160));
-  }
-  if (shown_ && viewport_.hasImage) {  // the hovered point (yellow) and the cursor (green) on the DVR
-    const ViewGeometry& shownView = shownView_;
-    ImDrawList* front = ImGui::GetForegroundDrawList();
-    front->PushClipRect(viewport_.min, viewport_.max, true);
-    if (panel.cursor)
-      front->AddCircle(dvrScreenOf(shownView, panel.cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0,
-                       2);
-    if (panel.hovered) {
-      panel.markedOnDvr = dvrScreenOf(shownView, panel.hovered->pointMm);
-      front->AddCircle(*panel.markedOnDvr, 7, IM_COL32(255, 230, 90, 255), 0, 2);
-    }
-    front->PopClipRect();
-  }
+  markCprOnDvr();
   ImGui::End();
+}
+
+// The hovered point (yellow) and the cursor (green) on the DVR image.
+void App::markCprOnDvr() {
+  CprViewPanel& panel = cprView_;
+  if (!shown_ || !viewport_.hasImage) return;
+  ImDrawList* front = ImGui::GetForegroundDrawList();
+  front->PushClipRect(viewport_.min, viewport_.max, true);
+  if (panel.cursor)
+    front->AddCircle(dvrScreenOf(shownView_, panel.cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0,
+                     2);
+  if (panel.hovered) {
+    panel.markedOnDvr = dvrScreenOf(shownView_, panel.hovered->pointMm);
+    front->AddCircle(*panel.markedOnDvr, 7, IM_COL32(255, 230, 90, 255), 0, 2);
+  }
+  front->PopClipRect();
 }
 
 }  // namespace angio

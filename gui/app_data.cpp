@@ -151,6 +151,7 @@ void App::drawDataSection() {
   info.name = data_.name;
   info.description = data_.description;
   info.densities = huRange_;
+  info.huCalibrated = huCalibrated_;
   info.loading = load_.running();
   info.loadProgress = load_.progress();
   info.loadSeconds = load_.seconds();

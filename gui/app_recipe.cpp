@@ -30,8 +30,7 @@ std::optional<HybridCprRecipe> App::hybridRecipe() const {
   HybridCprRecipe recipe;
   recipe.path = cpr.path < 0 ? "all" : std::to_string(cpr.path);
   recipe.transitionMm = cpr.transitionMm;
-  if (cpr.coloring == CprColoring::ctaLumen) recipe.grey = kCtaLumenWindow;
-  if (cpr.coloring == CprColoring::calcium) recipe.grey = kCalciumWindow;
+  if (cpr.coloring != CprColoring::focusTf) recipe.grey = cpr.window;
   return recipe;
 }
 

@@ -111,6 +111,7 @@ nlohmann::json App::dataReport() const {
           {"orientation",
            std::string{lpsLetter(v.direction[0]), lpsLetter(v.direction[1]), lpsLetter(v.direction[2])}},
           {"hu_range", hu},
+          {"hu_calibrated", huRange_ ? nlohmann::json(huCalibrated_) : nlohmann::json(nullptr)},
           {"loading", load_.running()},
           {"load_error", loadError_},
           {"recent_files", doc().recentFiles},

@@ -19,6 +19,7 @@
 #include "render/progressive_renderer.h"
 #include "render/slice_images.h"
 #include "vessel/centerline.h"
+#include "vessel/cpr_display.h"
 #include "vessel/cpr_layout.h"
 #include "vessel/vessel_glyph.h"
 
@@ -49,13 +50,21 @@ const char* cprColoringName(CprColoring coloring);
 
 // The CPR section: the view beside the image and the DVR+CPR hybrid in the image share the path
 // and the coloring. (The VesselGlyph settings the hybrid builds on are VesselGlyphState's.)
+constexpr double kMinCprWidthMm = 10, kMaxCprWidthMm = 200;  // the section's width slider
+
 struct CprState {
   bool shown = false;  // the CPR view beside the image
   CprMode mode = CprMode::straightened;
   int path = -1;  // centerline path index, -1 = all paths
   CprColoring coloring = CprColoring::ctaLumen;
-  bool hybrid = false;      // the DVR+CPR hybrid (needs VesselGlyph on)
-  double transitionMm = 0;  // the hybrid's transition band, 0 = hard edge
+  WindowLevel window = kCtaLumenWindow;  // the grey colorings' (the presets set it, a drag too)
+  double widthMm = kDefaultCprWidthMm;   // lateral extent of the straightened and stretched CPR
+  bool hybrid = false;                   // the DVR+CPR hybrid (needs VesselGlyph on)
+  double transitionMm = 0;               // the hybrid's transition band, 0 = hard edge
+  // The CPR pane as a reading view (gui/cpr_pane.h): zoom about the fitted image's centre, pan in
+  // screen pixels. Back to the fitted image for another path, mode, centerlines or dataset.
+  double zoom = 1;
+  glm::dvec2 panPx{0.0};
 
   friend bool operator==(const CprState&, const CprState&) = default;
 };

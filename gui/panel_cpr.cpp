@@ -11,9 +11,35 @@ namespace angio {
 namespace {
 
 constexpr double kMaxTransitionMm = 10;
+constexpr double kMinWindowHu = 1, kMaxWindowHu = 5000, kMinLevelHu = -1024, kMaxLevelHu = 3071;
 constexpr CprMode kModes[] = {CprMode::straightened, CprMode::stretched, CprMode::projected};
 constexpr const char* kColorings[] = {"CTA lumen", "calcium", "focus TF"};
 constexpr const char* kColoringKeys[] = {"cta_lumen", "calcium", "focus_tf"};  // report layout names
+
+// The grey window (also a right-drag in the pane) and the lateral width; the rows stay when they
+// do not apply (greyed), so nothing moves under the pointer.
+void drawWindowAndWidth(CprState& cpr, WidgetRects& rects) {
+  ImGui::BeginDisabled(cpr.coloring == CprColoring::focusTf);
+  ImGui::SetNextItemWidth(90);
+  ImGui::DragScalar("window##cpr", ImGuiDataType_Double, &cpr.window.window, 4.f, &kMinWindowHu,
+                    &kMaxWindowHu, "%.0f HU");
+  noteRect(rects, "cpr_window");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  ImGui::DragScalar("level##cpr", ImGuiDataType_Double, &cpr.window.level, 4.f, &kMinLevelHu,
+                    &kMaxLevelHu, "%.0f HU");
+  noteRect(rects, "cpr_level");
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(cpr.mode == CprMode::projected);
+  ImGui::SetNextItemWidth(150);
+  ImGui::SliderScalar("width##cpr", ImGuiDataType_Double, &cpr.widthMm, &kMinCprWidthMm, &kMaxCprWidthMm,
+                      "%.0f mm");
+  ImGui::EndDisabled();
+  noteRect(rects, "cpr_width");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(cpr.mode == CprMode::projected ? "The projected CPR shows whole rows of the view"
+                                                     : "Lateral extent of the CPR about the centerline");
+}
 
 void drawCprView(CprState& cpr, const Centerlines& centerlines, WidgetRects& rects) {
   ImGui::Checkbox("CPR view beside the image", &cpr.shown);
@@ -33,9 +59,15 @@ void drawCprView(CprState& cpr, const Centerlines& centerlines, WidgetRects& rec
   ImGui::TextUnformatted("color");
   for (int n = 0; n < 3; ++n) {
     ImGui::SameLine();
-    if (ImGui::RadioButton(kColorings[n], int(cpr.coloring) == n)) cpr.coloring = CprColoring(n);
+    const CprColoring coloring = CprColoring(n);
+    if (ImGui::RadioButton(kColorings[n], cpr.coloring == coloring)) {
+      cpr.coloring = coloring;
+      if (coloring == CprColoring::ctaLumen) cpr.window = kCtaLumenWindow;  // the presets
+      if (coloring == CprColoring::calcium) cpr.window = kCalciumWindow;
+    }
     noteRect(rects, std::string("cpr_colour_") + kColoringKeys[n]);
   }
+  drawWindowAndWidth(cpr, rects);
 }
 
 void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, WidgetRects& rects) {

@@ -55,10 +55,18 @@ void drawDataset(const DataPanelInfo& info) {
           d[0].x, d[1].x, d[2].x, d[0].y, d[1].y, d[2].y, d[0].z, d[1].z, d[2].z);
     }
   }
-  if (info.densities)
+  if (info.densities) {
     ImGui::Text("HU %.0f .. %.0f", huOfDensity(info.densities->minDensity),
                 huOfDensity(info.densities->maxDensity));
-  else ImGui::TextDisabled("HU range: counting...");
+    if (!info.huCalibrated) {  // on the same row: rows do not come and go under the pointer
+      ImGui::SameLine();
+      ImGui::TextColored(ImVec4(1.f, 0.75f, 0.3f, 1.f), "not calibrated HU?");
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Almost no voxels below -500 HU (air): the values may not be Hounsfield units.\n"
+            "The TF presets and window/level presets assume HU; fit a TF to the histogram.");
+    }
+  } else ImGui::TextDisabled("HU range: counting...");
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ struct DataPanelInfo {
   const Volume* volume = nullptr;  // the shown dataset's
   std::string name, description;
   std::optional<DensityRange> densities;  // none: still counting
+  bool huCalibrated = true;               // with densities: they look like calibrated HU
   bool loading = false;
   double loadProgress = 0, loadSeconds = 0;  // while loading
   bool cancelRequested = false;

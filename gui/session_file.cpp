@@ -13,6 +13,7 @@
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
+#include "gui/cpr_pane.h"
 #include "gui/session_vessels.h"
 
 namespace angio {
@@ -28,9 +29,17 @@ constexpr int kVersion = 1;
 constexpr double kMaxTransitionMm = 100;
 
 Json cprJson(const CprState& cpr) {
-  return {{"shown", cpr.shown},   {"mode", toString(cpr.mode)},
-          {"path", cpr.path},     {"colouring", cprColoringName(cpr.coloring)},
-          {"hybrid", cpr.hybrid}, {"transition_mm", cpr.transitionMm}};
+  return {{"shown", cpr.shown},
+          {"mode", toString(cpr.mode)},
+          {"path", cpr.path},
+          {"colouring", cprColoringName(cpr.coloring)},
+          {"window", cpr.window.window},
+          {"level", cpr.window.level},
+          {"width_mm", cpr.widthMm},
+          {"zoom", cpr.zoom},
+          {"pan_px", {cpr.panPx.x, cpr.panPx.y}},
+          {"hybrid", cpr.hybrid},
+          {"transition_mm", cpr.transitionMm}};
 }
 
 Json vesselGlyphJson(const VesselGlyphState& vg) {
@@ -191,13 +200,7 @@ struct SessionReader {
     }
     view.angleDeg = number(v, "angle_deg", -1e6, 1e6, view.angleDeg);
     view.zoom = number(v, "zoom", 1e-3, 1e3, view.zoom);
-    if (v.contains("pan_px")) {
-      const Json& pan = v["pan_px"];
-      if (!pan.is_array() || pan.size() != 2 || !pan[0].is_number() || !pan[1].is_number())
-        fail("view pan_px is not [x, y]");
-      view.panPx = {pan[0].get<double>(), pan[1].get<double>()};
-      if (!std::isfinite(view.panPx.x + view.panPx.y)) fail("view pan_px is not finite");
-    }
+    view.panPx = pan(v, "view", view.panPx);
     view.degreesPerPixel = number(v, "degrees_per_pixel", 1e-3, 100, view.degreesPerPixel);
     view.autoSpin = flag(v, "auto_spin", view.autoSpin);
     view.spinDegreesPerSecond =
@@ -215,6 +218,17 @@ struct SessionReader {
       sampling.filter = *filter;
     }
     return sampling;
+  }
+
+  // An image's pan ("pan_px": [x, y] screen pixels) in the view or the CPR section.
+  glm::dvec2 pan(const Json& object, const std::string& section, glm::dvec2 fallback) const {
+    if (!object.contains("pan_px")) return fallback;
+    const Json& pan = object["pan_px"];
+    if (!pan.is_array() || pan.size() != 2 || !pan[0].is_number() || !pan[1].is_number())
+      fail(section + " pan_px is not [x, y]");
+    const glm::dvec2 value(pan[0].get<double>(), pan[1].get<double>());
+    if (!std::isfinite(value.x + value.y)) fail(section + " pan_px is not finite");
+    return value;
   }
 
   glm::dvec3 vector(const Json& object, const char* key, glm::dvec3 fallback) const {
@@ -276,7 +290,13 @@ struct SessionReader {
                                       [&](CprColoring c) { return coloring == cprColoringName(c); });
       if (known == std::end(all)) fail("cpr colouring is not cta-lumen, calcium or focus-tf");
       cpr.coloring = *known;
+      if (cpr.coloring == CprColoring::calcium) cpr.window = kCalciumWindow;  // its preset
     }
+    cpr.window.window = number(c, "window", 1, 1e5, cpr.window.window);
+    cpr.window.level = number(c, "level", -1e5, 1e5, cpr.window.level);
+    cpr.widthMm = number(c, "width_mm", kMinCprWidthMm, kMaxCprWidthMm, cpr.widthMm);
+    cpr.zoom = number(c, "zoom", kMinCprZoom, kMaxCprZoom, cpr.zoom);
+    cpr.panPx = pan(c, "cpr", cpr.panPx);
     cpr.hybrid = flag(c, "hybrid", cpr.hybrid);
     cpr.transitionMm = number(c, "transition_mm", 0, kMaxTransitionMm, cpr.transitionMm);
     return cpr;

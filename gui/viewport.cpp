@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "gui/zoom_pan.h"
+
 namespace angio {
 
 namespace {
@@ -11,17 +13,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinZoom = 0.1, kMaxZoom = 64;
 
-void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 color, const char* text) {
-  draw->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
-  draw->AddText(at, color, text);
-}
-
 // Zoom by the wheel about the cursor: the image point under the cursor stays under it.
 void zoomAboutCursor(ViewState& view, ImVec2 centre, ImVec2 mouse, float wheel) {
-  const double newZoom = std::clamp(view.zoom * std::pow(1.2, double(wheel)), kMinZoom, kMaxZoom);
-  const glm::dvec2 fromCentre(mouse.x - centre.x - view.panPx.x, mouse.y - centre.y - view.panPx.y);
-  view.panPx += fromCentre - fromCentre * (newZoom / view.zoom);
-  view.zoom = newZoom;
+  zoomAboutPointer(view.zoom, view.panPx, glm::dvec2(mouse.x - centre.x, mouse.y - centre.y), wheel,
+                   kMinZoom, kMaxZoom);
 }
 
 // Letters at the middle of each edge of the image's visible part, so they stay put on screen
@@ -103,6 +98,11 @@ double scaleBarMm(double pixelsPerMm, double targetPx) {
   for (double step : {1.0, 2.0, 5.0, 10.0})
     if (step * power <= target) best = step * power;
   return best;
+}
+
+void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 color, const char* text) {
+  draw->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
+  draw->AddText(at, color, text);
 }
 
 ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& shownView,

@@ -60,6 +60,9 @@ double zoomToFitView(glm::dvec3 extentMm, Axis axis, double angleDeg, glm::dvec2
 double scaleBarMm(double pixelsPerMm, double targetPx);
 
 // Draws into the current window's remaining content region; `image` may be null (nothing yet).
+// Overlay text with a one-pixel shadow, legible over any image.
+void textWithShadow(ImDrawList* draw, ImVec2 at, ImU32 color, const char* text);
+
 ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& view,
                                  const ViewportOverlay& overlay);
 

@@ -40,10 +40,17 @@ void change(Document& d, const RenderingEdit& edit) {
   d.tf.mipLevel = edit.mipLevel;
 }
 void change(Document& d, const VesselGlyphEdit& edit) { d.vesselGlyph = edit.vesselGlyph; }
-void change(Document& d, const CprEdit& edit) { d.cpr = edit.cpr; }
+// The CPR pane shows the fitted image again for another image: another path, mode or width.
+void change(Document& d, const CprEdit& edit) {
+  const CprState before = d.cpr;
+  d.cpr = edit.cpr;
+  if (before.path != d.cpr.path || before.mode != d.cpr.mode || before.widthMm != d.cpr.widthMm)
+    fitCprPane(d.cpr);
+}
 void change(Document& d, const CenterlineFileEdit& edit) {
   d.vesselGlyph.centerlines = edit.given;
   d.vesselGlyph.centerlinesAbsolute = edit.absolute;
+  fitCprPane(d.cpr);
 }
 // A session's labels and paths come back from App once its dataset is there.
 void change(Document& d, const DatasetOpened& edit) {
@@ -54,6 +61,7 @@ void change(Document& d, const DatasetOpened& edit) {
   d.vessels.unsaved = false;
   d.view.zoom = 1;
   d.view.panPx = glm::dvec2(0.0);
+  fitCprPane(d.cpr);
   addRecentFile(d.recentFiles, edit.dataset);
   if (edit.ofSession) return;
   d.vesselGlyph.centerlines.clear();
@@ -103,6 +111,11 @@ void normalise(Document& next, const Document& before, bool brought) {
 }
 
 }  // namespace
+
+void fitCprPane(CprState& cpr) {
+  cpr.zoom = 1;
+  cpr.panPx = glm::dvec2(0.0);
+}
 
 std::vector<std::string> droppedByNewDataset(const Document& before) {
   std::vector<std::string> dropped;

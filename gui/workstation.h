@@ -41,6 +41,9 @@ struct VesselGlyphEdit {
   VesselGlyphState vesselGlyph;
   friend bool operator==(const VesselGlyphEdit&, const VesselGlyphEdit&) = default;
 };
+// The CPR pane back to the fitted image (zoom 1, no pan).
+void fitCprPane(CprState& cpr);
+
 struct CprEdit {
   CprState cpr;
   friend bool operator==(const CprEdit&, const CprEdit&) = default;

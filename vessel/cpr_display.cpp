@@ -60,9 +60,28 @@ void drawMarker(Image& image, const std::vector<CprCurve>& curves) {
 // Ticks across the centerline every rulerStepMm of arc length, labelled (in mm) every fifth.
 void drawRuler(Image& image, const std::vector<CprCurve>& curves, double stepMm) {
   cv::Mat canvas = canvasOf(image);
+  for (const CprRulerTick& tick : cprRulerTicks(curves, stepMm)) {
+    const double half = tick.major ? 6 : 3;
+    const glm::dvec2 a = tick.pixel - half * tick.across, b = tick.pixel + half * tick.across;
+    cv::line(canvas, cv::Point(int(std::lround(a.x)), int(std::lround(a.y))),
+             cv::Point(int(std::lround(b.x)), int(std::lround(b.y))), scalarOf(kMarkerColor), 1,
+             cv::LINE_8);
+    if (!tick.major) continue;
+    const glm::dvec2 label = tick.pixel + (half + 3) * (tick.across.x >= 0 ? tick.across : -tick.across);
+    cv::putText(canvas, std::to_string(long(std::lround(tick.arcMm))),
+                cv::Point(int(std::lround(label.x)), int(std::lround(label.y + 4))),
+                cv::FONT_HERSHEY_PLAIN, 0.8, scalarOf(kMarkerColor), 1, cv::LINE_8);
+  }
+}
+
+}  // namespace
+
+std::vector<CprRulerTick> cprRulerTicks(const std::vector<CprCurve>& curves, double stepMm) {
+  std::vector<CprRulerTick> ticks;
+  if (!(stepMm > 0)) return ticks;
   for (const CprCurve& curve : curves) {
     if (curve.pixels.size() < 2) continue;
-    // A curve that starts at a junction continues a trunk whose ticks are already drawn.
+    // A curve that starts at a junction continues a trunk whose ticks are already there.
     const bool continues = curve.arcMm.front() > 0;
     long k = long(std::ceil(curve.arcMm.front() / stepMm));
     if (continues && k * stepMm <= curve.arcMm.front()) ++k;
@@ -72,26 +91,17 @@ void drawRuler(Image& image, const std::vector<CprCurve>& curves, double stepMm)
       while (n + 2 < curve.pixels.size() && curve.arcMm[n + 1] < s) ++n;
       const double span = curve.arcMm[n + 1] - curve.arcMm[n];
       const double t = span > 0 ? std::clamp((s - curve.arcMm[n]) / span, 0.0, 1.0) : 0.0;
-      const glm::dvec2 p = glm::mix(curve.pixels[n], curve.pixels[n + 1], t);
       glm::dvec2 along = curve.pixels[n + 1] - curve.pixels[n];
       along = glm::length(along) > 0 ? glm::normalize(along) : glm::dvec2(0, 1);
-      const glm::dvec2 across{-along.y, along.x};
-      const bool major = k % 5 == 0;
-      const double half = major ? 6 : 3;
-      const glm::dvec2 a = p - half * across, b = p + half * across;
-      cv::line(canvas, cv::Point(int(std::lround(a.x)), int(std::lround(a.y))),
-               cv::Point(int(std::lround(b.x)), int(std::lround(b.y))), scalarOf(kMarkerColor), 1,
-               cv::LINE_8);
-      if (!major) continue;
-      const glm::dvec2 label = p + (half + 3) * (across.x >= 0 ? across : -across);
-      cv::putText(canvas, std::to_string(long(std::lround(s))),
-                  cv::Point(int(std::lround(label.x)), int(std::lround(label.y + 4))),
-                  cv::FONT_HERSHEY_PLAIN, 0.8, scalarOf(kMarkerColor), 1, cv::LINE_8);
+      ticks.push_back({glm::mix(curve.pixels[n], curve.pixels[n + 1], t),
+                       {-along.y, along.x},
+                       s,
+                       k % 5 == 0,
+                       curve.path});
     }
   }
+  return ticks;
 }
-
-}  // namespace
 
 std::optional<WindowLevel> windowPreset(const std::string& name) {
   if (name == "cta-lumen") return kCtaLumenWindow;

@@ -29,6 +29,18 @@ struct CprDisplay {
   double rulerStepMm = 10;  // a tick every step, a label every 5 steps
 };
 
+// The arc-length ruler's ticks, every stepMm along each curve (a curve that continues a shared
+// trunk starts after the trunk's last tick), a major one every fifth. `pixel` is on the curve (CPR
+// pixel coordinates, centres at integers), `across` the unit normal to the curve there,
+// (-along.y, along.x): towards -x where the curve runs down the image.
+struct CprRulerTick {
+  glm::dvec2 pixel{0.0}, across{0.0};
+  double arcMm = 0;
+  bool major = false;
+  int path = 0;  // the curve's
+};
+std::vector<CprRulerTick> cprRulerTicks(const std::vector<CprCurve>& curves, double stepMm);
+
 // Grey value of a HU under a window/level: clamp((HU - (level - window / 2)) / window, 0, 1).
 float windowGrey(float hu, WindowLevel windowLevel);
 

@@ -26,7 +26,27 @@ bool insideDomain(const Volume& volume, glm::dvec3 pointMm) {
          glm::all(glm::lessThanEqual(pointMm, extent));
 }
 
+glm::dvec3 pointAtArc(const CenterlinePath& path, const std::vector<double>& arcs, double arcMm) {
+  const auto upper = std::upper_bound(arcs.begin(), arcs.end(), arcMm);
+  const std::size_t n = std::clamp<std::size_t>(std::size_t(upper - arcs.begin()), 1, arcs.size() - 1);
+  const double span = arcs[n] - arcs[n - 1];
+  const double f = span > 0 ? std::clamp((arcMm - arcs[n - 1]) / span, 0.0, 1.0) : 0.0;
+  return glm::mix(path.points[n - 1].positionMm, path.points[n].positionMm, f);
+}
+
 }  // namespace
+
+PathPlace placeOnPath(const CenterlinePath& path, double arcMm) {
+  if (path.points.size() < 2) throw std::invalid_argument("a path place needs 2 points");
+  const std::vector<double> arcs = arcLengthsMm(path);
+  const double arc = std::clamp(arcMm, 0.0, arcs.back());
+  PathPlace place;
+  place.pointMm = pointAtArc(path, arcs, arc);
+  const glm::dvec3 chord = pointAtArc(path, arcs, std::min(arc + kTangentSpanMm / 2, arcs.back())) -
+                           pointAtArc(path, arcs, std::max(arc - kTangentSpanMm / 2, 0.0));
+  if (glm::length(chord) > 0) place.tangent = glm::normalize(chord);
+  return place;
+}
 
 CrossSection sampleCrossSection(const Volume& volume, glm::dvec3 centreMm, glm::dvec3 tangent,
                                 glm::dvec3 upHint, double extentMm, double pixelMm) {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "core/volume.h"
+#include "vessel/centerline.h"
 
 namespace angio {
 
@@ -29,5 +30,14 @@ struct CrossSection {
 // in-plane orientation: vAxis is upHint made orthogonal to the tangent (any other axis if parallel).
 CrossSection sampleCrossSection(const Volume& volume, glm::dvec3 centreMm, glm::dvec3 tangent,
                                 glm::dvec3 upHint, double extentMm, double pixelMm);
+
+// The point of `path` at arc length arcMm (clamped to the path) and the path's direction there,
+// the chord over kTangentSpanMm about it: smoother than one segment of a traced, stair-stepped path.
+struct PathPlace {
+  glm::dvec3 pointMm{0.0};
+  glm::dvec3 tangent{0, 0, 1};  // unit
+};
+constexpr double kTangentSpanMm = 4;
+PathPlace placeOnPath(const CenterlinePath& path, double arcMm);  // path: at least 2 points
 
 }  // namespace angio

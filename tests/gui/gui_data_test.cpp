@@ -124,6 +124,7 @@ TEST_F(GuiData, FileBrowserOpensAVolumeThatReplacesThePhantom) {
   EXPECT_EQ(data["description"], "MetaImage int16");
   EXPECT_EQ(data["orientation"], "LPS");
   EXPECT_FALSE(data["hu_range"].is_null());
+  EXPECT_EQ(data["hu_calibrated"], true);  // the phantom holds air around the body
   EXPECT_EQ(data["load_error"], "");
   EXPECT_EQ(data["recent_files"], Json({volume_.string()}));
   EXPECT_EQ(end["state"]["dataset"], volume_.string());

@@ -237,4 +237,69 @@ TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCpr
   EXPECT_NEAR(cursor["cpr_pixel"][1].get<double>(), row, 3.0 / pixelMm);
 }
 
+// The CPR pane as a reading view: the wheel zooms about the pointer (the CPR pixel under it stays),
+// a right drag sets the window 4 HU per pixel, a click puts the cursor on the clicked line's
+// centerline point (in the slices too) with the cross-section inset, a double click fits again.
+TEST_F(GuiVessel, CprPaneZoomsAboutThePointerSetsTheWindowAndPutsTheCursorWithItsSection) {
+  const std::string centerlines = " --centerlines " + file("phantom.csv");
+  const Json start = startState(centerlines);
+  const std::string open = R"({"click": )" + Box(start["runtime"]["layout"]["cpr_shown"]).leftEnd() +
+                           R"(}, {"move": [5, 5]}, {"wait_level": "high"})";
+  ASSERT_EQ(
+      runScript("[" + open + R"(, {"state": ")" + file("open.json") + R"("}])", centerlines).exitCode,
+      0);
+  const Json opened = readJson("open.json");
+  const Json& cpr = opened["runtime"]["vessel_glyph"]["cpr"];
+  const Box image(opened["runtime"]["layout"]["cpr_image"]);
+  const float scale = (image.x1 - image.x0) / cpr["width"].get<float>();
+  const int centreColumn = cpr["width"].get<int>() / 2, row = int(60 / cpr["pixel_mm"].get<double>());
+  const float x = image.x0 + (centreColumn + 0.5f) * scale, y = image.y0 + (row + 0.5f) * scale;
+  const std::string at = Box::at(x, y);
+  const std::string steps = "[" + open + R"(,
+    {"move": )" + at + R"(}, {"wait_ms": 50}, {"state": ")" +
+                            file("before.json") + R"("},
+    {"wheel": {"at": )" + at +
+                            R"(, "delta": 3}}, {"move": )" + at + R"(}, {"wait_ms": 50},
+    {"state": ")" + file("zoomed.json") +
+                            R"("},
+    {"drag": {"from": )" + at +
+                            R"(, "to": )" + Box::at(x + 25, y - 10) + R"(, "button": 1, "steps": 5}},
+    {"click": )" + at + R"(}, {"move": )" +
+                            at + R"(}, {"wait_ms": 100},
+    {"screenshot": ")" + file("pane.png") +
+                            R"("}, {"state": ")" + file("clicked.json") + R"("},
+    {"double_click": )" + at +
+                            R"(}, {"wait_ms": 50}, {"state": ")" + file("fitted.json") + R"("}])";
+  const auto run = runScript(steps, centerlines);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+
+  const Json before = readJson("before.json"), zoomed = readJson("zoomed.json");
+  const Json &hoveredBefore = before["runtime"]["vessel_glyph"]["cpr"]["hovered"],
+             &hoveredZoomed = zoomed["runtime"]["vessel_glyph"]["cpr"]["hovered"];
+  ASSERT_TRUE(hoveredBefore.is_object() && hoveredZoomed.is_object()) << hoveredZoomed;
+  EXPECT_NEAR(zoomed["state"]["cpr"]["zoom"].get<double>(), 1.2 * 1.2 * 1.2, 1e-9);
+  const Box zoomedImage(zoomed["runtime"]["layout"]["cpr_image"]);
+  EXPECT_NEAR((zoomedImage.x1 - zoomedImage.x0) / (image.x1 - image.x0), 1.728, 0.01);
+  // The same CPR pixel under the pointer: the same arc length (one pixel at the first scale).
+  EXPECT_NEAR(hoveredZoomed["arc_mm"].get<double>(), hoveredBefore["arc_mm"].get<double>(),
+              cpr["pixel_mm"].get<double>());
+
+  const Json clicked = readJson("clicked.json");
+  const Json& state = clicked["state"]["cpr"];
+  EXPECT_DOUBLE_EQ(state["window"].get<double>(), 800 + 4 * 25);  // right: wider
+  EXPECT_DOUBLE_EQ(state["level"].get<double>(), 250 - 4 * 10);   // up: lower
+  const Json& cursor = clicked["runtime"]["vessel_glyph"]["cpr"]["cursor"];
+  ASSERT_TRUE(cursor.is_object()) << cursor;
+  EXPECT_NEAR(cursor["arc_mm"].get<double>(), hoveredZoomed["arc_mm"].get<double>(), 1e-6);
+  EXPECT_NEAR(cursor["cpr_pixel"][0].get<double>(), centreColumn, 1.0);
+  // The slices follow: their cursor is the clicked line's centerline point, which the DVR marks.
+  ASSERT_TRUE(clicked["state"]["slices"]["cursor_mm"].is_array()) << clicked["state"]["slices"];
+  EXPECT_TRUE(clicked["runtime"]["layout"].contains("cpr_section"));  // the inset is drawn
+  // Nothing of it asked the 3-D view for an image (a press in the pane is not a turn of the view).
+  EXPECT_EQ(clicked["runtime"]["newest_request"], before["runtime"]["newest_request"]);
+  const Json fitted = readJson("fitted.json");
+  EXPECT_EQ(fitted["state"]["cpr"]["zoom"], 1.0);
+  EXPECT_EQ(fitted["state"]["cpr"]["pan_px"], Json({0.0, 0.0}));
+}
+
 }  // namespace

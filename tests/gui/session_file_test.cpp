@@ -65,7 +65,16 @@ Document unusualSession() {
   s.shading = {false, 0.45, 0.55};
   s.levels[0] = {2.0, 1.5, Filter::nearest, 0.9};
   s.levels[2] = {0.25, 0.125, Filter::mean, 1.0};
-  s.cpr = {true, CprMode::projected, 1, CprColoring::focusTf, true, 3.5};
+  s.cpr = {.shown = true,
+           .mode = CprMode::projected,
+           .path = 1,
+           .coloring = CprColoring::focusTf,
+           .window = {1200, 300},
+           .widthMm = 42,
+           .hybrid = true,
+           .transitionMm = 3.5,
+           .zoom = 2.5,
+           .panPx = {-30, 12.5}};
   s.slices = {true, glm::dvec3(12.5, -3.25, 80), {2000, 500}};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
@@ -155,6 +164,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_EQ(loaded.cpr.coloring, CprColoring::focusTf);
   EXPECT_TRUE(loaded.cpr.hybrid);
   EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
+  EXPECT_EQ(loaded.cpr, saved.cpr);  // and the window, width, zoom and pan
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
   EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
   const VesselGlyphState &vg = loaded.vesselGlyph, &want = saved.vesselGlyph;
@@ -197,6 +207,16 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
   EXPECT_EQ(loaded.vesselGlyph.settings.context, ContextShape::slab);
   EXPECT_TRUE(loaded.vesselGlyph.focusTf.points.empty());  // the preset's, loaded by the app
   EXPECT_EQ(loaded.vesselGlyph.focusPreset, defaults.vesselGlyph.focusPreset);
+}
+
+TEST_F(SessionFileTest, TheCalciumColoringBringsItsWindowUnlessTheSessionGivesOne) {
+  EXPECT_EQ(loadSession(write("a.json", R"({"cpr": {"colouring": "calcium"}})")).cpr.window,
+            kCalciumWindow);
+  EXPECT_EQ(loadSession(write("b.json", R"({"cpr": {"colouring": "calcium", "window": 500,
+                                               "level": 90}})"))
+                .cpr.window,
+            WindowLevel(500, 90));
+  EXPECT_EQ(loadSession(write("c.json", R"({"cpr": {}})")).cpr.window, kCtaLumenWindow);
 }
 
 TEST_F(SessionFileTest, VesselGlyphSectionKeepsDefaultsForMissingKeysAndTakesAnUnboundedSlab) {
@@ -249,6 +269,10 @@ TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
   expectRejected(R"({"cpr": {"path": -2}})", "path");
   expectRejected(R"({"cpr": {"transition_mm": -1}})", "transition_mm");
   expectRejected(R"({"cpr": {"hybrid": "yes"}})", "hybrid is not true or false");
+  expectRejected(R"({"cpr": {"width_mm": 0}})", "width_mm");
+  expectRejected(R"({"cpr": {"window": 0}})", "window");
+  expectRejected(R"({"cpr": {"zoom": 1000}})", "zoom");
+  expectRejected(R"({"cpr": {"pan_px": [1]}})", "cpr pan_px is not [x, y]");
   expectRejected(R"({"slices": {"window": 0}})", "slices.window 0 is out of range");
   expectRejected(R"({"slices": {"cursor_mm": [1, 2]}})", "slices.cursor_mm is not [x, y, z]");
   expectRejected(R"({"slices": {"shown": 1}})", "slices.shown is not true or false");

@@ -211,6 +211,35 @@ TEST(GuiWorkstation, ALoadedCenterlineFileIsRecordedAndNothingElseChanges) {
   EXPECT_EQ(workstation.document(), start);
 }
 
+TEST(GuiWorkstation, TheCprPaneFitsAgainForAnotherImageAndKeepsItsZoomForTheRest) {
+  Document start;
+  start.cpr.shown = true;
+  Workstation workstation(start);
+  CprState zoomed = start.cpr;
+  zoomed.zoom = 3;
+  zoomed.panPx = {40, -20};
+  workstation.apply(CprEdit{zoomed});
+  CprState windowed = zoomed;
+  windowed.window = {300, 100};  // the same image, another window: the zoom stays
+  workstation.apply(CprEdit{windowed});
+  EXPECT_EQ(workstation.document().cpr, windowed);
+  for (const auto& another : {+[](CprState& c) { c.path = 2; }, +[](CprState& c) { c.widthMm = 30; },
+                              +[](CprState& c) { c.mode = CprMode::stretched; }}) {
+    workstation.apply(CprEdit{zoomed});
+    CprState edited = zoomed;
+    another(edited);
+    workstation.apply(CprEdit{edited});
+    EXPECT_EQ(workstation.document().cpr.zoom, 1);
+    EXPECT_EQ(workstation.document().cpr.panPx, glm::dvec2(0.0));
+  }
+  workstation.apply(CprEdit{zoomed});
+  workstation.apply(CenterlineFileEdit{"c.csv", "/data/c.csv"});
+  EXPECT_EQ(workstation.document().cpr.zoom, 1);
+  workstation.apply(CprEdit{zoomed});
+  workstation.apply(DatasetOpened{"/data/b.mha"});
+  EXPECT_EQ(workstation.document().cpr.zoom, 1);
+}
+
 TEST(GuiWorkstation, LabelStylesLiveInTheMainTfAndAPresetWithoutLabelsKeepsThem) {
   Workstation workstation;
   const std::vector<LabelStyle> styles = {{1, "bone", LabelMode::hidden, {}, {1, 1, 1}}};

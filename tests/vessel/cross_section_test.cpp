@@ -61,5 +61,27 @@ TEST(CrossSection, OutsideTheVolumeIsNotSampled) {
   EXPECT_FALSE(std::isnan(section.huAt(section.size - 1, section.size / 2)));
 }
 
+// An L: 20 mm along x, then 20 mm along z.
+CenterlinePath elbow() {
+  CenterlinePath path;
+  for (const glm::dvec3 p : {glm::dvec3(0, 0, 0), glm::dvec3(10, 0, 0), glm::dvec3(20, 0, 0),
+                             glm::dvec3(20, 0, 10), glm::dvec3(20, 0, 20)})
+    path.points.push_back({p, 0});
+  return path;
+}
+
+TEST(PlaceOnPath, InterpolatesByArcLengthAndTakesTheChordAboutThePointAsTangent) {
+  const PathPlace straight = placeOnPath(elbow(), 5);
+  EXPECT_NEAR(glm::distance(straight.pointMm, glm::dvec3(5, 0, 0)), 0, 1e-12);
+  EXPECT_NEAR(glm::distance(straight.tangent, glm::dvec3(1, 0, 0)), 0, 1e-12);
+  const PathPlace bend = placeOnPath(elbow(), 20);  // the corner: the chord runs diagonally
+  EXPECT_NEAR(glm::distance(bend.pointMm, glm::dvec3(20, 0, 0)), 0, 1e-12);
+  EXPECT_NEAR(glm::distance(bend.tangent, glm::normalize(glm::dvec3(1, 0, 1))), 0, 1e-12);
+  const PathPlace past = placeOnPath(elbow(), 99);  // clamped to the end, looking along the path
+  EXPECT_NEAR(glm::distance(past.pointMm, glm::dvec3(20, 0, 20)), 0, 1e-12);
+  EXPECT_NEAR(glm::distance(past.tangent, glm::dvec3(0, 0, 1)), 0, 1e-12);
+  EXPECT_NEAR(glm::distance(placeOnPath(elbow(), -3).pointMm, glm::dvec3(0.0)), 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace angio
