@@ -42,11 +42,7 @@ LoadedDataset loadDataset(const GuiOptions& options) {
     dataset.description = "generated run-off CTA phantom";
     return dataset;
   }
-  LoadedVolume loaded = loadVolumeWithProgress(options.volume);
-  dataset.volume = std::move(loaded.volume);
-  dataset.name = options.volume;
-  dataset.description = loaded.description;
-  return dataset;
+  return loadedDataset(loadVolumeWithProgress(options.volume), options.volume);
 }
 
 // The command line's document, with a session's contents (but its dataset and recent files) over

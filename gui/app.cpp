@@ -1,4 +1,5 @@
 #include "gui/app.h"
+#include "gui/study_banner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -197,6 +198,7 @@ ViewportOverlay App::viewportOverlay() const {
   std::snprintf(caption, sizeof caption, "%.1f deg about %s%s", view.angleDeg, toString(view.axis),
                 doc().mode == Compositing::mip ? "   MIP" : "");
   overlay.caption = caption;
+  overlay.banner = studyBanner(data_.study);
   if (!shown_ || texture_.empty()) return overlay;
   const Sampling& s = shown_->params.sampling;
   char label[96];

@@ -21,6 +21,8 @@
 #include "render/progressive_renderer.h"
 #include "core/ray_pick.h"
 #include "core/volume.h"
+#include "io/study_info.h"
+#include "io/volume_reader.h"
 #include "gui/app_gl.h"
 #include "gui/background_job.h"
 #include "gui/file_browser.h"
@@ -52,7 +54,11 @@ struct LoadedDataset {
   Volume volume;
   std::string name;         // file or folder, or "phantom IxJxK"
   std::string description;  // e.g. "MetaImage float32"
+  StudyInfo study;          // the patient and study of a DICOM series
 };
+
+// A volume read from `name` (a file or a DICOM folder) as the app holds it.
+LoadedDataset loadedDataset(LoadedVolume loaded, const std::string& name);
 
 // What the app starts with: the document, and what only this run needs.
 struct AppStart {

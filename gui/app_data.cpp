@@ -27,7 +27,7 @@ LoadedDataset loadInBackground(const std::string& path, JobControl& control) {
   };
   read.warn = printWarning;
   LoadedVolume loaded = readVolume(path, read);
-  return LoadedDataset{std::move(loaded.volume), path, std::move(loaded.description)};
+  return loadedDataset(std::move(loaded), path);
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -37,6 +37,11 @@ std::string joined(const std::vector<std::string>& items) {
 }
 
 }  // namespace
+
+LoadedDataset loadedDataset(LoadedVolume loaded, const std::string& name) {
+  return LoadedDataset{std::move(loaded.volume), name, std::move(loaded.description),
+                       std::move(loaded.study)};
+}
 
 void App::openDataset(const std::string& path, bool ofSession) {
   if (path.empty()) return;
@@ -150,6 +155,7 @@ void App::drawDataSection() {
   info.volume = &data_.volume;
   info.name = data_.name;
   info.description = data_.description;
+  info.study = data_.study;
   info.densities = huRange_;
   info.huCalibrated = huCalibrated_;
   info.loading = load_.running();

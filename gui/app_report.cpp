@@ -3,6 +3,7 @@
 #include <string>
 
 #include "gui/app.h"
+#include "gui/study_banner.h"
 #include "vessel/vessel_glyph_spec.h"
 
 namespace angio {
@@ -111,6 +112,7 @@ nlohmann::json App::dataReport() const {
           {"orientation",
            std::string{lpsLetter(v.direction[0]), lpsLetter(v.direction[1]), lpsLetter(v.direction[2])}},
           {"hu_range", hu},
+          {"study", studyBanner(data_.study)},
           {"hu_calibrated", huRange_ ? nlohmann::json(huCalibrated_) : nlohmann::json(nullptr)},
           {"loading", load_.running()},
           {"load_error", loadError_},

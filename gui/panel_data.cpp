@@ -6,6 +6,7 @@
 
 #include "core/voxel.h"
 #include "gui/message_row.h"
+#include "gui/study_banner.h"
 #include "gui/viewport.h"
 
 namespace angio {
@@ -40,6 +41,7 @@ void drawLoad(const DataPanelInfo& info, DataPanelRequests& requests, WidgetRect
 void drawDataset(const DataPanelInfo& info) {
   ImGui::TextWrapped("%s", info.name.c_str());
   if (!info.description.empty()) ImGui::TextDisabled("%s", info.description.c_str());
+  for (const std::string& line : studyBanner(info.study)) ImGui::TextUnformatted(line.c_str());
   if (info.volume) {
     const Volume& v = *info.volume;
     ImGui::Text("%d x %d x %d voxels, %.3g x %.3g x %.3g mm", v.dims.x, v.dims.y, v.dims.z, v.spacing.x,

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/volume.h"
+#include "io/study_info.h"
 #include "gui/panel_widgets.h"
 #include "gui/workstation.h"
 
@@ -15,6 +16,7 @@ namespace angio {
 struct DataPanelInfo {
   const Volume* volume = nullptr;  // the shown dataset's
   std::string name, description;
+  StudyInfo study;
   std::optional<DensityRange> densities;  // none: still counting
   bool huCalibrated = true;               // with densities: they look like calibrated HU
   bool loading = false;

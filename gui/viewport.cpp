@@ -167,6 +167,12 @@ ViewportInteraction drawViewport(const ViewportImage* image, const ViewState& sh
   textWithShadow(draw, ImVec2(min.x + 8, min.y + 6), text, overlay.caption.c_str());
   const ImVec2 labelSize = ImGui::CalcTextSize(overlay.levelLabel.c_str());
   textWithShadow(draw, ImVec2(max.x - labelSize.x - 8, min.y + 6), text, overlay.levelLabel.c_str());
+  float bannerY = max.y - 6 - ImGui::GetTextLineHeightWithSpacing() * float(overlay.banner.size());
+  for (const std::string& line : overlay.banner) {
+    const float width = ImGui::CalcTextSize(line.c_str()).x;
+    textWithShadow(draw, ImVec2(max.x - width - 8, bannerY), text, line.c_str());
+    bannerY += ImGui::GetTextLineHeightWithSpacing();
+  }
   draw->PopClipRect();
   return result;
 }

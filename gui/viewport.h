@@ -4,6 +4,7 @@
 // zoom and pan. Overlays: orientation letters on the image edges, a scale bar in mm, the angle.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
@@ -27,6 +28,7 @@ struct ViewportOverlay {
   glm::dvec2 fitMm{1.0};   // the size that fits the viewport at zoom 1: (hypot(E_b, E_c), E_a) mm
   std::string caption;     // top-left, e.g. "23.0 deg about k"
   std::string levelLabel;  // top-right, e.g. "high  isd 0.5  osd 0.3  trilinear"
+  std::vector<std::string> banner;  // bottom-right: the patient and study (gui/study_banner.h)
 };
 
 struct ViewportInteraction {

@@ -84,6 +84,16 @@ itk::GDCMImageIO::Pointer readSliceHeader(const std::filesystem::path& folder, c
   return io;
 }
 
+// The patient and study tags of a slice (all slices of a series share them).
+StudyInfo studyOf(itk::GDCMImageIO& io) {
+  const auto tag = [&](const char* key) {
+    std::string value;
+    return io.GetValueFromTag(key, value) ? trimmedDicomValue(value) : std::string();
+  };
+  return {readablePersonName(tag("0010|0010")), tag("0010|0020"), readableDate(tag("0008|0020")),
+          tag("0008|103e"), tag("0008|0060")};
+}
+
 // Reads a slice's header and pixels (rescale slope/intercept applied by GDCM) as encoded voxels;
 // counts NaN/Inf pixel values (float pixel data) into `nonFinite`.
 Slice readSlice(const std::filesystem::path& folder, const std::string& file,
@@ -208,6 +218,7 @@ DicomStack readDicomSeries(const std::filesystem::path& folder, const ReadOption
       requireMemory(folder, dims, dims.x * dims.y * dims.z * (2 * sizeof(Voxel) + extraBytesPerVoxel));
     }
     DicomStack stack;
+    stack.study = studyOf(*readSliceHeader(folder, series.files.front()));
     std::vector<Slice> slices;
     std::vector<double> scratch;
     for (const std::string& file : series.files) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/voxel.h"
+#include "io/study_info.h"
 #include "io/volume_reader.h"
 #include "io/volume_reorientation.h"
 
@@ -19,6 +20,7 @@ struct DicomStack {
   std::vector<Voxel> voxels;  // encoded densities, i fastest, slices in position order
   std::string description;    // "DICOM series <uid> (<n> slices)"
   std::size_t nonFinite = 0;  // NaN/Inf pixels (float pixel data), stored as -1024 HU
+  StudyInfo study;            // from the first slice's tags
 };
 
 // `extraBytesPerVoxel`: what the caller will allocate on top (for the memory check up front).

@@ -240,7 +240,7 @@ Volume volumeFromFile(const std::filesystem::path& file, const ReadOptions& opti
 }
 
 Volume volumeFromDicom(const std::filesystem::path& folder, const ReadOptions& options,
-                       std::string& description) {
+                       std::string& description, StudyInfo& study) {
   // Reorientation may need a second voxel array; count it in the memory check.
   DicomStack stack = readDicomSeries(folder, options, sizeof(Voxel));
   const Reorientation plan = planFor(folder, stack.geometry);
@@ -257,6 +257,7 @@ Volume volumeFromDicom(const std::filesystem::path& folder, const ReadOptions& o
     warn(options, folder.string() + ": " + std::to_string(stack.nonFinite) +
                       " voxels are NaN or infinite; treated as -1024 HU");
   description = stack.description;
+  study = stack.study;
   return volume;
 }
 
@@ -345,7 +346,7 @@ LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& op
   LoadedVolume loaded;
   try {
     loaded.volume = std::filesystem::is_directory(path)
-                        ? volumeFromDicom(path, options, loaded.description)
+                        ? volumeFromDicom(path, options, loaded.description, loaded.study)
                         : volumeFromFile(path, options, loaded.description);
     if (!options.labelPath.empty()) addLabels(loaded.volume, options.labelPath, options);
   } catch (const InputError&) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/volume.h"
+#include "io/study_info.h"
 
 namespace angio {
 
@@ -32,6 +33,7 @@ struct LoadCancelled : std::exception {
 struct LoadedVolume {
   Volume volume;
   std::string description;  // e.g. "DICOM series 1.2.3 (120 slices)", "MetaImage float32"
+  StudyInfo study;          // DICOM series only
 };
 
 LoadedVolume readVolume(const std::filesystem::path& path, const ReadOptions& options = {});

@@ -18,6 +18,7 @@
 
 #include "gui/file_browser.h"
 #include "io/volume_reader.h"
+#include "tests/support/dicom_series_writer.h"
 #include "tests/support/run_angioray.h"
 
 namespace {
@@ -102,6 +103,31 @@ class GuiData : public ::testing::Test {
 };
 
 fs::path GuiData::shared_, GuiData::volume_;
+
+// A DICOM series with its patient's tags: the banner shows who and what (over the image and in
+// the Data section); its values (-300 .. 400 HU, no air) do not look like calibrated HU.
+TEST_F(GuiData, ADicomSeriesShowsItsPatientBannerAndValuesWithoutAirAreFlagged) {
+  const fs::path series = dir_ / "series";
+  fs::create_directories(series);
+  angio::test_support::writeDicomSeries(series, {0, 1, 2, 3, 4, 5, 6, 7},
+                                        "1.2.826.0.1.3680043.2.1125.777.1", 3,
+                                        {{"0010|0010", "DOE^JANE"},
+                                         {"0010|0020", "PAT-0042"},
+                                         {"0008|0020", "20240301"},
+                                         {"0008|103e", "CTA Aorta"}});
+  const GuiRun run = runAngioray(
+      "gui " + series.string() + " --headless --size 1000x800 --timeout 120 --script " +
+      [&] {
+        std::ofstream(dir_ / "script.json")
+            << R"([{"wait_level": "high"}, {"screenshot": ")" + file("banner.png") + R"("}])";
+        return file("script.json");
+      }() +
+      " --state-out " + file("end.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json data = readJson(dir_ / "end.json")["runtime"]["data"];
+  EXPECT_EQ(data["study"], Json({"DOE, JANE   ID PAT-0042", "2024-03-01   CTA Aorta   CT"}));
+  EXPECT_EQ(data["hu_calibrated"], false);
+}
 
 TEST_F(GuiData, FileBrowserOpensAVolumeThatReplacesThePhantom) {
   const Json layout = startup()["runtime"]["layout"];

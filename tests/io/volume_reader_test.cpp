@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <string>
@@ -26,6 +27,8 @@
 #include "io/input_error.h"
 #include "io/dicom_series.h"
 #include "io/volume_formats.h"
+#include "io/volume_writer.h"
+#include "tests/support/dicom_series_writer.h"
 #include "tests/support/temp_folder_test.h"
 
 namespace angio {
@@ -442,78 +445,10 @@ TEST_F(VolumeReaderTest, LabelsOnAnotherGridOrOutOfRangeAreErrors) {
 
 // ---- DICOM -------------------------------------------------------------------------------------
 
-struct DicomSlice {
-  std::string fileName;
-  glm::dvec3 position{0.0};  // ImagePositionPatient
-  int instanceNumber = 0;
-  std::string seriesUid = "1.2.826.0.1.3680043.2.1125.777.1";
-  std::string orientation = "1\\0\\0\\0\\1\\0";
-  std::function<short(int, int)> hu;  // real-world HU at column i, row j
-};
-
-// Writes a 16x16 CT slice with rescale slope 2, intercept -1024 (stored = (HU + 1024) / 2).
-void writeDicomSlice(const fs::path& folder, const DicomSlice& slice) {
-  using Slice = itk::Image<short, 2>;
-  auto image = Slice::New();
-  Slice::RegionType region;
-  region.SetSize(0, 16);
-  region.SetSize(1, 16);
-  image->SetRegions(region);
-  Slice::SpacingType spacing;
-  spacing[0] = spacing[1] = 0.7;
-  image->SetSpacing(spacing);
-  image->Allocate();
-  for (int j = 0; j < 16; ++j)
-    for (int i = 0; i < 16; ++i) image->SetPixel({{i, j}}, slice.hu(i, j));
-  itk::MetaDataDictionary& tags = image->GetMetaDataDictionary();
-  const auto set = [&](const char* tag, const std::string& value) {
-    itk::EncapsulateMetaData<std::string>(tags, tag, value);
-  };
-  set("0008|0016", "1.2.840.10008.5.1.4.1.1.2");  // CT Image Storage
-  set("0008|0018", slice.seriesUid + "." + std::to_string(slice.instanceNumber));
-  set("0008|0060", "CT");
-  set("0028|0004", "MONOCHROME2");
-  set("0020|000d", "1.2.826.0.1.3680043.2.1125.777");
-  set("0020|000e", slice.seriesUid);
-  set("0020|0052", "1.2.826.0.1.3680043.2.1125.777.9");
-  set("0020|0013", std::to_string(slice.instanceNumber));
-  set("0020|0032", std::to_string(slice.position.x) + "\\" + std::to_string(slice.position.y) + "\\" +
-                       std::to_string(slice.position.z));
-  set("0020|0037", slice.orientation);
-  set("0028|1052", "-1024");
-  set("0028|1053", "2");
-  auto io = itk::GDCMImageIO::New();
-  io->KeepOriginalUIDOn();
-  auto writer = itk::ImageFileWriter<Slice>::New();
-  writer->SetImageIO(io);
-  writer->SetFileName((folder / slice.fileName).string());
-  writer->SetInput(image);
-  writer->Update();
-}
-
-// HU of slice k at (i, j): even values, so the slope-2 rescale round-trips exactly.
-short sliceHu(int k, int i, int j) { return short(100 * k - 300 + 2 * i + 40 * (j == 0)); }
-
-// Slices at z = 5 + 2.5 k for k in `positions`, with shuffled file names and instance numbers.
-void writeDicomSeries(const fs::path& folder, const std::vector<int>& positions, const std::string& uid,
-                      unsigned seed) {
-  std::vector<int> names(positions.size()), instances(positions.size());
-  std::iota(names.begin(), names.end(), 0);
-  std::iota(instances.begin(), instances.end(), 1);
-  std::mt19937 random(seed);
-  std::shuffle(names.begin(), names.end(), random);
-  std::shuffle(instances.begin(), instances.end(), random);
-  for (std::size_t n = 0; n < positions.size(); ++n) {
-    const int k = positions[n];
-    DicomSlice slice;
-    slice.fileName = "IM" + std::to_string(names[n]) + "-" + uid.substr(uid.size() - 1) + ".dcm";
-    slice.position = {-12.0, 30.5, 5.0 + 2.5 * k};
-    slice.instanceNumber = instances[n];
-    slice.seriesUid = uid;
-    slice.hu = [k](int i, int j) { return sliceHu(k, i, j); };
-    writeDicomSlice(folder, slice);
-  }
-}
+using test_support::DicomSlice;
+using test_support::sliceHu;
+using test_support::writeDicomSeries;
+using test_support::writeDicomSlice;
 
 TEST_F(VolumeReaderTest, DicomSeriesLoadsInPositionOrderWithRescaleApplied) {
   writeDicomSeries(dir_, {0, 1, 2, 3, 4, 5, 6, 7}, "1.2.826.0.1.3680043.2.1125.777.1", 42);
@@ -527,6 +462,31 @@ TEST_F(VolumeReaderTest, DicomSeriesLoadsInPositionOrderWithRescaleApplied) {
     for (int j = 0; j < 16; ++j)
       for (int i = 0; i < 16; ++i)
         ASSERT_EQ(v.densityAt(i, j, k), sliceHu(k, i, j) + 1024) << i << " " << j << " " << k;
+}
+
+TEST_F(VolumeReaderTest, DicomSeriesBringsThePatientAndStudyForTheBanner) {
+  writeDicomSeries(dir_, {0, 1, 2, 3}, "1.2.826.0.1.3680043.2.1125.777.1", 5,
+                   {{"0010|0010", "DOE^JANE^Q"},
+                    {"0010|0020", "PAT-0042"},
+                    {"0008|0020", "20240301"},
+                    {"0008|103e", "CTA Aorta 1.0 B26f"}});
+  const StudyInfo study = readVolume(dir_).study;
+  EXPECT_EQ(study.patientName, "DOE, JANE Q");
+  EXPECT_EQ(study.patientId, "PAT-0042");
+  EXPECT_EQ(study.studyDate, "2024-03-01");
+  EXPECT_EQ(study.seriesDescription, "CTA Aorta 1.0 B26f");
+  EXPECT_EQ(study.modality, "CT");
+}
+
+TEST_F(VolumeReaderTest, AnonymisedSeriesAndOtherFormatsHaveNoStudy) {
+  writeDicomSeries(dir_, {0, 1, 2}, "1.2.826.0.1.3680043.2.1125.777.1", 6);
+  const StudyInfo anonymised = readVolume(dir_).study;
+  EXPECT_EQ(anonymised.patientName, "");
+  EXPECT_EQ(anonymised.patientId, "");
+  EXPECT_EQ(anonymised.modality, "CT");
+  const fs::path nrrd = dir_ / "plain.nrrd";
+  writeVolume(makeVolume({4, 4, 4}, {1, 1, 1}, encodeVoxel(0)), nrrd);
+  EXPECT_TRUE(readVolume(nrrd).study.empty());
 }
 
 TEST_F(VolumeReaderTest, DicomSeriesWithMissingSlicesNamesThePositions) {
