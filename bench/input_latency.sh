@@ -4,6 +4,8 @@
 # min/max per stage. ROUNDS times: 6 arrow-key steps, a 20-step left drag, wait for the high image.
 #   headless (OSMesa):         bench/input_latency.sh BUILD/angioray VOLUME [ROUNDS]
 #   real window under Xvfb:    bench/input_latency.sh BUILD/angioray VOLUME [ROUNDS] --window
+#   more gui options after the mode, e.g. a session (VesselGlyph on, zoom 4) or the motion budget:
+#     bench/input_latency.sh BUILD/angioray VOLUME 5 --window --session vg.json --motion-budget 0
 # The window run drives the mouse with xdotool (scripts/setup.sh installs xvfb and xdotool); its
 # drag moves every 30 ms, the headless drag one step per 60 Hz frame. Run it with `nice -n -10` on
 # a quiet machine and note the load (printed first): on 2 cores other work moves every number.
@@ -13,6 +15,8 @@ angioray=$(realpath "$1")
 volume=$(realpath "$2")
 rounds=${3:-5}
 mode=${4:-headless}
+shift $(($# < 4 ? $# : 4))
+extra=$(printf ' %q' "$@")  # the gui options ("$@") quoted for the window driver's shell
 out=/tmp/angioray-input-latency
 mkdir -p "$out"
 echo "load: $(uptime)"
@@ -20,9 +24,9 @@ echo "load: $(uptime)"
 summary() {  # the stage table of a state report
   jq -r '.runtime.latency | "superseded requests: \(.superseded_requests), first frames by level: \(.first_frame_levels | tostring)"' "$1"
   jq -r '.runtime.latency as $l
-    | (["stage", "count", "median", "min", "max", "mean"] | @tsv),
+    | (["stage", "count", "median", "p95", "min", "max", "mean"] | @tsv),
       ($l.stages_ms[] | select(.count > 0)
-        | [.stage, .count, (.median, .min, .max, .mean | . * 10 | round / 10)] | @tsv)' "$1" | column -t -s $'\t'
+        | [.stage, .count, (.median, .p95, .min, .max, .mean | . * 10 | round / 10)] | @tsv)' "$1" | column -t -s $'\t'
 }
 
 if [[ $mode == --window ]]; then
@@ -30,7 +34,7 @@ if [[ $mode == --window ]]; then
     { echo "needs xvfb-run and xdotool (scripts/setup.sh)" >&2; exit 1; }
   driver="$out/window-driver.sh"
   cat > "$driver" << EOF
-XDG_CONFIG_HOME="$out/config" "$angioray" gui "$volume" --size 1280x800 --quit-after 600 \\
+XDG_CONFIG_HOME="$out/config" "$angioray" gui "$volume" --size 1280x800 --quit-after 600 $extra \\
   --state-out "$out/window.json" > "$out/window.log" 2>&1 &
 app=\$!
 window=\$(timeout 60 xdotool search --sync --onlyvisible --name '^angioray\$' | head -1)
@@ -60,7 +64,7 @@ else
     done
     echo ']'
   } > "$script"
-  "$angioray" gui "$volume" --headless --size 1280x800 --script "$script" \
+  "$angioray" gui "$volume" --headless --size 1280x800 --script "$script" "$@" \
     --screenshot "$out/headless.png" --state-out "$out/headless.json" > /dev/null
   summary "$out/headless.json"
 fi

@@ -233,7 +233,10 @@ class App {
   void resetTracer();   // new settings or dataset: the next click starts a new tracer
   void resetVessels();  // a new dataset: its paths went with the old one
   void saveVessels(const std::string& file);
-  void browseVesselFiles(BrowserPurpose purpose);            // the file browser, from ui.path's folder
+  // The file browser (gui/app_browse.cpp), for a purpose, from `current`'s folder.
+  void browseFor(BrowserPurpose purpose, const std::string& current);
+  void chooseBrowsed(const std::filesystem::path& chosen);
+  void drawBrowser();
   void chooseVesselFile(const std::filesystem::path& file);  // what it chose: save or load
   std::optional<Centerlines> unsavedCenterlines() const;     // physical; exports write them beside
   nlohmann::json vesselsReport() const;

@@ -146,10 +146,7 @@ std::string App::resetTfForNewDataset() {
 
 void App::drawDataSection() {
   drawSessionBanner();
-  if (const auto chosen = drawFileBrowser(browser_)) {
-    if (browser_.purpose == BrowserPurpose::openVolume) openDataset(chosen->string());
-    else chooseVesselFile(*chosen);
-  }
+  drawBrowser();
   if (!sectionHeader("Data")) return;
   DataPanelInfo info;
   info.volume = &data_.volume;
@@ -165,12 +162,7 @@ void App::drawDataSection() {
   info.loadPath = loadPath_;
   info.loadError = loadError_;
   const DataPanelRequests requests = drawDataPanel(doc(), info, widgetRects_);
-  if (requests.browse) {
-    const fs::path current = loadPath_.empty() ? fs::path(data_.name) : fs::path(loadPath_);
-    std::error_code error;
-    browser_.show(fs::is_directory(current.parent_path(), error) ? current.parent_path()
-                                                                 : fs::current_path());
-  }
+  if (requests.browse) browseFor(BrowserPurpose::openVolume, loadPath_.empty() ? data_.name : loadPath_);
   if (requests.open) openDataset(*requests.open);
   if (requests.cancelLoad) load_.cancel();
   if (requests.dismissError) loadError_.clear();

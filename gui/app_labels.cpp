@@ -81,6 +81,7 @@ void App::drawLabelsSection() {
   }
   if (result.save) saveLabels(labels_.ui.path);
   if (result.load) startLabelRead(labels_.ui.path);
+  if (result.browse) browseFor(BrowserPurpose::labelsFile, labels_.ui.path);
 }
 
 void App::startBoneRemoval() {

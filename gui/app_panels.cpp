@@ -45,6 +45,7 @@ void App::drawExportSection() {
   job.seconds = std::chrono::duration<double>(Clock::now() - export_.started).count();
   const ExportRequests requests = drawImageExport(export_.ui, job, widgetRects_);
   if (requests.cancel) export_.cancel->store(true);
+  if (requests.browse) browseFor(BrowserPurpose::exportImage, export_.ui.path);
   if (!requests.start) return;
   export_.cancel = std::make_shared<std::atomic<bool>>(false);
   export_.started = Clock::now();

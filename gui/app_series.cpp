@@ -17,6 +17,7 @@ void App::drawSeriesExport() {
   job.cancelRequested = seriesJob_.cancelRequested();
   const ExportRequests requests = angio::drawSeriesExport(series_, job, widgetRects_);
   if (requests.cancel) seriesJob_.cancel();
+  if (requests.browse) browseFor(BrowserPurpose::seriesFolder, series_.folder);
   if (!requests.start) return;
   seriesJob_.start([this, base = exportRecipe(), centerlines = exportCenterlines(), spec = series_.spec,
                     folder = series_.folder, labels = unsavedLabels(),

@@ -71,6 +71,7 @@ void App::drawSessionSection() {
   if (!sectionHeader("Session")) return;
   const SessionPanelRequests requests = drawSessionPanel(sessionPanel_, widgetRects_);
   const std::string& path = sessionPanel_.path;
+  if (requests.browse) browseFor(BrowserPurpose::sessionFile, path);
   try {
     if (requests.save) {
       saveSession(session(), path);

@@ -68,6 +68,7 @@ void App::drawTfSection() {
   if (requests.committedBefore) tfTargets_.history().push(*requests.committedBefore);
   if (requests.edit) commit(*requests.edit);
   if (requests.save) saveEditedTf();
+  if (requests.browse) browseFor(BrowserPurpose::tfFile, tfPanel_.path);
   if (requests.switchTo)
     switchTfTarget(*requests.switchTo);  // last: the requests above are the old target's
 }

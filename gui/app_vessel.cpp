@@ -160,6 +160,7 @@ void App::drawVesselSection() {
   if (!result.message.empty()) message_ = result.message;
   if (result.edit) commit(*result.edit);
   if (result.loadCenterlines) loadVesselCenterlines({vg.ui.path, "", CenterlineLoad::From::panel});
+  if (result.browseCenterlines) browseFor(BrowserPurpose::glyphCenterlines, vg.ui.path);
 }
 
 constexpr float kOverlayStepPx = 1.5f;

@@ -75,8 +75,8 @@ void App::drawVesselsSection() {
   if (result.redo) redoVessels();
   if (result.save) saveVessels(v.ui.path);
   if (result.load) loadVesselCenterlines({v.ui.path, "", CenterlineLoad::From::panel});
-  if (result.browseSave) browseVesselFiles(BrowserPurpose::saveCenterlines);
-  if (result.browseLoad) browseVesselFiles(BrowserPurpose::loadCenterlines);
+  if (result.browseSave) browseFor(BrowserPurpose::saveCenterlines, v.ui.path);
+  if (result.browseLoad) browseFor(BrowserPurpose::loadCenterlines, v.ui.path);
 }
 
 // A click with the tool on: the visible point under it, for the tracer (in the background).
@@ -236,14 +236,6 @@ void App::saveVessels(const std::string& file) {
   } catch (const std::exception& error) {
     vessels_.error = error.what();
   }
-}
-
-void App::browseVesselFiles(BrowserPurpose purpose) {
-  std::error_code error;
-  const fs::path folder = fs::absolute(vessels_.ui.path, error).parent_path();
-  browser_.show(fs::is_directory(folder, error) ? folder : fs::current_path(), purpose);
-  if (purpose == BrowserPurpose::saveCenterlines)  // the current name, to keep or type over
-    browser_.typedPath = (browser_.folder / fs::path(vessels_.ui.path).filename()).string();
 }
 
 void App::chooseVesselFile(const fs::path& file) {

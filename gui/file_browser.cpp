@@ -16,19 +16,39 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// One popup whatever it is for ("###": the id stays when the title changes).
-const char* titleOf(BrowserPurpose purpose) {
-  constexpr const char* kTitles[] = {"Open volume###browser", "Load centerlines###browser",
-                                     "Save centerlines###browser"};
-  return kTitles[int(purpose)];
-}
-const char* hintOf(BrowserPurpose purpose) {
-  constexpr const char* kHints[] = {
-      "volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder",
-      "centerline files (.mrk.json .vtp .csv)",
-      "a centerline file (.mrk.json .vtp .csv): pick one to replace, or type a new name"};
-  return kHints[int(purpose)];
-}
+// How the browser looks and chooses for each purpose.
+struct PurposeLook {
+  const char* title;  // "###browser": one popup whatever it is for (the id stays with the title)
+  const char* hint;
+  const char* accept;  // the button that chooses
+  bool typedNames;     // a typed name that does not exist yet may be chosen (a file to write)
+};
+
+// By BrowserPurpose.
+constexpr PurposeLook kLooks[] = {
+    {"Open volume###browser",
+     "volume files (.mha .mhd .nrrd .nhdr .nii .nii.gz) and folders; DICOM: open the folder", "Open",
+     false},
+    {"Load centerlines###browser", "centerline files (.mrk.json .vtp .csv)", "Open", false},
+    {"Save centerlines###browser",
+     "a centerline file (.mrk.json .vtp .csv): pick one to replace, or type a new name", "Save", true},
+    {"VesselGlyph centerlines###browser", "centerline files (.mrk.json .vtp .csv)", "Open", false},
+    {"Transfer function file###browser",
+     "TF files (.json): pick one to load or replace, or type a new name to save to", "Choose", true},
+    {"Session file###browser",
+     "session files (.json): pick one to load or replace, or type a new name to save to", "Choose",
+     true},
+    {"Label file###browser",
+     "label volumes (.seg.nrrd .nrrd .nii.gz .mha): pick one to load or replace, or type a new name",
+     "Choose", true},
+    {"Export image###browser",
+     "images (.png .tif .exr): pick one to replace, or type a new name (the extension is the format)",
+     "Choose", true},
+    {"Rotation series folder###browser", "folders: the series' views and movie are written into it",
+     "Choose this folder", true},
+};
+
+const PurposeLook& lookOf(BrowserPurpose purpose) { return kLooks[int(purpose)]; }
 
 constexpr int kDicomProbeFiles = 8;            // files looked at per folder
 constexpr std::size_t kDicomProbeLimit = 400;  // folders beyond this many are not probed
@@ -105,8 +125,40 @@ bool isCenterlineFileName(const fs::path& path) {
   return false;
 }
 
+bool isImageFileName(const fs::path& path) {
+  const std::string name = lowered(path.filename().string());
+  for (const char* extension : {".png", ".tif", ".tiff", ".exr"})
+    if (endsWith(name, extension)) return true;
+  return false;
+}
+
+namespace {
+
+bool isJsonFileName(const fs::path& path) {
+  return endsWith(lowered(path.filename().string()), ".json");
+}
+bool isNoFile(const fs::path&) { return false; }
+
+// The files a purpose lists (folders are always listed).
+bool (*listedFor(BrowserPurpose purpose))(const fs::path&) {
+  switch (purpose) {
+    case BrowserPurpose::openVolume:
+    case BrowserPurpose::labelsFile: return isVolumeFileName;
+    case BrowserPurpose::loadCenterlines:
+    case BrowserPurpose::saveCenterlines:
+    case BrowserPurpose::glyphCenterlines: return isCenterlineFileName;
+    case BrowserPurpose::tfFile:
+    case BrowserPurpose::sessionFile: return isJsonFileName;
+    case BrowserPurpose::exportImage: return isImageFileName;
+    case BrowserPurpose::seriesFolder: return isNoFile;
+  }
+  return isNoFile;
+}
+
+}  // namespace
+
 std::vector<BrowserEntry> listFolder(const fs::path& folder, BrowserPurpose purpose) {
-  const auto listed = purpose == BrowserPurpose::openVolume ? isVolumeFileName : isCenterlineFileName;
+  const auto listed = listedFor(purpose);
   std::error_code error;
   std::vector<BrowserEntry> folders, files;
   fs::directory_iterator it(folder, error);
@@ -152,16 +204,17 @@ void FileBrowser::go(const fs::path& newFolder) {
 
 std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
   if (browser.requestOpen) {
-    ImGui::OpenPopup(titleOf(browser.purpose));
+    ImGui::OpenPopup(lookOf(browser.purpose).title);
     browser.requestOpen = false;
   }
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowSize(ImVec2(std::min(640.f, display.x - 40), std::min(480.f, display.y - 40)),
                            ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  if (!ImGui::BeginPopupModal(titleOf(browser.purpose))) return std::nullopt;
+  if (!ImGui::BeginPopupModal(lookOf(browser.purpose).title)) return std::nullopt;
   const bool volumes = browser.purpose == BrowserPurpose::openVolume;
-  const bool saving = browser.purpose == BrowserPurpose::saveCenterlines;
+  const bool folders = browser.purpose == BrowserPurpose::seriesFolder;
+  const PurposeLook& look = lookOf(browser.purpose);
   std::optional<fs::path> chosen;
   const auto choose = [&](const fs::path& path) {
     chosen = path;
@@ -187,7 +240,7 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
   }
   // A relative name is looked up here: shown, since the path field may say something else.
   ImGui::TextDisabled("folder: %s", browser.folder.string().c_str());
-  ImGui::TextDisabled("%s", hintOf(browser.purpose));
+  ImGui::TextDisabled("%s", look.hint);
 
   const float footer = ImGui::GetFrameHeightWithSpacing() * 2 + 4;
   ImGui::BeginChild("##entries", ImVec2(0, -footer), true);
@@ -215,11 +268,14 @@ std::optional<fs::path> drawFileBrowser(FileBrowser& browser) {
   const BrowserEntry* selected = browser.selected >= 0 && browser.selected < int(browser.entries.size())
                                      ? &browser.entries[browser.selected]
                                      : nullptr;
-  if (saving) {
-    if (ImGui::Button("Save")) choose(typedFile(browser));
+  if (folders) {  // the selected folder, else the one listed
+    if (ImGui::Button(look.accept))
+      choose(selected && selected->folder ? selected->path : browser.folder);
+  } else if (look.typedNames) {
+    if (ImGui::Button(look.accept)) choose(typedFile(browser));
   } else {
     ImGui::BeginDisabled(!selected || (selected->folder && !selected->dicomSeries));
-    if (ImGui::Button("Open")) choose(selected->path);
+    if (ImGui::Button(look.accept)) choose(selected->path);
     ImGui::EndDisabled();
   }
   ImGui::SameLine();

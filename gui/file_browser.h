@@ -1,9 +1,10 @@
 #pragma once
 // The built-in file browser (Dear ImGui, no native dialog): a modal listing one folder with
 // std::filesystem, folders first, then the files it is for (volume files .mha .mhd .nrrd .nhdr
-// .nii .nii.gz, or centerline files .mrk.json .json .vtp .csv), each group sorted by name; up,
-// home and a typed path (saving: a new file's name); a folder of DICOM slices can be opened as a
-// series. Listing and filtering are plain functions, testable without a window.
+// .nii .nii.gz, centerline files .mrk.json .json .vtp .csv, TF and session files .json, images
+// .png .tif .tiff .exr, or no files when it picks a folder), each group sorted by name; up, home
+// and a typed path (a new file's name where one is chosen to be written); a folder of DICOM slices
+// can be opened as a series. Listing and filtering are plain functions, testable without a window.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,8 +24,22 @@ bool isVolumeFileName(const std::filesystem::path& path);
 // By case-insensitive extension: .mrk.json .json .vtp .csv.
 bool isCenterlineFileName(const std::filesystem::path& path);
 
-// What the browser is open for: it lists those files, and the app acts on the choice.
-enum class BrowserPurpose { openVolume, loadCenterlines, saveCenterlines };
+// By case-insensitive extension: .png .tif .tiff .exr (what an image export writes).
+bool isImageFileName(const std::filesystem::path& path);
+
+// What the browser is open for: it lists those files, and the app acts on the choice. The last
+// ones fill a panel's file field ("..." beside it), which the field's own buttons then use.
+enum class BrowserPurpose {
+  openVolume,
+  loadCenterlines,
+  saveCenterlines,
+  glyphCenterlines,  // the VesselGlyph section's file: loaded when chosen
+  tfFile,
+  sessionFile,
+  labelsFile,
+  exportImage,
+  seriesFolder,  // a folder, not a file
+};
 // Some of the first few files in `folder` are DICOM (".dcm", or "DICM" at byte 128).
 bool looksLikeDicomSeries(const std::filesystem::path& folder);
 // Visible (no dot-files) folders and the purpose's files of `folder`: folders first, then files,

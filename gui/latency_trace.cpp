@@ -43,7 +43,10 @@ nlohmann::json LatencySamples::json() const {
   std::sort(sorted.begin(), sorted.end());
   const std::size_t n = sorted.size();
   const double median = n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
-  return {{"count", count_}, {"mean", sum_ / count_}, {"median", median}, {"min", min_}, {"max", max_}};
+  // Nearest rank: the smallest kept value with at least 95 % of them at or below it.
+  const double p95 = sorted[(95 * n + 99) / 100 - 1];
+  return {{"count", count_}, {"mean", sum_ / count_}, {"median", median},
+          {"p95", p95},      {"min", min_},           {"max", max_}};
 }
 
 void LatencyTrace::requested(std::uint64_t id, Clock::time_point inputAt) {

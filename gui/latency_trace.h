@@ -33,13 +33,13 @@
 
 namespace angio {
 
-// The last kKept values of one quantity (ms), with count, mean, median, min and max.
+// The last kKept values of one quantity (ms), with count, mean, median, 95th percentile, min, max.
 class LatencySamples {
  public:
   static constexpr std::size_t kKept = 4096;
   void add(double ms);
   int count() const { return count_; }
-  nlohmann::json json() const;  // {count, mean, median, min, max}; median of the kept values
+  nlohmann::json json() const;  // {count, mean, median, p95, min, max}; median, p95 of the kept values
 
  private:
   std::vector<double> kept_;

@@ -36,7 +36,8 @@ void drawSeriesFormat(SeriesSpec& spec) {
   ImGui::SameLine();
   ImGui::Checkbox("movie", &spec.movie);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Also write a movie through OpenCV: MP4 (mp4v), else AVI (MJPG)");
+    ImGui::SetTooltip(
+        "Also write a movie through OpenCV: MP4 (H.264), else MP4 (mp4v), else AVI (MJPG)");
   if (!spec.movie) return;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
@@ -94,9 +95,12 @@ bool seriesWouldOverwrite(const std::string& folder, const std::string& prefix) 
 
 ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRects& rects) {
   ExportRequests requests;
-  ImGui::SetNextItemWidth(260);
-  ImGui::InputText("file##export", &ui.path);
+  ImGui::SetNextItemWidth(230);
+  ImGui::InputText("##exportfile", &ui.path);
   noteRect(rects, "export_path");
+  requests.browse = drawBrowseButton("export", rects);
+  ImGui::SameLine();
+  ImGui::TextUnformatted("file");
   helpMarker(
       "Format by extension: .png (8-bit), .tif (16-bit), .exr (float RGBA). A JSON sidecar "
       "(FILE.json) records every parameter.");
@@ -120,9 +124,12 @@ ExportRequests drawSeriesExport(SeriesPanel& series, const JobInfo& job, WidgetR
   ExportRequests requests;
   ImGui::Separator();
   ImGui::TextUnformatted("Rotation series (isd above, high-quality sampling)");
-  ImGui::SetNextItemWidth(260);
-  ImGui::InputText("folder##series", &series.folder);
+  ImGui::SetNextItemWidth(230);
+  ImGui::InputText("##seriesfolder", &series.folder);
   noteRect(rects, "series_folder");
+  requests.browse = drawBrowseButton("series", rects);
+  ImGui::SameLine();
+  ImGui::TextUnformatted("folder");
   drawSeriesAngles(series.spec, rects);
   drawSeriesFormat(series.spec);
   if (job.running) {

@@ -39,6 +39,7 @@ struct JobInfo {
 
 struct ExportRequests {
   bool start = false, cancel = false;
+  bool browse = false;  // "...": the file browser fills the file (folder) field
 };
 
 ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRects& rects);

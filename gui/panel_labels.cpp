@@ -101,7 +101,8 @@ void drawGrowTool(LabelsPanelUi& ui, const std::vector<LabelStyle>& styles, Widg
 
 void drawFiles(LabelsPanelUi& ui, const LabelsPanelInfo& info, LabelsPanelResult& result,
                WidgetRects& rects) {
-  const SaveLoadClicks clicks = drawSaveLoad(ui.path, "labels", 230, "Save", "Load", rects);
+  const SaveLoadClicks clicks = drawSaveLoad(ui.path, "labels", 190, "Save", "Load", rects, true);
+  result.browse = clicks.browse;
   result.save = clicks.save;
   result.load = clicks.load;
   if (ImGui::IsItemHovered())

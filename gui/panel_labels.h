@@ -44,6 +44,7 @@ struct LabelsPanelResult {
   bool cancel = false;
   bool undo = false, redo = false;
   bool save = false, load = false;  // ui.path
+  bool browse = false;              // "...": the file browser fills ui.path
 };
 
 // The main TF's points recolored with the label's color: the label's own TF starts from what the

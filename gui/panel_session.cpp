@@ -8,7 +8,8 @@ namespace angio {
 SessionPanelRequests drawSessionPanel(SessionPanelUi& ui, WidgetRects& rects) {
   SessionPanelRequests requests;
   const SaveLoadClicks clicks =
-      drawSaveLoad(ui.path, "session", 190, "Save session", "Load session", rects);
+      drawSaveLoad(ui.path, "session", 190, "Save session", "Load session", rects, true);
+  requests.browse = clicks.browse;
   requests.save = clicks.save;
   requests.load = clicks.load;
   return requests;

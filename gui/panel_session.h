@@ -13,6 +13,7 @@ struct SessionPanelUi {
 
 struct SessionPanelRequests {
   bool save = false, load = false;  // to or from ui.path
+  bool browse = false;              // "...": the file browser fills ui.path
 };
 
 SessionPanelRequests drawSessionPanel(SessionPanelUi& ui, WidgetRects& rects);

@@ -60,9 +60,10 @@ void drawPresets(const Document& document, const TfPanelInfo& info, TfPanelReque
 }
 
 void drawFile(TfPanelUi& ui, TfTarget editing, TfPanelRequests& requests, WidgetRects& rects) {
-  ImGui::SetNextItemWidth(230);
+  ImGui::SetNextItemWidth(200);
   ImGui::InputText("##tfpath", &ui.path);
   noteRect(rects, "tf_path");
+  requests.browse = drawBrowseButton("tf", rects);
   ImGui::SameLine();
   if (ImGui::Button("load")) {
     try {

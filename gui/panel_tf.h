@@ -37,6 +37,7 @@ struct TfPanelRequests {
   std::optional<TransferFunction> committedBefore;
   bool undo = false, redo = false;
   bool save = false;    // the edited TF to ui.path
+  bool browse = false;  // "...": the file browser fills ui.path
   std::string message;  // what was loaded, or why not
 };
 

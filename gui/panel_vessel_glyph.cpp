@@ -38,14 +38,16 @@ void regionTfCombo(const char* label, const std::vector<Preset>& presets, Transf
   ImGui::EndCombo();
 }
 
-// The file field, the Load button and what the last load gave.
-bool drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info, WidgetRects& rects) {
-  ImGui::SetNextItemWidth(230);
+// The file field, "...", the Load button and what the last load gave.
+void drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info,
+                 VesselGlyphPanelResult& result, WidgetRects& rects) {
+  ImGui::SetNextItemWidth(200);
   ImGui::InputText("##vgpath", &ui.path);
   noteRect(rects, "vg_path");
-  ImGui::SameLine();
   ImGui::BeginDisabled(info.loading);
-  const bool load = ImGui::Button("Load centerlines...");
+  result.browseCenterlines = drawBrowseButton("vg", rects);
+  ImGui::SameLine();
+  result.loadCenterlines = ImGui::Button("Load centerlines");
   ImGui::EndDisabled();
   noteRect(rects, "vg_load");
   // Two rows always: what is loaded (or loading), then an error, why VesselGlyph does not render,
@@ -59,7 +61,6 @@ bool drawLoading(VesselGlyphPanelUi& ui, const VesselGlyphPanelInfo& info, Widge
   drawMessageRow({{MessageKind::error, info.error},
                   {MessageKind::error, info.physical ? info.problem : ""},
                   {MessageKind::warning, info.warnings}});
-  return load;
 }
 
 void drawFocus(TubeRadius& focus, WidgetRects& rects) {
@@ -130,7 +131,7 @@ std::size_t centerlinePointCount(const Centerlines& centerlines) {
 VesselGlyphPanelResult drawVesselGlyphPanel(const VesselGlyphState& state, VesselGlyphPanelUi& ui,
                                             const VesselGlyphPanelInfo& info, WidgetRects& rects) {
   VesselGlyphPanelResult result;
-  result.loadCenterlines = drawLoading(ui, info, rects);
+  drawLoading(ui, info, result, rects);
   if (!info.physical) return result;  // the rest once there are centerlines
 
   VesselGlyphState set = state;

@@ -14,7 +14,7 @@
 namespace angio {
 
 struct VesselGlyphPanelUi {
-  std::string path = "centerlines.csv";  // the "Load centerlines..." field
+  std::string path = "centerlines.csv";  // the centerline file field
 };
 
 // What the panel shows of the app's centerline loading.
@@ -29,8 +29,9 @@ struct VesselGlyphPanelInfo {
 
 struct VesselGlyphPanelResult {
   std::optional<VesselGlyphEdit> edit;
-  bool loadCenterlines = false;  // the Load button: load ui.path
-  std::string message;           // a preset that failed to load
+  bool loadCenterlines = false;    // the Load button: load ui.path
+  bool browseCenterlines = false;  // "...": the file browser chooses the file, then it loads
+  std::string message;             // a preset that failed to load
 };
 
 // The points of all paths.

@@ -17,19 +17,29 @@ inline void noteRect(WidgetRects& rects, const std::string& name) {
   rects[name] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
 }
 
+// "..." beside a file field, noted as `<prefix>_browse`: the file browser chooses the field's file.
+inline bool drawBrowseButton(const std::string& prefix, WidgetRects& rects) {
+  ImGui::SameLine();
+  const bool clicked = ImGui::Button(("...##" + prefix).c_str());
+  noteRect(rects, prefix + "_browse");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Choose with the file browser");
+  return clicked;
+}
+
 struct SaveLoadClicks {
-  bool save = false, load = false;
+  bool save = false, load = false, browse = false;
 };
 
-// A file field and its Save and Load buttons on one line, noted as `<prefix>_path`, `_save` and
-// `_load`.
+// A file field (with "..." when `browse`) and its Save and Load buttons on one line, noted as
+// `<prefix>_path`, `_browse`, `_save` and `_load`.
 inline SaveLoadClicks drawSaveLoad(std::string& path, const std::string& prefix, float width,
                                    const std::string& saveLabel, const std::string& loadLabel,
-                                   WidgetRects& rects) {
+                                   WidgetRects& rects, bool browse = false) {
   SaveLoadClicks clicks;
   ImGui::SetNextItemWidth(width);
   ImGui::InputText(("##" + prefix + "path").c_str(), &path);
   noteRect(rects, prefix + "_path");
+  if (browse) clicks.browse = drawBrowseButton(prefix, rects);
   ImGui::SameLine();
   clicks.save = ImGui::Button((saveLabel + "##" + prefix).c_str());
   noteRect(rects, prefix + "_save");

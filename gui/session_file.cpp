@@ -302,17 +302,33 @@ struct SessionReader {
     return cpr;
   }
 
+  // The TF a session names by its preset (or TF file); none named: the first preset, as at start.
+  TransferFunction presetTf(std::string& preset) const {
+    if (preset.empty()) {
+      const std::vector<Preset> presets = listPresets();
+      if (presets.empty()) return {};
+      preset = presets.front().id;
+    }
+    try {
+      return loadPresetOrFile(preset);
+    } catch (const InputError&) {
+      fail("tf_preset '" + preset + "' is neither a TF preset nor a TF file");
+    }
+  }
+
   Document session(const Json& json) const {
     if (!json.is_object()) fail("a session is a JSON object");
     if (json.contains("format") && text(json, "format") != kFormat) fail("is not an angioray session");
     Document session;
     session.dataset = text(json, "dataset");
     session.view = view(section(json, "view"));
+    session.tfPreset = text(json, "tf_preset");
     if (json.contains("transfer_function")) {
       if (!json["transfer_function"].is_object()) fail("transfer_function is not an object");
       session.tf = parseTransferFunction(json["transfer_function"].dump(), source);
+    } else {
+      session.tf = presetTf(session.tfPreset);  // a hand-written session may name its TF only
     }
-    session.tfPreset = text(json, "tf_preset");
     const std::string mode = json.contains("mode") ? text(json, "mode") : "dvr";
     if (mode != "dvr" && mode != "mip") fail("mode is not dvr or mip");
     session.mode = mode == "mip" ? Compositing::mip : Compositing::dvr;

@@ -21,19 +21,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The movie: MP4 with the 'mp4v' codec if this OpenCV build can write it, else MJPG in an AVI.
-// Frames of another size than the first are placed top-left on black (rotations about one axis
-// keep the size; this only guards the writer).
+// The movie: H.264 in an MP4 where OpenCV's FFmpeg has an H.264 encoder (Debian's: x264), else
+// MPEG-4 part 2 ('mp4v') in an MP4, else MJPG in an AVI; the note says which. The frame is the
+// first image's size rounded up to even (H.264's 4:2:0 chroma needs even sides; x264 writes a
+// broken file for odd ones), images placed top-left on black.
 class MovieWriter {
  public:
   MovieWriter(const fs::path& folder, const std::string& prefix, double fps, int width, int height)
-      : size_(width, height) {
+      : size_(width + width % 2, height + height % 2) {
     struct Choice {
       const char* extension;
       int fourcc;
       const char* note;
     };
-    const Choice choices[] = {{".mp4", cv::VideoWriter::fourcc('m', 'p', '4', 'v'), "MP4 (mp4v)"},
+    const Choice choices[] = {{".mp4", cv::VideoWriter::fourcc('a', 'v', 'c', '1'), "MP4 (H.264)"},
+                              {".mp4", cv::VideoWriter::fourcc('m', 'p', '4', 'v'), "MP4 (mp4v)"},
                               {".avi", cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), "AVI (MJPG)"}};
     for (const Choice& choice : choices) {
       path_ = folder / (prefix + choice.extension);
@@ -45,7 +47,7 @@ class MovieWriter {
       fs::remove(path_, ignored);
     }
     path_.clear();
-    note_ = "no movie: OpenCV's VideoWriter opens neither mp4v nor MJPG";
+    note_ = "no movie: OpenCV's VideoWriter opens none of H.264, mp4v and MJPG";
   }
 
   bool open() const { return writer_.isOpened(); }

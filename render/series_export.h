@@ -1,8 +1,8 @@
 #pragma once
 // "Export rotation series": N views over an arc about the view's rotation axis, rendered with the
 // fast raycaster at the given (high-quality) sampling into numbered PNG/TIFF files, each with its
-// JSON sidecar, plus optionally a movie through OpenCV's VideoWriter (MP4 'mp4v', else AVI
-// 'MJPG'). Window-free: the app runs it in a BackgroundJob, the tests call it directly.
+// JSON sidecar, plus optionally a movie through OpenCV's VideoWriter (MP4 H.264, else MP4
+// 'mp4v', else AVI 'MJPG'). Window-free: the app runs it in a BackgroundJob, the tests call it directly.
 #include <atomic>
 #include <filesystem>
 #include <functional>

@@ -195,6 +195,28 @@ TEST_F(GuiData, FileBrowserListsFoldersFirstThenVolumeFilesSortedByName) {
   EXPECT_THROW(angio::listFolder(folder / "missing"), std::runtime_error);
 }
 
+// Each "..." field's browser lists the files it is for; the series folder's, folders only.
+TEST_F(GuiData, FileBrowserListsWhatEachFieldIsFor) {
+  const fs::path folder = dir_ / "mixed";
+  fs::create_directories(folder / "views");
+  for (const char* name : {"tf.json", "shot.png", "shot.TIF", "float.exr", "scan.mha", "c.vtp", "n.txt"})
+    std::ofstream(folder / name) << "x";
+  const auto listed = [&](angio::BrowserPurpose purpose) {
+    std::vector<std::string> names;
+    for (const angio::BrowserEntry& entry : angio::listFolder(folder, purpose))
+      names.push_back(entry.name);
+    return names;
+  };
+  using Names = std::vector<std::string>;
+  using angio::BrowserPurpose;
+  EXPECT_EQ(listed(BrowserPurpose::tfFile), (Names{"views", "tf.json"}));
+  EXPECT_EQ(listed(BrowserPurpose::sessionFile), (Names{"views", "tf.json"}));
+  EXPECT_EQ(listed(BrowserPurpose::exportImage), (Names{"views", "float.exr", "shot.png", "shot.TIF"}));
+  EXPECT_EQ(listed(BrowserPurpose::seriesFolder), (Names{"views"}));
+  EXPECT_EQ(listed(BrowserPurpose::labelsFile), (Names{"views", "scan.mha"}));
+  EXPECT_EQ(listed(BrowserPurpose::glyphCenterlines), (Names{"views", "c.vtp", "tf.json"}));
+}
+
 TEST(GuiFileBrowser, ATypedPathReplacesTheFolderUnlessRelativeAndHomeIsExpanded) {
   const fs::path folder = "/data/a", home = "/home/reader";
   EXPECT_EQ(angio::resolveTypedPath(folder, "/b/scan.mha", home), fs::path("/b/scan.mha"));

@@ -376,6 +376,28 @@ TEST_F(Gui, ExportWritesTheShownHighImageAndASidecar) {
   EXPECT_EQ(sidecar["tf"]["points"].size(), end["state"]["transfer_function"]["points"].size());
 }
 
+// "..." beside the export file opens the browser at the field's folder with its name typed in; a
+// new name typed there fills the field, and Export writes that file.
+TEST_F(Gui, TheExportFieldsBrowserChoosesWhereTheImageGoes) {
+  const Json startup = startupState();
+  const Json& layout = startup["runtime"]["layout"];
+  const Rect browse = rectOf(layout["export_browse"]), button = rectOf(layout["export_button"]);
+  fs::create_directories(dir / "reports");
+  const std::string steps = R"([
+    {"click": )" + point(browse.midX(), browse.midY()) +
+                            R"(}, {"wait_ms": 50}, {"key": "Ctrl+A"},
+    {"text": ")" + file("reports") +
+                            R"("}, {"key": "Enter"}, {"wait_ms": 50},
+    {"key": "Ctrl+A"}, {"text": "aorta-ap.png"}, {"key": "Enter"}, {"wait_ms": 50},
+    {"click": )" + point(button.midX(), button.midY()) +
+                            R"(},
+    {"wait_level": "high"}])";
+  const GuiRun run = runScript(steps);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "reports" / "aorta-ap.png"));
+  EXPECT_TRUE(fs::exists(dir / "reports" / "aorta-ap.png.json"));
+}
+
 TEST_F(Gui, MissingVolumeIsAOneLineErrorNamingIt) {
   const GuiRun run = runAngioray("gui --headless " + file("nothing.mha"));
   EXPECT_NE(run.exitCode, 0);

@@ -209,6 +209,20 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
   EXPECT_EQ(loaded.vesselGlyph.focusPreset, defaults.vesselGlyph.focusPreset);
 }
 
+// A hand-written session without "transfer_function": its tf_preset's TF, or the first preset as
+// at start; never an empty TF (a black image).
+TEST_F(SessionFileTest, ASessionThatOnlyNamesItsTfPresetGetsThatPresetsTf) {
+  const Document named = loadSession(write("named.json", R"({"tf_preset": "cta-vessels"})"));
+  EXPECT_EQ(named.tfPreset, "cta-vessels");
+  EXPECT_EQ(named.tf, loadPresetOrFile("cta-vessels"));
+  const Document unnamed = loadSession(write("unnamed.json", R"({"dataset": "x.mha"})"));
+  ASSERT_FALSE(listPresets().empty());
+  EXPECT_EQ(unnamed.tfPreset, listPresets().front().id);
+  EXPECT_EQ(unnamed.tf, loadPresetOrFile(listPresets().front().id));
+  EXPECT_FALSE(unnamed.tf.points.empty());
+  expectRejected(R"({"tf_preset": "no-such-preset"})", "tf_preset 'no-such-preset' is neither");
+}
+
 TEST_F(SessionFileTest, TheCalciumColoringBringsItsWindowUnlessTheSessionGivesOne) {
   EXPECT_EQ(loadSession(write("a.json", R"({"cpr": {"colouring": "calcium"}})")).cpr.window,
             kCalciumWindow);

@@ -206,7 +206,11 @@ TEST_F(SeriesExport, MovieHoldsEveryView) {
   cv::VideoCapture capture(result.movie.string());
   if (!capture.isOpened()) GTEST_SKIP() << "OpenCV cannot read back " << result.movie;
   int frames = 0;
-  for (cv::Mat frame; capture.read(frame);) ++frames;
+  for (cv::Mat frame; capture.read(frame);) {
+    ++frames;
+    EXPECT_EQ(frame.cols % 2, 0);  // H.264's chroma needs even sides
+    EXPECT_EQ(frame.rows % 2, 0);
+  }
   EXPECT_EQ(frames, 6) << result.movieNote;
 }
 
