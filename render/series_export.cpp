@@ -24,7 +24,9 @@ namespace {
 // The movie: H.264 in an MP4 where OpenCV's FFmpeg has an H.264 encoder (Debian's: x264), else
 // MPEG-4 part 2 ('mp4v') in an MP4, else MJPG in an AVI; the note says which. The frame is the
 // first image's size rounded up to even (H.264's 4:2:0 chroma needs even sides; x264 writes a
-// broken file for odd ones), images placed top-left on black.
+// broken file for odd ones), images placed top-left on black. It is written under a temporary
+// name and renamed over PREFIX.mp4 on close(), so a series that fails half-way leaves a movie the
+// user had as it was.
 class MovieWriter {
  public:
   MovieWriter(const fs::path& folder, const std::string& prefix, double fps, int width, int height)
@@ -39,14 +41,16 @@ class MovieWriter {
                               {".avi", cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), "AVI (MJPG)"}};
     for (const Choice& choice : choices) {
       path_ = folder / (prefix + choice.extension);
-      if (writer_.open(path_.string(), choice.fourcc, fps, size_)) {
+      writing_ = folder / (prefix + ".partial" + choice.extension);  // the extension picks the container
+      if (writer_.open(writing_.string(), choice.fourcc, fps, size_)) {
         note_ = choice.note;
         return;
       }
       std::error_code ignored;
-      fs::remove(path_, ignored);
+      fs::remove(writing_, ignored);
     }
     path_.clear();
+    writing_.clear();
     note_ = "no movie: OpenCV's VideoWriter opens none of H.264, mp4v and MJPG";
   }
 
@@ -65,12 +69,32 @@ class MovieWriter {
     writer_.write(frame);
   }
 
-  void close() { writer_.release(); }
+  // The movie under its name; on failure the note says why and no movie is left.
+  void close() {
+    if (!writer_.isOpened()) return;
+    writer_.release();
+    std::error_code error;
+    fs::rename(writing_, path_, error);
+    if (!error) return;
+    note_ = "no movie: cannot rename " + writing_.filename().string() + ": " + error.message();
+    fs::remove(writing_, error);
+    path_.clear();
+  }
+
+  ~MovieWriter() {  // not closed: the series failed; its part-written movie goes
+    if (!writer_.isOpened()) return;
+    writer_.release();
+    std::error_code ignored;
+    fs::remove(writing_, ignored);
+  }
+  MovieWriter(const MovieWriter&) = delete;
+  MovieWriter& operator=(const MovieWriter&) = delete;
 
  private:
   cv::Size size_;
   cv::VideoWriter writer_;
-  fs::path path_;
+  fs::path path_;     // PREFIX.mp4 / .avi
+  fs::path writing_;  // PREFIX.partial.mp4 / .avi until close()
   std::string note_;
 };
 

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <OpenImageIO/imagebuf.h>
@@ -212,6 +214,33 @@ TEST_F(SeriesExport, MovieHoldsEveryView) {
     EXPECT_EQ(frame.rows % 2, 0);
   }
   EXPECT_EQ(frames, 6) << result.movieNote;
+  // Written under a temporary name, then renamed: nothing of it is left beside the movie.
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+}
+
+// A movie the user has stays as it was while the new one is written (and would, had the series
+// failed half-way); only the finished movie replaces it.
+TEST_F(SeriesExport, AnExistingMovieIsReplacedOnlyByTheFinishedOne) {
+  SeriesSpec spec;
+  spec.count = 4;
+  spec.movie = true;
+  const std::string old = "the user's earlier movie";
+  fs::create_directories(dir_);
+  for (const char* name : {"view.mp4", "view.avi"}) std::ofstream(dir_ / name) << old;
+  const auto contents = [&](const char* name) {
+    std::ifstream in(dir_ / name);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  bool untouchedMidway = true;
+  SeriesCallbacks callbacks;
+  callbacks.progress = [&](int done, int) {
+    if (done == 2) untouchedMidway = contents("view.mp4") == old && contents("view.avi") == old;
+  };
+  const SeriesResult result = exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, callbacks);
+  EXPECT_TRUE(untouchedMidway);
+  if (result.movie.empty()) GTEST_SKIP() << result.movieNote;
+  EXPECT_NE(contents(result.movie.filename().string().c_str()), old);
 }
 
 TEST_F(SeriesExport, BadSpecIsAnInputErrorNamingTheFolder) {
