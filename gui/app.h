@@ -246,6 +246,7 @@ class App {
   void updateCpr();
   void takeComputedCpr();
   CprLook cprLook() const;
+  const Centerlines* cprCenterlines();  // framedCenterlines, null where it throws
   void showCprLook();
   void handleCprMouse(const CprPlacement& placement);
   void moveCprCursorTo(const CprPick& pick);

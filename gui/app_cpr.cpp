@@ -220,10 +220,20 @@ void App::handleCprMouse(const CprPlacement& placement) {
   else moveCprCursorTo(*panel.hovered);
 }
 
+// The centerlines in the volume frame, or null: none loaded, or they no longer fit the volume
+// (updateCpr shows why); the CPR shown may be older than that.
+const Centerlines* App::cprCenterlines() {
+  try {
+    return framedCenterlines();
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
 // The clicked line's centerline point is the cursor, in the CPR, on the DVR image and in the
 // slices (one 3-D cursor).
 void App::moveCprCursorTo(const CprPick& pick) {
-  const Centerlines* centerlines = framedCenterlines();
+  const Centerlines* centerlines = cprCenterlines();
   const int path = doc().cpr.path < 0 ? pick.path : doc().cpr.path;
   if (!centerlines || path < 0 || path >= int(centerlines->paths.size()) ||
       centerlines->paths[path].points.size() < 2)
@@ -254,10 +264,10 @@ void App::drawCprRuler(const CprPlacement& placement) {
                    ImVec2(float(end.x) - (tick.across.x < 0 ? size.x : 0), float(end.y) - size.y / 2),
                    color, label);
   }
-  const Centerlines* centerlines = framedCenterlines();
+  const Centerlines* centerlines = cprCenterlines();
   for (const CprCurve& curve : cpr.layout.curves) {
     const int path = doc().cpr.path < 0 ? curve.path : doc().cpr.path;
-    if (curve.pixels.empty() || path >= int(centerlines->paths.size())) continue;
+    if (!centerlines || curve.pixels.empty() || path >= int(centerlines->paths.size())) continue;
     const std::string& name = centerlines->paths[path].name;
     const std::string label = name.empty() ? "path " + std::to_string(path) : name;
     const glm::dvec2 end = screenOfCprPixel(placement, curve.pixels.back());
@@ -288,8 +298,10 @@ void App::drawCprCursor(const CprPlacement& placement, ImVec2 paneMin, ImVec2 pa
 void App::drawCrossSectionInset(ImVec2 paneMin, ImVec2 paneMax) {
   CprViewPanel& panel = cprView_;
   CrossSectionInset& inset = panel.inset;
-  const Centerlines* centerlines = framedCenterlines();
-  if (!panel.cursor || !panel.cursorPixel || panel.cursor->path >= int(centerlines->paths.size()))
+  const Centerlines* centerlines = cprCenterlines();
+  if (!centerlines || !panel.cursor || !panel.cursorPixel ||
+      panel.cursor->path >= int(centerlines->paths.size()) ||
+      centerlines->paths[panel.cursor->path].points.size() < 2)
     return;
   const std::pair<CenterlinePlace, CprLook> wanted{*panel.cursor, cprLook()};
   if (inset.madeFor != wanted) {

@@ -41,15 +41,6 @@ SliceOrientation planeOfAxis(int axis) {
 }
 
 // The voxel axes along a slice image's x and y.
-glm::ivec2 inPlaneAxes(SliceOrientation orientation) {
-  switch (orientation) {
-    case SliceOrientation::axial: return {0, 1};
-    case SliceOrientation::coronal: return {0, 2};
-    case SliceOrientation::sagittal: return {1, 2};
-  }
-  return {0, 1};
-}
-
 std::shared_ptr<const DisplayImage> displayOf(const SliceImage& slice) {
   Rgb8Image image{slice.width, slice.height, {}};
   image.rgb.resize(slice.grey.size() * 3);
@@ -189,7 +180,7 @@ void App::drawSliceCrosshair(SliceOrientation orientation) {
   const SlicePlacement& placed = slices_.panes[int(orientation)].placement;
   const glm::dvec2 at =
       screenOfSlicePixel(placed, slicePixelOf(data_.volume, orientation, sliceCursor()));
-  const glm::ivec2 axes = inPlaneAxes(orientation);
+  const SliceAxes axes = axesOf(orientation);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   constexpr float kGap = 8;
   const ImU32 vertical = planeColor(planeOfAxis(axes.x), 170),

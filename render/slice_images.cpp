@@ -8,21 +8,6 @@ namespace angio {
 
 namespace {
 
-// The voxel axes along the image's x and y, and whether y runs against its axis (superior up).
-struct SliceAxes {
-  int x, y;
-  bool yFlipped;
-};
-
-SliceAxes axesOf(SliceOrientation orientation) {
-  switch (orientation) {
-    case SliceOrientation::axial: return {0, 1, false};
-    case SliceOrientation::coronal: return {0, 2, true};
-    case SliceOrientation::sagittal: return {1, 2, true};
-  }
-  return {0, 1, false};
-}
-
 // The voxel at image pixel (x, y) of a slice through `fixedIndex`.
 glm::ivec3 voxelOfPixel(const Volume& volume, SliceOrientation orientation, int fixedIndex, int x,
                         int y) {
@@ -35,6 +20,15 @@ glm::ivec3 voxelOfPixel(const Volume& volume, SliceOrientation orientation, int 
 }
 
 }  // namespace
+
+SliceAxes axesOf(SliceOrientation orientation) {
+  switch (orientation) {
+    case SliceOrientation::axial: return {0, 1, false};
+    case SliceOrientation::coronal: return {0, 2, true};
+    case SliceOrientation::sagittal: return {1, 2, true};
+  }
+  return {0, 1, false};
+}
 
 const char* sliceOrientationName(SliceOrientation orientation) {
   switch (orientation) {

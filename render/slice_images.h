@@ -46,6 +46,13 @@ glm::ivec3 cursorVoxel(const Volume& volume, glm::dvec3 pointMm);
 // The fixed voxel axis of a slice: 2 (k) axial, 1 (j) coronal, 0 (i) sagittal.
 int fixedAxisOf(SliceOrientation orientation);
 
+// The voxel axes along a slice image's x and y, and whether y runs against its axis (superior up).
+struct SliceAxes {
+  int x, y;
+  bool yFlipped;
+};
+SliceAxes axesOf(SliceOrientation orientation);
+
 // The slice through the cursor's voxel.
 SliceImage extractSlice(const Volume& volume, SliceOrientation orientation, glm::dvec3 cursorMm,
                         WindowLevel windowLevel);
