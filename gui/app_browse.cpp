@@ -18,10 +18,7 @@ void App::browseFor(BrowserPurpose purpose, const std::string& current) {
   const bool isFolder = fs::is_directory(given, error);
   const fs::path folder = isFolder ? given : given.parent_path();
   browser_.show(fs::is_directory(folder, error) ? folder : fs::current_path(), purpose);
-  const bool namesAFile =
-      purpose != BrowserPurpose::openVolume && purpose != BrowserPurpose::loadCenterlines &&
-      purpose != BrowserPurpose::glyphCenterlines && purpose != BrowserPurpose::seriesFolder;
-  if (namesAFile && !isFolder && !current.empty())
+  if (choosesAFileToWrite(purpose) && !isFolder && !current.empty())
     browser_.typedPath = (browser_.folder / given.filename()).string();
 }
 

@@ -30,18 +30,6 @@ constexpr double kInsetExtentMm = 40, kInsetPixelMm = 0.5;  // the cross-section
 
 ImVec2 toIm(glm::dvec2 p) { return {float(p.x), float(p.y)}; }
 
-// The cross-section colored as the CPR (vessel/cpr_display.h cprColor); outside the volume black.
-Image crossSectionImage(const CrossSection& section, const CprLook& look) {
-  const CprDisplay display{look.window, look.focusTf};
-  const std::optional<TfTable> table =
-      look.focusTf ? std::optional<TfTable>(buildTable(*look.focusTf)) : std::nullopt;
-  Image image = makeImage(section.size, section.size);
-  for (std::size_t n = 0; n < section.hu.size(); ++n)
-    if (!std::isnan(section.hu[n]))
-      image.pixels[n] = cprColor(section.hu[n], display, table ? &*table : nullptr);
-  return image;
-}
-
 // Where a centerline point lies in the CPR image: on its path's curve, or, on a trunk the path
 // shares with an earlier path (drawn once, vessel/cpr_layout.h), on that path's curve.
 // `path` indexes the paths the CPR was computed for.
@@ -308,9 +296,12 @@ void App::drawCrossSectionInset(ImVec2 paneMin, ImVec2 paneMax) {
     const PathPlace place = placeOnPath(centerlines->paths[panel.cursor->path], panel.cursor->arcMm);
     const glm::dvec3 up = shownView_.up, towardsViewer = -shownView_.viewDir;
     const glm::dvec3 hint = std::abs(glm::dot(place.tangent, up)) < 0.7 ? up : towardsViewer;
-    inset.section = sampleCrossSection(data_.volume, place.pointMm, place.tangent, hint, kInsetExtentMm,
-                                       kInsetPixelMm);
-    inset.texture.begin(makeDisplayImage(crossSectionImage(*inset.section, wanted.second)));
+    const CrossSection section = sampleCrossSection(data_.volume, place.pointMm, place.tangent, hint,
+                                                    kInsetExtentMm, kInsetPixelMm);
+    // Colored as the CPR; outside the volume black.
+    inset.texture.begin(
+        makeDisplayImage(coloredHu(section.size, section.size, section.hu,
+                                   CprDisplay{wanted.second.window, wanted.second.focusTf})));
     while (!inset.texture.step(std::size_t(16) << 20)) {
     }
     inset.madeFor = wanted;
@@ -371,6 +362,7 @@ void App::drawCprView() {
   noteRect("cpr_pane");
   const glm::dvec2 panePx{paneMin.x, paneMin.y}, paneSize{paneMax.x - paneMin.x, paneMax.y - paneMin.y};
   handleCprMouse(placeCpr(imageSize, panePx, paneSize, doc().cpr.zoom, doc().cpr.panPx));
+  // Placed again with this frame's zoom and pan, so the image follows the gesture at once.
   const CprPlacement placement = placeCpr(imageSize, panePx, paneSize, doc().cpr.zoom, doc().cpr.panPx);
   panel.imageMin = toIm(placement.min);
   panel.imageMax = toIm(placement.min + glm::dvec2(imageSize) * placement.scale);

@@ -62,7 +62,6 @@ struct CrossSectionInset {
   explicit CrossSectionInset(const GlApi& gl) : texture(gl) {}
   StreamedTexture texture;
   std::optional<std::pair<CenterlinePlace, CprLook>> madeFor;  // what the texture shows
-  std::optional<CrossSection> section;
 };
 
 struct CprViewPanel {

@@ -50,6 +50,14 @@ constexpr PurposeLook kLooks[] = {
 
 const PurposeLook& lookOf(BrowserPurpose purpose) { return kLooks[int(purpose)]; }
 
+}  // namespace
+
+bool choosesAFileToWrite(BrowserPurpose purpose) {
+  return lookOf(purpose).typedNames && purpose != BrowserPurpose::seriesFolder;
+}
+
+namespace {
+
 constexpr int kDicomProbeFiles = 8;            // files looked at per folder
 constexpr std::size_t kDicomProbeLimit = 400;  // folders beyond this many are not probed
 

@@ -40,6 +40,10 @@ enum class BrowserPurpose {
   exportImage,
   seriesFolder,  // a folder, not a file
 };
+// Whether the purpose's choice is a file to be written (a typed new name may be chosen; the browser
+// starts with the field's file name typed in).
+bool choosesAFileToWrite(BrowserPurpose purpose);
+
 // Some of the first few files in `folder` are DICOM (".dcm", or "DICM" at byte 128).
 bool looksLikeDicomSeries(const std::filesystem::path& folder);
 // Visible (no dot-files) folders and the purpose's files of `folder`: folders first, then files,

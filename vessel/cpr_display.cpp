@@ -24,15 +24,6 @@ cv::Mat canvasOf(Image& image) {
 
 cv::Scalar scalarOf(glm::vec4 c) { return cv::Scalar(c.r, c.g, c.b, c.a); }
 
-void fillPixels(Image& image, const std::vector<float>& hu, const CprDisplay& display) {
-  const std::optional<TfTable> table =
-      display.tf ? std::optional<TfTable>(buildTable(*display.tf)) : std::nullopt;
-  for (std::size_t n = 0; n < hu.size(); ++n) {
-    if (std::isnan(hu[n])) continue;  // stays transparent black
-    image.pixels[n] = cprColor(hu[n], display, table ? &*table : nullptr);
-  }
-}
-
 // A dashed line along each curve (6 pixels on, 3 off), blended over the CPR.
 void drawMarker(Image& image, const std::vector<CprCurve>& curves) {
   std::vector<char> marked(image.pixels.size(), 0);
@@ -120,9 +111,19 @@ glm::vec4 cprColor(float hu, const CprDisplay& display, const TfTable* table) {
   return {g, g, g, 1.0f};
 }
 
+Image coloredHu(int width, int height, const std::vector<float>& hu, const CprDisplay& display) {
+  const std::optional<TfTable> table =
+      display.tf ? std::optional<TfTable>(buildTable(*display.tf)) : std::nullopt;
+  Image image = makeImage(width, height);
+  for (std::size_t n = 0; n < hu.size(); ++n) {
+    if (std::isnan(hu[n])) continue;  // stays transparent black
+    image.pixels[n] = cprColor(hu[n], display, table ? &*table : nullptr);
+  }
+  return image;
+}
+
 Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const CprDisplay& display) {
-  Image image = makeImage(layout.width, layout.height);
-  fillPixels(image, hu, display);
+  Image image = coloredHu(layout.width, layout.height, hu, display);
   if (display.centerlineMarker) drawMarker(image, layout.curves);
   if (display.ruler && display.rulerStepMm > 0) drawRuler(image, layout.curves, display.rulerStepMm);
   return image;

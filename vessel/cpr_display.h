@@ -48,6 +48,10 @@ float windowGrey(float hu, WindowLevel windowLevel);
 // display has a TF), else grey through the window; opaque.
 glm::vec4 cprColor(float hu, const CprDisplay& display, const TfTable* table);
 
+// Sampled HU (row-major width x height, NaN = not sampled) colored by cprColor, without marker or
+// ruler: a CPR's pixels, or a cross-section's (vessel/cross_section.h).
+Image coloredHu(int width, int height, const std::vector<float>& hu, const CprDisplay& display);
+
 // hu: row-major layout.width x layout.height, NaN = not sampled (resampleCpr's output).
 Image displayCpr(const CprLayout& layout, const std::vector<float>& hu, const CprDisplay& display);
 
