@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "io/tf_file.h"
+#include "render/region_tfs.h"
 #include "vessel/vessel_glyph_spec.h"
 
 namespace angio {
@@ -28,7 +29,8 @@ void addVesselGlyphOptions(CLI::App& cmd, VesselGlyphCliOptions& o) {
                  "Context shape: slab:front=MM,back=MM[,width=MM|inf], "
                  "tube:radius=R or none [slab:front=20,back=20,width=40]");
   cmd.add_option("--focus-tf", o.focusTf, "TF of the focus region (preset or file) [--tf]");
-  cmd.add_option("--context-tf", o.contextTf, "TF of the context region (preset or file) [--tf]");
+  cmd.add_option("--context-tf", o.contextTf,
+                 "TF of the context region (preset or file) [--tf, faded to 20 % opacity]");
   cmd.add_option("--vg-outside", o.outside,
                  "Outside the regions: clip, or a TF to render it with [clip]");
   cmd.add_flag("--cleft", o.cleft, "Foreground cleft: remove the context in front of the focus");
@@ -66,7 +68,8 @@ std::optional<VesselGlyphRecipe> vesselGlyphRecipe(const VesselGlyphCliOptions& 
   settings.cleft = o.cleft;
   settings.halfVessel = o.halfVessel;
   recipe.focusTf = loadPresetOrFile(o.focusTf.value_or(baseTf));
-  recipe.contextTf = loadPresetOrFile(o.contextTf.value_or(baseTf));
+  recipe.contextTf =
+      o.contextTf ? loadPresetOrFile(*o.contextTf) : followingContextTf(loadPresetOrFile(baseTf));
   if (o.outside && *o.outside != "clip") recipe.outsideTf = loadPresetOrFile(*o.outside);
   return recipe;
 }

@@ -18,7 +18,7 @@ struct VesselGlyphCliOptions {
   std::optional<std::string> focus;      // spec, default "circle:radius=2.0x"
   std::optional<std::string> context;    // spec, default "slab:front=20,back=20,width=40"
   std::optional<std::string> focusTf;    // default: --tf
-  std::optional<std::string> contextTf;  // default: --tf
+  std::optional<std::string> contextTf;  // default: --tf faded (render/region_tfs.h)
   std::optional<std::string> outside;    // "clip" (default) or a TF
   bool cleft = false;
   bool halfVessel = false;

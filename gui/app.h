@@ -172,9 +172,10 @@ class App {
   void pollExport();
   void drawSeriesExport();  // gui/app_series.cpp
   // TF editing: the editor's target (main, focus or context), its undo stack.
-  const TransferFunction& editedTf() const;
+  TransferFunction editedTf() const;
   const std::string& editedPreset() const;
   void applyTf(const TransferFunction& tf, const std::string& preset);  // one undo step
+  void applyTfChange(const TfChange& change);                           // one undo step
   void adjustByDrag(glm::vec2 px);  // a Shift+drag on the view: TF shift/opacity or MIP window
   void undoTf();
   void redoTf();

@@ -155,7 +155,7 @@ void App::takeComputedCpr() {
 
 CprLook App::cprLook() const {
   CprLook look{doc().cpr.window, std::nullopt};
-  if (doc().cpr.coloring == CprColoring::focusTf) look.focusTf = doc().vesselGlyph.focusTf;
+  if (doc().cpr.coloring == CprColoring::focusTf) look.focusTf = tfOf(doc(), TfTarget::focus);
   return look;
 }
 

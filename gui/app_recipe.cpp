@@ -18,8 +18,9 @@ std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe() const {
   std::error_code error;
   recipe.centerlines = std::filesystem::absolute(vg.file, error).lexically_normal().string();
   recipe.settings = doc().vesselGlyph.settings;
-  recipe.focusTf = doc().vesselGlyph.focusTf;
-  recipe.contextTf = doc().vesselGlyph.contextTf;
+  const TransferFunction main = renderedTf(doc());
+  recipe.focusTf = regionTf(doc().vesselGlyph, TfTarget::focus, main);
+  recipe.contextTf = regionTf(doc().vesselGlyph, TfTarget::context, main);
   if (doc().vesselGlyph.outsideRendered) recipe.outsideTf = doc().tf;
   return recipe;
 }

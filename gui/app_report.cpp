@@ -23,6 +23,13 @@ nlohmann::json statsJson(const FrameTimes::Stats& stats) {
   return {{"frames", stats.frames}, {"mean_ms", stats.meanMs()}, {"max_ms", stats.maxMs}};
 }
 
+// A region TF as the report names it: what it follows, its preset, or its own name.
+std::string regionTfName(const Document& document, TfTarget region) {
+  if (followsMainTf(document, region)) return followingTfLabel(region);
+  const std::string& preset = presetOf(document, region);
+  return preset.empty() ? tfOf(document, region).name : preset;
+}
+
 }  // namespace
 
 nlohmann::json App::report() const {
@@ -137,8 +144,8 @@ nlohmann::json App::vesselReport() const {
           {"outside", set.outsideRendered ? "main-tf" : "clip"},
           {"cleft", set.settings.cleft},
           {"half_vessel", set.settings.halfVessel},
-          {"focus_tf", set.focusPreset.empty() ? set.focusTf.name : set.focusPreset},
-          {"context_tf", set.contextPreset.empty() ? set.contextTf.name : set.contextPreset},
+          {"focus_tf", regionTfName(doc(), TfTarget::focus)},
+          {"context_tf", regionTfName(doc(), TfTarget::context)},
           {"tf_editing", tfTargetName(tfTargets_.editing())},
           {"error", vg.error},
           {"problem", vg.problem},

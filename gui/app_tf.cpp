@@ -11,11 +11,15 @@ namespace angio {
 
 const std::string& App::editedPreset() const { return presetOf(doc(), tfTargets_.editing()); }
 
-const TransferFunction& App::editedTf() const { return tfOf(doc(), tfTargets_.editing()); }
+TransferFunction App::editedTf() const { return tfOf(doc(), tfTargets_.editing()); }
 
 void App::applyTf(const TransferFunction& tf, const std::string& preset) {
+  applyTfChange(TfChange{tfTargets_.editing(), tf, preset});
+}
+
+void App::applyTfChange(const TfChange& change) {
   tfTargets_.history().push(editedTf());
-  commit(TfChange{tfTargets_.editing(), tf, preset});
+  commit(change);
   tfPanel_.editor.selected = tfPanel_.editor.dragging = -1;
 }
 
@@ -62,7 +66,7 @@ void App::drawTfSection() {
   info.presets = &presets_;
   TfPanelRequests requests = drawTfPanel(doc(), tfPanel_, info, widgetRects_);
   if (!requests.message.empty()) message_ = requests.message;
-  if (requests.replace) applyTf(requests.replace->tf, requests.replace->preset);
+  if (requests.replace) applyTfChange(*requests.replace);
   if (requests.undo) undoTf();
   if (requests.redo) redoTf();
   if (requests.committedBefore) tfTargets_.history().push(*requests.committedBefore);

@@ -133,9 +133,9 @@ const Centerlines* App::framedCenterlines() {
 void App::loadMissingRegionTfs() {
   const VesselGlyphState& set = doc().vesselGlyph;
   try {
-    if (set.focusTf.points.empty())
+    if (!set.focusFollowsMain && set.focusTf.points.empty())
       commit(TfChange{TfTarget::focus, loadPresetOrFile(set.focusPreset), set.focusPreset});
-    if (set.contextTf.points.empty())
+    if (!set.contextFollowsMain && set.contextTf.points.empty())
       commit(TfChange{TfTarget::context, loadPresetOrFile(set.contextPreset), set.contextPreset});
   } catch (const std::exception& error) {
     message_ = error.what();

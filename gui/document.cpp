@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "render/label_styles.h"
+#include "render/region_tfs.h"
 
 namespace angio {
 
@@ -18,13 +19,32 @@ const char* tfTargetName(TfTarget target) {
   return kNames[int(target)];
 }
 
-const TransferFunction& tfOf(const Document& document, TfTarget target) {
-  switch (target) {
-    case TfTarget::focus: return document.vesselGlyph.focusTf;
-    case TfTarget::context: return document.vesselGlyph.contextTf;
+const char* followingTfLabel(TfTarget region) {
+  return region == TfTarget::context ? "main TF, faded" : "main TF";
+}
+
+TransferFunction regionTf(const VesselGlyphState& vesselGlyph, TfTarget region,
+                          const TransferFunction& main) {
+  switch (region) {
+    case TfTarget::focus: return vesselGlyph.focusFollowsMain ? main : vesselGlyph.focusTf;
+    case TfTarget::context:
+      return vesselGlyph.contextFollowsMain ? followingContextTf(main) : vesselGlyph.contextTf;
     case TfTarget::main: break;
   }
-  return document.tf;
+  return main;
+}
+
+TransferFunction tfOf(const Document& document, TfTarget target) {
+  return regionTf(document.vesselGlyph, target, document.tf);
+}
+
+bool followsMainTf(const Document& document, TfTarget target) {
+  switch (target) {
+    case TfTarget::focus: return document.vesselGlyph.focusFollowsMain;
+    case TfTarget::context: return document.vesselGlyph.contextFollowsMain;
+    case TfTarget::main: break;
+  }
+  return false;
 }
 
 const std::string& presetOf(const Document& document, TfTarget target) {

@@ -76,9 +76,12 @@ struct VesselGlyphState {
   bool enabled = false;             // VesselGlyph rendering on
   bool overlay = true;              // the projected centerlines over the image
   VesselGlyphSettings settings;
-  bool outsideRendered = false;         // the outside: rendered with the main TF, else clipped
-  TransferFunction focusTf, contextTf;  // no points: the presets below, loaded on first use
-  std::string focusPreset = "cta-vessels", contextPreset = "soft-tissue-context";  // "" = edited
+  bool outsideRendered = false;  // the outside: rendered with the main TF, else clipped
+  // Each region's TF follows the main TF (render/region_tfs.h) until the user gives it its own: a
+  // preset, a file or an edit in the TF editor. The own TFs below count only when not following.
+  bool focusFollowsMain = true, contextFollowsMain = true;
+  TransferFunction focusTf, contextTf;     // no points: the presets below, loaded on first use
+  std::string focusPreset, contextPreset;  // "" = edited
 
   friend bool operator==(const VesselGlyphState&, const VesselGlyphState&) = default;
 };
@@ -156,8 +159,14 @@ struct Document {
 enum class TfTarget { main = 0, focus = 1, context = 2 };
 
 const char* tfTargetName(TfTarget target);  // "main", "focus", "context"
-const TransferFunction& tfOf(const Document& document, TfTarget target);
-const std::string& presetOf(const Document& document, TfTarget target);
+// The TF a target renders with: for a region following the main TF, the one it follows.
+TransferFunction tfOf(const Document& document, TfTarget target);
+const std::string& presetOf(const Document& document, TfTarget target);  // a region: its own
+bool followsMainTf(const Document& document, TfTarget target);           // false for the main TF
+const char* followingTfLabel(TfTarget region);  // "main TF", "main TF, faded": a region following it
+// A region's TF given the main TF it would follow.
+TransferFunction regionTf(const VesselGlyphState& vesselGlyph, TfTarget region,
+                          const TransferFunction& main);
 
 // The main TF as rendered: its labels, hidden ones translucent when the user shows what was removed.
 TransferFunction renderedTf(const Document& document);

@@ -34,10 +34,14 @@ std::string presetLabel(const std::string& preset, const TransferFunction& tf,
 }
 
 void drawPresets(const Document& document, const TfPanelInfo& info, TfPanelRequests& requests) {
-  const std::string& preset = presetOf(document, info.editing);
-  const std::string current = presetLabel(preset, tfOf(document, info.editing), *info.presets);
+  const bool follows = followsMainTf(document, info.editing);
+  const std::string preset = follows ? std::string() : presetOf(document, info.editing);
+  const std::string current = follows ? followingTfLabel(info.editing)
+                                      : presetLabel(preset, tfOf(document, info.editing), *info.presets);
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("preset", current.c_str())) {
+    if (info.editing != TfTarget::main && ImGui::Selectable(followingTfLabel(info.editing), follows))
+      requests.replace = TfChange{info.editing, {}, "", true};
     for (const Preset& candidate : *info.presets) {
       if (!ImGui::Selectable(candidate.id.c_str(), candidate.id == preset)) continue;
       try {

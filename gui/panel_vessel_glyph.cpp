@@ -20,17 +20,21 @@ bool sliderMm(const char* label, double& value, double lo, double hi, const char
   return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format);
 }
 
-// The preset combo of a region TF: loads the chosen preset into `tf`.
-void regionTfCombo(const char* label, const std::vector<Preset>& presets, TransferFunction& tf,
-                   std::string& preset, std::string& message) {
-  const std::string current = preset.empty() ? tf.name + " (edited)" : preset;
+// The preset combo of a region TF: the main TF it follows first, then the presets; a chosen preset
+// is loaded into `tf` and the region stops following.
+void regionTfCombo(const char* label, TfTarget region, const std::vector<Preset>& presets,
+                   bool& followsMain, TransferFunction& tf, std::string& preset, std::string& message) {
+  const std::string current =
+      followsMain ? followingTfLabel(region) : (preset.empty() ? tf.name + " (edited)" : preset);
   ImGui::SetNextItemWidth(200);
   if (!ImGui::BeginCombo(label, current.c_str())) return;
+  if (ImGui::Selectable(followingTfLabel(region), followsMain)) followsMain = true;
   for (const Preset& candidate : presets) {
-    if (!ImGui::Selectable(candidate.id.c_str(), candidate.id == preset)) continue;
+    if (!ImGui::Selectable(candidate.id.c_str(), !followsMain && candidate.id == preset)) continue;
     try {
       tf = loadPresetOrFile(candidate.file.string());
       preset = candidate.id;
+      followsMain = false;
     } catch (const std::exception& error) {
       message = error.what();
     }
@@ -144,8 +148,10 @@ VesselGlyphPanelResult drawVesselGlyphPanel(const VesselGlyphState& state, Vesse
   drawContext(set.settings, rects);
   drawOutsideAndCuts(set, rects);
   if (info.presets) {
-    regionTfCombo("focus TF", *info.presets, set.focusTf, set.focusPreset, result.message);
-    regionTfCombo("context TF", *info.presets, set.contextTf, set.contextPreset, result.message);
+    regionTfCombo("focus TF", TfTarget::focus, *info.presets, set.focusFollowsMain, set.focusTf,
+                  set.focusPreset, result.message);
+    regionTfCombo("context TF", TfTarget::context, *info.presets, set.contextFollowsMain, set.contextTf,
+                  set.contextPreset, result.message);
   }
   ImGui::TextDisabled("edit them in the TF editor: \"TF editor edits\" above it");
   if (!(set == state)) result.edit = VesselGlyphEdit{std::move(set)};

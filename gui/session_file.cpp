@@ -52,6 +52,8 @@ Json vesselGlyphJson(const VesselGlyphState& vg) {
                {"overlay", vg.overlay}};
   json.update(Json::parse(vesselGlyphSettingsJson(vg.settings).dump()));
   json["outside"] = vg.outsideRendered ? "main-tf" : "clip";
+  json["focus_follows_main_tf"] = vg.focusFollowsMain;
+  json["context_follows_main_tf"] = vg.contextFollowsMain;
   json["focus_tf"] = tfOrNull(vg.focusTf);
   json["context_tf"] = tfOrNull(vg.contextTf);
   json["focus_preset"] = vg.focusPreset;
@@ -150,6 +152,10 @@ struct SessionReader {
     return radius;
   }
 
+  static bool namesOwnTf(const TransferFunction& tf, const std::string& preset) {
+    return !tf.points.empty() || !preset.empty();
+  }
+
   // The VesselGlyph section (where = "vessel_glyph.").
   VesselGlyphState vesselGlyph(const Json& v) const {
     VesselGlyphState vg;
@@ -184,9 +190,13 @@ struct SessionReader {
     vg.contextTf = tf(v, "context_tf", vg.contextTf);
     if (v.contains("focus_preset")) vg.focusPreset = text(v, "focus_preset");
     if (v.contains("context_preset")) vg.contextPreset = text(v, "context_preset");
-    if (vg.focusTf.points.empty() && vg.focusPreset.empty())
+    // A session written before the regions followed the main TF names their own TFs.
+    vg.focusFollowsMain = flag(v, "focus_follows_main_tf", !namesOwnTf(vg.focusTf, vg.focusPreset));
+    vg.contextFollowsMain =
+        flag(v, "context_follows_main_tf", !namesOwnTf(vg.contextTf, vg.contextPreset));
+    if (!vg.focusFollowsMain && vg.focusTf.points.empty() && vg.focusPreset.empty())
       fail(where + "focus_tf is null and focus_preset empty");
-    if (vg.contextTf.points.empty() && vg.contextPreset.empty())
+    if (!vg.contextFollowsMain && vg.contextTf.points.empty() && vg.contextPreset.empty())
       fail(where + "context_tf is null and context_preset empty");
     return vg;
   }

@@ -16,6 +16,9 @@ std::string& presetIn(Document& document, TfTarget target) {
   if (target == TfTarget::context) return document.vesselGlyph.contextPreset;
   return document.tfPreset;
 }
+bool& followsMainIn(VesselGlyphState& vesselGlyph, TfTarget region) {
+  return region == TfTarget::focus ? vesselGlyph.focusFollowsMain : vesselGlyph.contextFollowsMain;
+}
 
 // The paths' revision goes up when they change, and only then.
 void setPaths(VesselsState& vessels, const std::vector<VesselPath>& paths) {
@@ -27,6 +30,10 @@ void setPaths(VesselsState& vessels, const std::vector<VesselPath>& paths) {
 void change(Document& d, const ViewEdit& edit) { d.view = edit.view; }
 void change(Document& d, const RotateEdit& edit) { d.view.angleDeg += edit.degrees; }
 void change(Document& d, const TfChange& edit) {
+  if (edit.target != TfTarget::main) {
+    followsMainIn(d.vesselGlyph, edit.target) = edit.followMain;
+    if (edit.followMain) return;
+  }
   TransferFunction& tf = tfIn(d, edit.target);
   std::vector<LabelStyle> labels = std::move(tf.labels);
   tf = edit.tf;

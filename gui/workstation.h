@@ -23,11 +23,13 @@ struct RotateEdit {
   friend bool operator==(const RotateEdit&, const RotateEdit&) = default;
 };
 // A TF of the TF editor's targets (main, focus or context) and its preset: a preset's id, the file
-// it was loaded from, or "" (edited).
+// it was loaded from, or "" (edited). A region's TF set this way stops following the main TF;
+// `followMain` makes it follow again (`tf` and `preset` then unused).
 struct TfChange {
   TfTarget target = TfTarget::main;
   TransferFunction tf;
   std::string preset;
+  bool followMain = false;
   friend bool operator==(const TfChange&, const TfChange&) = default;
 };
 // The Rendering section: DVR or MIP, its MIP window (kept in the main TF) and shading.

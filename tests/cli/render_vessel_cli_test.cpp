@@ -12,6 +12,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "core/view_geometry.h"
 #include "io/centerline_file.h"
@@ -190,6 +191,21 @@ TEST_F(RenderVesselCli, ImageMetadataRecordsTheVesselGlyphSettings) {
   EXPECT_EQ(spec.get_string_attribute("angioray:vg_outside"), "tf Bone");
   EXPECT_EQ(spec.get_string_attribute("angioray:vg_half_vessel"), "on");
   EXPECT_EQ(spec.get_string_attribute("angioray:centerlines"), centerlines().string());
+}
+
+// Without --focus-tf/--context-tf the regions use --tf, the context faded (as the GUI's regions
+// that follow the main TF): the sidecar records the fade.
+TEST_F(RenderVesselCli, RegionTfsDefaultToTheMainTfWithTheContextFaded) {
+  const fs::path out = file("vg-defaults.png");
+  const ProgramRun run = runAngioray(vgBase("fast") + " --tf bone --out " + out.string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  std::ifstream in(out.string() + ".json");
+  const nlohmann::json sidecar = nlohmann::json::parse(in);
+  const nlohmann::json& vg = sidecar["vessel_glyph"];
+  EXPECT_EQ(vg["focus_tf"]["name"], "Bone") << vg;
+  EXPECT_EQ(vg["focus_tf"]["points"], vg["context_tf"]["points"]);
+  EXPECT_DOUBLE_EQ(vg["context_tf"]["modulators"]["opacity_scale"].get<double>(), 0.2)
+      << vg["context_tf"];
 }
 
 TEST_F(RenderVesselCli, ReferenceRaycasterGivesTheSameVesselGlyphImage) {

@@ -170,6 +170,33 @@ TEST_F(GuiVessel, TfEditorSwitchesToTheFocusTf) {
   EXPECT_NE(after["runtime"]["shown"]["checksum"], before["runtime"]["shown"]["checksum"]);
 }
 
+// Until the user sets them, the focus and context TFs follow the main TF: loading another main TF
+// with VesselGlyph on (the outside clipped, so the main TF renders nothing by itself) changes the
+// VesselGlyph image, and the regions still report that they follow.
+TEST_F(GuiVessel, RegionTfsFollowALoadedMainTf) {
+  const std::string centerlines = " --centerlines " + file("phantom.csv");
+  std::ofstream(file("blue.json")) << R"({"name": "blue lumen", "points": [
+      {"hu": -1024, "color": [0, 0, 0], "opacity": 0}, {"hu": 150, "color": [0.1, 0.2, 0.9], "opacity": 0},
+      {"hu": 400, "color": [0.2, 0.4, 1.0], "opacity": 0.8}, {"hu": 3071, "color": [1, 1, 1], "opacity": 0.8}]})";
+  const Json start = startState(centerlines);
+  const Json& layout = start["runtime"]["layout"];
+  const std::string steps = R"([
+    {"click": )" + Box(layout["vg_enable"]).leftEnd() +
+                            R"(}, {"wait_level": "high"}, {"state": ")" + file("before.json") + R"("},
+    {"click": )" + Box(layout["tf_path"]).middle() +
+                            R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("blue.json") + R"("},
+    {"click": )" + Box(layout["tf_load"]).middle() +
+                            R"(}, {"wait_level": "high"}, {"state": ")" + file("after.json") + R"("}])";
+  const auto run = runScript(steps, centerlines);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json before = readJson("before.json"), after = readJson("after.json");
+  ASSERT_TRUE(after["runtime"]["vessel_glyph"]["rendering"].get<bool>());
+  EXPECT_EQ(after["state"]["transfer_function"]["name"], "blue lumen");
+  EXPECT_EQ(after["runtime"]["vessel_glyph"]["focus_tf"], "main TF");
+  EXPECT_EQ(after["runtime"]["vessel_glyph"]["context_tf"], "main TF, faded");
+  EXPECT_NE(after["runtime"]["shown"]["checksum"], before["runtime"]["shown"]["checksum"]);
+}
+
 TEST_F(GuiVessel, CprHoverMarksTheCenterlineOnTheDvrAndADvrClickThereMovesTheCprCursorBack) {
   const std::string centerlines = " --centerlines " + file("phantom.csv");
   const Json start = startState(centerlines);

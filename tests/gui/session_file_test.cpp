@@ -100,6 +100,8 @@ Document unusualSession() {
       {-300, {0.3f, 0.3f, 0.3f}, 0.0}, {50, {0.8f, 0.6f, 0.5f}, 0.02}, {900, {1.0f, 1.0f, 1.0f}, 0.1}};
   vg.focusPreset = "";
   vg.contextPreset = "soft-tissue-context";
+  vg.focusFollowsMain = false;
+  vg.contextFollowsMain = false;
   return s;
 }
 
@@ -187,6 +189,8 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   expectSameTf(vg.contextTf, want.contextTf);
   EXPECT_EQ(vg.focusPreset, "");
   EXPECT_EQ(vg.contextPreset, "soft-tissue-context");
+  EXPECT_FALSE(vg.focusFollowsMain);
+  EXPECT_FALSE(vg.contextFollowsMain);
   // Atomic write: nothing but the session in its folder.
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "sub"), fs::directory_iterator()), 1);
 }
@@ -205,8 +209,22 @@ TEST_F(SessionFileTest, MissingKeysKeepTheDefaults) {
   EXPECT_TRUE(loaded.vesselGlyph.centerlines.empty());
   EXPECT_FALSE(loaded.vesselGlyph.enabled);
   EXPECT_EQ(loaded.vesselGlyph.settings.context, ContextShape::slab);
-  EXPECT_TRUE(loaded.vesselGlyph.focusTf.points.empty());  // the preset's, loaded by the app
-  EXPECT_EQ(loaded.vesselGlyph.focusPreset, defaults.vesselGlyph.focusPreset);
+  EXPECT_TRUE(loaded.vesselGlyph.focusFollowsMain);
+  EXPECT_TRUE(loaded.vesselGlyph.contextFollowsMain);
+}
+
+// Sessions written before the region TFs followed the main TF name a preset or an own TF for each:
+// those stay, they do not start following.
+TEST_F(SessionFileTest, ARegionTfTheSessionNamesDoesNotFollowTheMainTf) {
+  const Document old = loadSession(write("old.json", R"({"vessel_glyph": {"focus_tf": null,
+      "focus_preset": "cta-vessels", "context_tf": null, "context_preset": "soft-tissue-context"}})"));
+  EXPECT_FALSE(old.vesselGlyph.focusFollowsMain);
+  EXPECT_FALSE(old.vesselGlyph.contextFollowsMain);
+  EXPECT_EQ(old.vesselGlyph.contextPreset, "soft-tissue-context");
+  const Document mixed = loadSession(write("mixed.json", R"({"vessel_glyph": {"focus_tf": null,
+      "focus_preset": "", "context_preset": "bone", "context_follows_main_tf": true}})"));
+  EXPECT_TRUE(mixed.vesselGlyph.focusFollowsMain);
+  EXPECT_TRUE(mixed.vesselGlyph.contextFollowsMain);  // said so, whatever it names
 }
 
 // A hand-written session without "transfer_function": its tf_preset's TF, or the first preset as
@@ -327,7 +345,7 @@ TEST_F(SessionFileTest, BadVesselGlyphValuesAreOneLineErrorsNamingTheKey) {
   expectRejected(vg(R"({"focus_tf": 7})"), "vessel_glyph.focus_tf is not a transfer function");
   expectRejected(vg(R"({"context_tf": {"name": "t", "points": [{"hu": 0}]}})"),
                  "vessel_glyph.context_tf: ");
-  expectRejected(vg(R"({"focus_tf": null, "focus_preset": ""})"),
+  expectRejected(vg(R"({"focus_tf": null, "focus_preset": "", "focus_follows_main_tf": false})"),
                  "vessel_glyph.focus_tf is null and focus_preset empty");
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "gui/tf_targets.h"
+#include "render/region_tfs.h"
 
 namespace angio {
 namespace {
@@ -184,7 +185,30 @@ TEST(GuiWorkstation, ATfChangeGoesToItsTargetWithItsPreset) {
   EXPECT_EQ(document.tf, twoPointTf(-100));
   EXPECT_EQ(document.tfPreset, "cta");
   EXPECT_EQ(tfOf(document, TfTarget::focus), twoPointTf(200));
-  EXPECT_EQ(presetOf(document, TfTarget::context), "soft-tissue-context");
+  EXPECT_FALSE(document.vesselGlyph.focusFollowsMain);  // set by the user: no longer follows
+  EXPECT_TRUE(document.vesselGlyph.contextFollowsMain);
+}
+
+// Until the user gives a region its own TF it renders with the main TF (the context faded by the
+// opacity modulator), whatever the main TF becomes; asked to, it follows again.
+TEST(GuiWorkstation, RegionTfsFollowTheMainTfUntilSetAndAgainWhenAsked) {
+  Workstation workstation;
+  workstation.apply(TfChange{TfTarget::main, twoPointTf(300), "x"});
+  const Document& document = workstation.document();
+  EXPECT_EQ(tfOf(document, TfTarget::focus), twoPointTf(300));
+  const TransferFunction context = tfOf(document, TfTarget::context);
+  EXPECT_EQ(context.points, twoPointTf(300).points);
+  EXPECT_DOUBLE_EQ(context.modulators.opacityScale, kFollowingContextOpacity);
+  EXPECT_LT(evaluate(context, 400).a, evaluate(twoPointTf(300), 400).a);
+
+  workstation.apply(TfChange{TfTarget::context, twoPointTf(-50), ""});
+  workstation.apply(TfChange{TfTarget::main, twoPointTf(100), "y"});
+  EXPECT_EQ(tfOf(document, TfTarget::focus), twoPointTf(100));
+  EXPECT_EQ(tfOf(document, TfTarget::context), twoPointTf(-50));
+
+  workstation.apply(TfChange{TfTarget::context, {}, "", true});
+  EXPECT_TRUE(document.vesselGlyph.contextFollowsMain);
+  EXPECT_EQ(tfOf(document, TfTarget::context).points, twoPointTf(100).points);
 }
 
 TEST(GuiWorkstation, RenderingEditsKeepTheMipWindowInTheMainTf) {
