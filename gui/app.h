@@ -30,6 +30,7 @@
 #include "render/series_export.h"
 #include "gui/app_cpr.h"
 #include "gui/cpr_pane.h"
+#include "gui/crop_handles.h"
 #include "gui/app_export.h"
 #include "gui/app_labels.h"
 #include "gui/app_slices.h"
@@ -195,7 +196,11 @@ class App {
   // VesselGlyph (gui/app_vessel.cpp): centerlines loaded in the background, the overlay.
   void drawVesselSection();
   void drawCenterlineOverlay();
-  void drawCropOverlay();  // the crop box's edges over the image (gui/app_clip.cpp)
+  // The crop box's edges and face handles over the image, a handle's drag (gui/app_clip.cpp).
+  void drawCropOverlay();
+  std::vector<CropHandle> shownCropHandles() const;
+  void dragCropFace(glm::dvec2 pointer);
+  void drawCropBox(const std::vector<CropHandle>& handles, const std::optional<CropHandle>& hovered);
   void loadVesselCenterlines(const CenterlineLoad& request);  // in the background
   void loadSessionCenterlines();  // the document's centerline file (none: the loaded ones go)
   void pollCenterlineLoad();
@@ -276,6 +281,7 @@ class App {
   // The state report's parts (gui/app_report.cpp).
   nlohmann::json dataReport() const;
   nlohmann::json vesselReport() const;
+  nlohmann::json cropHandlesReport() const;
   nlohmann::json labelsReport() const;
   nlohmann::json cprReport() const;
   nlohmann::json hybridReport() const;
@@ -339,6 +345,7 @@ class App {
   std::optional<MeasuredFrame> lastFirstLevel_;
   std::optional<double> motionIsd_;  // the running load is a session's dataset (DatasetOpened)
   std::string startPreset_;
+  std::optional<CropGrab> cropGrab_;  // a crop handle held (until the frame after release)
   bool viewAdjusting_ =
       false;  // a Shift+drag on the view is under way (one TF undo step)                 // the main TF a new dataset falls back to from an edited one
   std::optional<Document> offeredSession_;  // "Restore last session" banner

@@ -17,7 +17,7 @@ constexpr float kClickSlopPx = 3;  // a left press that moved less than this is 
 }  // namespace
 
 std::optional<glm::dvec2> App::clickedImagePoint() const {
-  if (!shown_ || !viewport_.hasImage) return std::nullopt;
+  if (!shown_ || !viewport_.hasImage || cropGrab_) return std::nullopt;  // a handle's, not a click
   if (!ImGui::IsItemHovered() || !ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return std::nullopt;
   const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
   if (drag.x * drag.x + drag.y * drag.y > kClickSlopPx * kClickSlopPx) return std::nullopt;

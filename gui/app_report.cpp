@@ -95,6 +95,7 @@ nlohmann::json App::report() const {
         {"labels", labelsReport()},
         {"slices", slicesReport()},
         {"vessels", vesselsReport()},
+        {"crop_handles", cropHandlesReport()},
         {"layout", layout}}},
   };
 }
@@ -128,6 +129,17 @@ nlohmann::json App::dataReport() const {
           {"session_offered", offeredSession_ ? offeredSession_->dataset : ""},
           {"series_running", seriesJob_.running()},
           {"movie_note", series_.movieNote}};
+}
+
+// Where the crop box's handles are on screen, for scripts that drag them.
+nlohmann::json App::cropHandlesReport() const {
+  nlohmann::json handles = nlohmann::json::array();
+  for (const CropHandle& handle : shownCropHandles())
+    handles.push_back({{"axis", handle.face.axis},
+                       {"at_max", handle.face.atMax},
+                       {"at", {handle.screen.x, handle.screen.y}},
+                       {"px_per_mm", {handle.screenPerMm.x, handle.screenPerMm.y}}});
+  return handles;
 }
 
 nlohmann::json App::vesselReport() const {

@@ -2,6 +2,7 @@
 // checkbox turns the slab on, which changes the shown image and leaves the rays outside it
 // black; an export of that view writes a sidecar with the slab, from which `angioray render
 // --params` (another process) renders the same pixels.
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -88,6 +89,45 @@ TEST_F(GuiClip, TheSlabCheckboxChangesTheImageAndAnExportKeepsTheSlab) {
   };
   EXPECT_LT(lit(test_support::pixelsOf(file("view.png"))),
             lit(test_support::pixelsOf(file("unclipped.png"))) * 3 / 4);
+}
+
+// The crop box's handles: a left drag on the top face's handle lowers that face by the drag's
+// length along the face's screen direction, and does not turn the view.
+TEST_F(GuiClip, DraggingACropHandleMovesItsFaceAndDoesNotTurnTheView) {
+  auto start = run("[" + record("closed") + "]");
+  ASSERT_EQ(start.exitCode, 0) << start.output;
+  const Json closed = readJson("closed.json");
+  const std::string open = R"({"click": )" +
+                           test_support::middleOf(closed["runtime"]["layout"]["section_Crop & clip"]) +
+                           R"(}, {"wait_ms": 100})";
+  auto opened = run("[" + open + ", " + record("open") + "]");
+  ASSERT_EQ(opened.exitCode, 0) << opened.output;
+  const std::string cropOn =
+      R"({"click": )" + test_support::leftEnd(readJson("open.json")["runtime"]["layout"]["clip_crop"]) +
+      "}";
+  auto cropped = run("[" + open + ", " + cropOn + ", " + record("crop") + "]");
+  ASSERT_EQ(cropped.exitCode, 0) << cropped.output;
+  const Json before = readJson("crop.json");
+  ASSERT_TRUE(before["state"]["clip"]["crop_on"].get<bool>());
+  Json top;
+  for (const Json& handle : before["runtime"]["crop_handles"])
+    if (handle["axis"] == 2 && handle["at_max"].get<bool>()) top = handle;
+  ASSERT_FALSE(top.is_null()) << before["runtime"]["crop_handles"];
+
+  const double x = top["at"][0], y = top["at"][1], dragPx = 60;
+  const std::string drag = R"({"drag": {"from": [)" + std::to_string(x) + ", " + std::to_string(y) +
+                           R"(], "to": [)" + std::to_string(x) + ", " + std::to_string(y + dragPx) +
+                           R"(], "steps": 6}})";
+  auto dragged = run("[" + open + ", " + cropOn + R"(, {"wait_level": "high"}, )" + drag + ", " +
+                     record("dragged") + "]");
+  ASSERT_EQ(dragged.exitCode, 0) << dragged.output;
+  const Json after = readJson("dragged.json");
+  const double perMm = std::hypot(top["px_per_mm"][0].get<double>(), top["px_per_mm"][1].get<double>());
+  const double wantMm = before["state"]["clip"]["crop_max_mm"][2].get<double>() - dragPx / perMm;
+  EXPECT_NEAR(after["state"]["clip"]["crop_max_mm"][2].get<double>(), wantMm, 0.5 / perMm + 1e-6);
+  EXPECT_EQ(after["state"]["clip"]["crop_min_mm"], before["state"]["clip"]["crop_min_mm"]);
+  EXPECT_EQ(after["state"]["view"]["angle_deg"], before["state"]["view"]["angle_deg"]);
+  EXPECT_NE(after["runtime"]["shown"]["checksum"], before["runtime"]["shown"]["checksum"]);
 }
 
 }  // namespace
