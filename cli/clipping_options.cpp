@@ -1,35 +1,15 @@
 #include "cli/clipping_options.h"
 
-#include <cmath>
-#include <cstdlib>
 #include <stdexcept>
-#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "cli/number_list.h"
 #include "core/clip_interval.h"
 
 namespace angio {
 
 namespace {
-
-// Exactly `count` finite numbers separated by commas.
-std::vector<double> numbers(const std::string& text, std::size_t count, const std::string& flag,
-                            const std::string& form) {
-  const std::string usage = flag + " needs " + form + ", got '" + text + "'";
-  std::vector<double> values;
-  for (std::size_t at = 0; at <= text.size();) {
-    const std::size_t comma = std::min(text.find(',', at), text.size());
-    const std::string item = text.substr(at, comma - at);
-    char* end = nullptr;
-    const double value = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(value)) throw std::invalid_argument(usage);
-    values.push_back(value);
-    at = comma + 1;
-  }
-  if (values.size() != count) throw std::invalid_argument(usage);
-  return values;
-}
 
 // The flag's part alone must be renderable.
 void checkPart(const ViewClipping& part, const std::string& flag) {
@@ -58,12 +38,12 @@ void addClippingOptions(CLI::App& cmd, ClippingCliOptions& o) {
 ViewClipping clippingFrom(const ClippingCliOptions& o) {
   ViewClipping clipping;
   if (o.crop) {
-    const auto v = numbers(*o.crop, 6, "--crop", "6 numbers i0,i1,j0,j1,k0,k1 (mm)");
+    const auto v = parseNumberList(*o.crop, 6, "--crop", "6 numbers i0,i1,j0,j1,k0,k1 (mm)");
     clipping.crop = CropBox{{v[0], v[2], v[4]}, {v[1], v[3], v[5]}};
     checkPart({clipping.crop, {}, {}}, "--crop");
   }
   if (o.clip) {
-    const auto v = numbers(*o.clip, 6, "--clip", "6 numbers px,py,pz,nx,ny,nz");
+    const auto v = parseNumberList(*o.clip, 6, "--clip", "6 numbers px,py,pz,nx,ny,nz");
     clipping.plane = ClipPlane{false, 0, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     checkPart({{}, clipping.plane, {}}, "--clip");
   }
@@ -72,7 +52,7 @@ ViewClipping clippingFrom(const ClippingCliOptions& o) {
     checkPart({{}, clipping.plane, {}}, "--clip-facing");
   }
   if (o.slab) {
-    const auto v = numbers(*o.slab, 2, "--slab", "2 numbers offset_mm,thickness_mm");
+    const auto v = parseNumberList(*o.slab, 2, "--slab", "2 numbers offset_mm,thickness_mm");
     clipping.slab = ThickSlab{v[0], v[1]};
     checkPart({{}, {}, clipping.slab}, "--slab");
   }

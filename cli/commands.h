@@ -32,12 +32,13 @@ struct RenderOptions {
   std::optional<std::string> shading;  // "on" | "off"
   bool mip = false;
   std::optional<double> window, level;
-  bool reference = false;             // the plain reference raycaster instead of the fast one
-  std::vector<std::string> hide;      // labels (names or numbers) cut out of the render
-  bool showRemoved = false;           // hidden labels translucent instead of cut out
-  VesselGlyphCliOptions vesselGlyph;  // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
-  ClippingCliOptions clipping;        // crop box, clip plane, thick slab (cli/clipping_options.h)
-  std::string params;                 // a render sidecar to reproduce (then only --out may be given)
+  std::optional<std::string> imageWindow;  // "left,right,bottom,top", mm about the image centre
+  bool reference = false;                  // the plain reference raycaster instead of the fast one
+  std::vector<std::string> hide;           // labels (names or numbers) cut out of the render
+  bool showRemoved = false;                // hidden labels translucent instead of cut out
+  VesselGlyphCliOptions vesselGlyph;       // VesselGlyph and DVR+CPR hybrid (gui/vessel_glyph_options.h)
+  ClippingCliOptions clipping;             // crop box, clip plane, thick slab (cli/clipping_options.h)
+  std::string params;  // a render sidecar to reproduce (then only --out may be given)
 };
 // Writes the image and its sidecar (render/recipe_json.h), or re-renders a sidecar's image.
 int runRender(const RenderOptions& options);

@@ -43,6 +43,10 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
   cmd->add_flag("--mip", o.mip, "Maximum intensity projection instead of DVR");
   cmd->add_option("--window", o.window, "MIP window width (HU)")->check(CLI::PositiveNumber);
   cmd->add_option("--level", o.level, "MIP window centre (HU)");
+  cmd->add_option("--image-window", o.imageWindow,
+                  "Render only this part of the image: left,right,bottom,top in mm about the image "
+                  "centre (right and up positive), the whole image's pixels there (as a zoomed view "
+                  "and its export)");
   cmd->add_flag("--reference", o.reference, "Use the plain reference raycaster (same image, slower)");
   cmd->add_option("--hide", o.hide,
                   "Cut a label out of the render (bone, table, a label number 1-15 or a name "

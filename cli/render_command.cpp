@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cli/load_volume.h"
+#include "cli/number_list.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "io/centerline_file.h"
@@ -20,6 +21,14 @@
 namespace angio {
 
 namespace {
+
+ImageWindow imageWindowFrom(const std::string& text) {
+  const auto v = parseNumberList(text, 4, "--image-window", "4 numbers left,right,bottom,top (mm)");
+  const ImageWindow window{v[0], v[1], v[2], v[3]};
+  if (const std::string problem = imageWindowProblem(window); !problem.empty())
+    throw std::invalid_argument("--image-window: " + problem);
+  return window;
+}
 
 RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
   RenderParams p;
@@ -37,6 +46,7 @@ RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
   p.mip.window = o.window.value_or(tf.mipWindow);
   p.mip.level = o.level.value_or(tf.mipLevel);
   p.clipping = clippingFrom(o.clipping);
+  if (o.imageWindow) p.window = imageWindowFrom(*o.imageWindow);
   return p;
 }
 
