@@ -153,8 +153,9 @@ class App {
   void requestRender(bool interactive);
   // What the window shows as a render recipe (gui/app_recipe.cpp): exports render it, and the
   // window renders its scene, the recipe without its view, prepared again only when it changes.
-  std::optional<VesselGlyphRecipe> vesselGlyphRecipe() const;  // the panel's; none: no centerlines
-  std::optional<HybridCprRecipe> hybridRecipe() const;         // the CPR section's; none: off
+  // The panel's (none: no centerlines); regions following the main TF follow `main` (as rendered).
+  std::optional<VesselGlyphRecipe> vesselGlyphRecipe(const TransferFunction& main) const;
+  std::optional<HybridCprRecipe> hybridRecipe() const;  // the CPR section's; none: off
   std::shared_ptr<const PreparedScene> currentScene();
   std::shared_ptr<const PreparedScene> prepareScene(RenderRecipe recipe, const Centerlines& centerlines);
   RenderRecipe exportRecipe() const;  // of what the last request rendered

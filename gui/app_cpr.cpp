@@ -53,16 +53,9 @@ std::optional<glm::dvec2> cprPixelOf(const CprLayout& layout, int path, double a
 // A left click (not a drag) on the DVR image near a projected centerline: the nearest centerline
 // point becomes the CPR view's cursor.
 void App::moveCprCursorOnClick() {
-  if (cprViewWidth() <= 0 || !shown_ || !viewport_.hasImage || cropGrab_) return;
-  if (!ImGui::IsItemHovered() || !ImGui::IsMouseReleased(ImGuiMouseButton_Left)) return;
-  const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.f);
-  if (drag.x * drag.x + drag.y * drag.y > 9) return;  // a drag turns the view
-  const Centerlines* centerlines = nullptr;
-  try {
-    centerlines = framedCenterlines();
-  } catch (const std::exception&) {
-    return;
-  }
+  if (cprViewWidth() <= 0 || !clickedImagePoint()) return;
+  const Centerlines* centerlines = cprCenterlines();
+  if (!centerlines) return;
   const ViewGeometry& view = shownView_;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   float best = kClickReachPx * kClickReachPx;

@@ -11,14 +11,13 @@
 
 namespace angio {
 
-std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe() const {
+std::optional<VesselGlyphRecipe> App::vesselGlyphRecipe(const TransferFunction& main) const {
   const VesselGlyphPanel& vg = vessel_;
   if (!vg.physical) return std::nullopt;
   VesselGlyphRecipe recipe;
   std::error_code error;
   recipe.centerlines = std::filesystem::absolute(vg.file, error).lexically_normal().string();
   recipe.settings = doc().vesselGlyph.settings;
-  const TransferFunction main = renderedTf(doc());
   recipe.focusTf = regionTf(doc().vesselGlyph, TfTarget::focus, main);
   recipe.contextTf = regionTf(doc().vesselGlyph, TfTarget::context, main);
   if (doc().vesselGlyph.outsideRendered) recipe.outsideTf = doc().tf;
@@ -49,7 +48,7 @@ std::shared_ptr<const PreparedScene> App::currentScene() {
     }
   }
   if (centerlines) {
-    recipe.vesselGlyph = vesselGlyphRecipe();
+    recipe.vesselGlyph = vesselGlyphRecipe(recipe.tf);
     recipe.hybrid = hybridRecipe();
   }
   const Centerlines none;

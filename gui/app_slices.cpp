@@ -40,7 +40,6 @@ SliceOrientation planeOfAxis(int axis) {
   return SliceOrientation::axial;
 }
 
-// The voxel axes along a slice image's x and y.
 std::shared_ptr<const DisplayImage> displayOf(const SliceImage& slice) {
   Rgb8Image image{slice.width, slice.height, {}};
   image.rgb.resize(slice.grey.size() * 3);

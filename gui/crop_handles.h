@@ -23,6 +23,7 @@ struct CropHandle {
   CropFace face;
   glm::dvec2 screen{0.0};       // the face centre on screen (pixels)
   glm::dvec2 screenPerMm{0.0};  // how far the face centre moves on screen per mm along its axis
+  friend bool operator==(const CropHandle&, const CropHandle&) = default;
 };
 
 // A drag of a handle: the handle and the box when it was grabbed, and where the pointer was.
@@ -30,6 +31,7 @@ struct CropGrab {
   CropHandle handle;
   CropBox start;
   glm::dvec2 pointerAtGrab{0.0};
+  friend bool operator==(const CropGrab&, const CropGrab&) = default;
 };
 
 // Below this the axis points (nearly) at the viewer: a drag could not move its faces sensibly

@@ -194,9 +194,9 @@ struct SessionReader {
     vg.focusFollowsMain = flag(v, "focus_follows_main_tf", !namesOwnTf(vg.focusTf, vg.focusPreset));
     vg.contextFollowsMain =
         flag(v, "context_follows_main_tf", !namesOwnTf(vg.contextTf, vg.contextPreset));
-    if (!vg.focusFollowsMain && vg.focusTf.points.empty() && vg.focusPreset.empty())
+    if (!vg.focusFollowsMain && !namesOwnTf(vg.focusTf, vg.focusPreset))
       fail(where + "focus_tf is null and focus_preset empty");
-    if (!vg.contextFollowsMain && vg.contextTf.points.empty() && vg.contextPreset.empty())
+    if (!vg.contextFollowsMain && !namesOwnTf(vg.contextTf, vg.contextPreset))
       fail(where + "context_tf is null and context_preset empty");
     return vg;
   }
