@@ -144,6 +144,8 @@ void App::handleKeys() {
   // Arrows turn the patient like a drag in their direction (see drawViewport's grab semantics).
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) commit(RotateEdit{step});
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) commit(RotateEdit{-step});
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_DownArrow))) stepCprCursor(step);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) stepCprCursor(-step);
   // Ctrl+Z undoes the Vessels section's last change while it has the focus, else the TF's.
   const bool z = io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false);
   if (z && vessels_.focused) io.KeyShift ? redoVessels() : undoVessels();

@@ -257,6 +257,9 @@ class App {
   void showCprLook();
   void handleCprMouse(const CprPlacement& placement);
   void moveCprCursorTo(const CprPick& pick);
+  std::optional<CenterlinePlace> cprCursorPlace();
+  void setCprCursor(CprCursor cursor);
+  void stepCprCursor(double mm);
   void drawCprRuler(const CprPlacement& placement);
   void drawCprCursor(const CprPlacement& placement, ImVec2 paneMin, ImVec2 paneMax);
   void drawCrossSectionInset(ImVec2 paneMin, ImVec2 paneMax);

@@ -59,6 +59,7 @@ void App::moveCprCursorOnClick() {
   const ViewGeometry& view = shownView_;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   float best = kClickReachPx * kClickReachPx;
+  std::optional<CprCursor> nearest;
   for (std::size_t p = 0; p < centerlines->paths.size(); ++p) {
     const CenterlinePath& path = centerlines->paths[p];
     const std::vector<double> arcs = arcLengthsMm(path);
@@ -67,9 +68,40 @@ void App::moveCprCursorOnClick() {
       const float dx = at.x - mouse.x, dy = at.y - mouse.y;
       if (dx * dx + dy * dy >= best) continue;
       best = dx * dx + dy * dy;
-      cprView_.cursor = CenterlinePlace{int(p), arcs[n], path.points[n].positionMm};
+      nearest = CprCursor{int(p), arcs[n]};
     }
   }
+  if (nearest) setCprCursor(*nearest);
+}
+
+// The document's cursor on the centerlines it indexes, or none: no cursor, no centerlines, or a
+// path that is not there (any more) or too short; the arc length clamped to the path.
+std::optional<CenterlinePlace> App::cprCursorPlace() {
+  const std::optional<CprCursor>& cursor = doc().cpr.cursor;
+  const Centerlines* centerlines = cprCenterlines();
+  if (!cursor || !centerlines || cursor->path < 0 || cursor->path >= int(centerlines->paths.size()) ||
+      centerlines->paths[cursor->path].points.size() < 2)
+    return std::nullopt;
+  const CenterlinePath& path = centerlines->paths[cursor->path];
+  const double arcMm = std::clamp(cursor->arcMm, 0.0, arcLengthsMm(path).back());
+  return CenterlinePlace{cursor->path, arcMm, placeOnPath(path, arcMm).pointMm};
+}
+
+void App::setCprCursor(CprCursor cursor) {
+  CprState cpr = doc().cpr;
+  cpr.cursor = cursor;
+  commit(CprEdit{cpr});
+}
+
+// Up/Down (Shift: 10 mm) move the cursor 1 mm along its path, towards its end or its start; the
+// slices follow (one 3-D cursor).
+void App::stepCprCursor(double mm) {
+  if (cprViewWidth() <= 0) return;
+  const std::optional<CenterlinePlace> place = cprCursorPlace();
+  if (!place) return;
+  const double lengthMm = arcLengthsMm(cprCenterlines()->paths[place->path]).back();
+  setCprCursor(CprCursor{place->path, std::clamp(place->arcMm + mm, 0.0, lengthMm)});
+  if (const std::optional<CenterlinePlace> moved = cprCursorPlace()) moveSliceCursor(moved->pointMm);
 }
 
 float App::cprViewWidth() const {
@@ -219,9 +251,8 @@ void App::moveCprCursorTo(const CprPick& pick) {
   if (!centerlines || path < 0 || path >= int(centerlines->paths.size()) ||
       centerlines->paths[path].points.size() < 2)
     return;
-  const PathPlace place = placeOnPath(centerlines->paths[path], pick.arcMm);
-  cprView_.cursor = CenterlinePlace{path, pick.arcMm, place.pointMm};
-  moveSliceCursor(place.pointMm);
+  setCprCursor(CprCursor{path, pick.arcMm});
+  moveSliceCursor(placeOnPath(centerlines->paths[path], pick.arcMm).pointMm);
 }
 
 // Ticks every rulerStepMm beside the lumen (kRulerOffsetMm off the centerline, on its left in
@@ -262,9 +293,9 @@ void App::drawCprCursor(const CprPlacement& placement, ImVec2 paneMin, ImVec2 pa
   CprViewPanel& panel = cprView_;
   const CprState& state = doc().cpr;
   panel.cursorPixel.reset();
-  if (panel.cursor && (state.path < 0 || state.path == panel.cursor->path))
-    panel.cursorPixel =
-        cprPixelOf(panel.cpr->layout, state.path < 0 ? panel.cursor->path : 0, panel.cursor->arcMm);
+  const std::optional<CenterlinePlace> cursor = cprCursorPlace();
+  if (cursor && (state.path < 0 || state.path == cursor->path))
+    panel.cursorPixel = cprPixelOf(panel.cpr->layout, state.path < 0 ? cursor->path : 0, cursor->arcMm);
   if (!panel.cursorPixel) return;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 mark = toIm(screenOfCprPixel(placement, *panel.cursorPixel));
@@ -279,14 +310,11 @@ void App::drawCprCursor(const CprPlacement& placement, ImVec2 paneMin, ImVec2 pa
 void App::drawCrossSectionInset(ImVec2 paneMin, ImVec2 paneMax) {
   CprViewPanel& panel = cprView_;
   CrossSectionInset& inset = panel.inset;
-  const Centerlines* centerlines = cprCenterlines();
-  if (!centerlines || !panel.cursor || !panel.cursorPixel ||
-      panel.cursor->path >= int(centerlines->paths.size()) ||
-      centerlines->paths[panel.cursor->path].points.size() < 2)
-    return;
-  const std::pair<CenterlinePlace, CprLook> wanted{*panel.cursor, cprLook()};
+  const std::optional<CenterlinePlace> cursor = cprCursorPlace();
+  if (!cursor || !panel.cursorPixel) return;
+  const std::pair<CenterlinePlace, CprLook> wanted{*cursor, cprLook()};
   if (inset.madeFor != wanted) {
-    const PathPlace place = placeOnPath(centerlines->paths[panel.cursor->path], panel.cursor->arcMm);
+    const PathPlace place = placeOnPath(cprCenterlines()->paths[cursor->path], cursor->arcMm);
     const glm::dvec3 up = shownView_.up, towardsViewer = -shownView_.viewDir;
     const glm::dvec3 hint = std::abs(glm::dot(place.tangent, up)) < 0.7 ? up : towardsViewer;
     const CrossSection section = sampleCrossSection(data_.volume, place.pointMm, place.tangent, hint,
@@ -385,9 +413,8 @@ void App::markCprOnDvr() {
   if (!shown_ || !viewport_.hasImage) return;
   ImDrawList* front = ImGui::GetForegroundDrawList();
   front->PushClipRect(viewport_.min, viewport_.max, true);
-  if (panel.cursor)
-    front->AddCircle(dvrScreenOf(shownView_, panel.cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0,
-                     2);
+  if (const std::optional<CenterlinePlace> cursor = cprCursorPlace())
+    front->AddCircle(dvrScreenOf(shownView_, cursor->pointMm), 7, IM_COL32(90, 255, 120, 255), 0, 2);
   if (panel.hovered) {
     panel.markedOnDvr = dvrScreenOf(shownView_, panel.hovered->pointMm);
     front->AddCircle(*panel.markedOnDvr, 7, IM_COL32(255, 230, 90, 255), 0, 2);

@@ -19,7 +19,7 @@
 
 namespace angio {
 
-// A point of a centerline: the CPR view's cursor.
+// A point of a centerline: the CPR view's cursor (the document's CprCursor) where it is.
 struct CenterlinePlace {
   int path = 0;             // index into the centerlines
   double arcMm = 0;         // from the path's first point
@@ -80,7 +80,6 @@ struct CprViewPanel {
   std::string error;
   std::optional<CprPick> hovered;            // the CPR pixel under the mouse
   std::optional<ImVec2> markedOnDvr;         // where it was marked on the DVR image (screen)
-  std::optional<CenterlinePlace> cursor;     // set by a click near a centerline on the DVR image
   std::optional<glm::dvec2> cursorPixel;     // the cursor in the CPR image (pixel centres at integers)
   ImVec2 imageMin, imageMax;                 // where the CPR image was drawn (screen)
   std::optional<WindowLevel> windowAtPress;  // a right-drag's start

@@ -31,7 +31,7 @@ void App::drawSidePanel() {
   if (sectionHeader("Rendering")) commit(drawRenderingPanel(doc()));
   drawSlicesSection();
   if (sectionHeader("Crop & clip", false))
-    commit(drawClipPanel(doc().clip, domainExtent(data_.volume), widgetRects_));
+    commit(drawClipPanel(doc().clip, domainExtent(data_.volume), -shownView_.viewDir, widgetRects_));
   drawExportSection();
   drawSeriesExport();  // part of the Export section
   drawSessionSection();

@@ -174,8 +174,8 @@ nlohmann::json App::cprReport() const {
     if (panel.markedOnDvr) hovered["dvr_screen"] = {panel.markedOnDvr->x, panel.markedOnDvr->y};
   }
   nlohmann::json cursor = nullptr;
-  if (panel.cursor) {
-    cursor = {{"path", panel.cursor->path}, {"arc_mm", panel.cursor->arcMm}};
+  if (const std::optional<CprCursor>& set = doc().cpr.cursor) {
+    cursor = {{"path", set->path}, {"arc_mm", set->arcMm}};
     if (panel.cursorPixel) cursor["cpr_pixel"] = {panel.cursorPixel->x, panel.cursorPixel->y};
   }
   return {{"shown", cprViewWidth() > 0},

@@ -99,8 +99,12 @@ void App::pollCenterlineLoad() {
     std::error_code error;
     const fs::path absolute = fs::absolute(loaded.file, error);
     const std::string file = error ? loaded.file : absolute.lexically_normal().string();
-    if (vg.loading.from == CenterlineLoad::From::panel)
+    if (vg.loading.from == CenterlineLoad::From::panel) {
       vessels_.undo.push_back({doc().vessels.paths, "load " + loaded.file});
+      CprState cpr = doc().cpr;
+      cpr.cursor.reset();  // it was on the paths this file replaces (a session's stays)
+      commit(CprEdit{cpr});
+    }
     commit(VesselFileEdit{importedPaths(loaded.physical), file});
     commit(CenterlineFileEdit{vg.loading.given, file});
   } catch (const std::exception& error) {

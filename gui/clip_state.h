@@ -13,10 +13,9 @@ struct ClipState {
   bool cropOn = false;
   CropBox crop;  // mm of the volume frame; the whole domain when first turned on (empty: unset)
   bool planeOn = false;
-  bool facingViewer = true;  // else the normal is +-normalAxis
-  Axis normalAxis = Axis::i;
-  bool flipNormal = false;   // the normal along -normalAxis
-  double planeOffsetMm = 0;  // facing: depth from the centre; else along the normal from it
+  bool facingViewer = true;    // else the plane stays put in the volume, across `normal`
+  glm::dvec3 normal{1, 0, 0};  // volume frame, unit; the removed side (a voxel axis or oblique)
+  double planeOffsetMm = 0;    // facing: depth from the centre; else along the normal from it
   bool slabOn = false;
   ThickSlab slab{0, 20};
 
@@ -27,7 +26,20 @@ struct ClipState {
 // point is the domain centre moved along its normal).
 ViewClipping viewClippingOf(const ClipState& clip, glm::dvec3 extentMm);
 
-// The plane's unit normal when it does not face the viewer.
+// The plane's unit normal when it does not face the viewer (+i for a zero or non-finite one).
 glm::dvec3 clipNormalOf(const ClipState& clip);
+
+// The normal from its azimuth in the i-j plane (from +i towards +j) and its elevation towards +k,
+// in degrees, and back (azimuth 0 along +-k).
+glm::dvec3 normalFromAngles(glm::dvec2 azimuthElevationDeg);
+glm::dvec2 anglesOfNormal(glm::dvec3 normal);
+
+// The facing plane fixed where it is: the same cut for the view whose direction towards the
+// viewer is `towardsViewer` (volume frame), staying in the volume when the view turns.
+ClipState fixedToView(ClipState clip, glm::dvec3 towardsViewer);
+
+// How far the plane can move from the volume centre along `normal` and still cut it: half the
+// domain's extent projected on the normal.
+double planeReachMm(glm::dvec3 normal, glm::dvec3 extentMm);
 
 }  // namespace angio

@@ -52,6 +52,16 @@ const char* cprColoringName(CprColoring coloring);
 // and the coloring. (The VesselGlyph settings the hybrid builds on are VesselGlyphState's.)
 constexpr double kMinCprWidthMm = 10, kMaxCprWidthMm = 200;  // the section's width slider
 
+// The CPR's cursor: a place on a centerline path (the CPR, the DVR image, the slices and the
+// cross-section show it). The path indexes the centerlines the CPR shows; a cursor that no longer
+// fits them (a path deleted, another file) is not shown rather than moved.
+struct CprCursor {
+  int path = 0;
+  double arcMm = 0;  // from the path's first point
+
+  friend bool operator==(const CprCursor&, const CprCursor&) = default;
+};
+
 struct CprState {
   bool shown = false;  // the CPR view beside the image
   CprMode mode = CprMode::straightened;
@@ -65,6 +75,7 @@ struct CprState {
   // screen pixels. Back to the fitted image for another path, mode, centerlines or dataset.
   double zoom = 1;
   glm::dvec2 panPx{0.0};
+  std::optional<CprCursor> cursor;  // none until a click on a centerline or in the CPR
 
   friend bool operator==(const CprState&, const CprState&) = default;
 };

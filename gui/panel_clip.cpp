@@ -55,27 +55,51 @@ void drawCrop(ClipState& clip, glm::dvec3 extent, WidgetRects& rects) {
   }
 }
 
-void drawPlane(ClipState& clip, glm::dvec3 extent, WidgetRects& rects) {
+// The normal's widgets: a voxel axis, flipped, the current view's direction, or any direction by
+// its azimuth and elevation.
+void drawNormal(ClipState& clip, glm::dvec3 towardsViewer, WidgetRects& rects) {
+  ImGui::TextUnformatted("normal");
+  for (int axis = 0; axis < 3; ++axis) {
+    ImGui::SameLine();
+    if (ImGui::Button((std::string(kAxisNames[axis]) + "##clip_normal").c_str())) {
+      clip.normal = glm::dvec3(0.0);
+      clip.normal[axis] = 1;
+    }
+    noteRect(rects, std::string("clip_normal_") + kAxisNames[axis]);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("flip##clip")) clip.normal = -clipNormalOf(clip);
+  noteRect(rects, "clip_flip");
+  ImGui::SameLine();
+  if (ImGui::Button("from view##clip")) clip.normal = glm::normalize(towardsViewer);
+  noteRect(rects, "clip_from_view");
+  helpMarker(
+      "The normal points to the side that is removed. From view: towards you as the view "
+      "is now, so the plane removes what lies in front of it.");
+  glm::dvec2 angles = anglesOfNormal(clipNormalOf(clip));
+  const bool azimuth = slider("azimuth", angles.x, -180, 180, "%.1f deg", "clip_azimuth", rects);
+  const bool elevation = slider("elevation", angles.y, -90, 90, "%.1f deg", "clip_elevation", rects);
+  if (azimuth || elevation) clip.normal = normalFromAngles(angles);
+}
+
+void drawPlane(ClipState& clip, glm::dvec3 extent, glm::dvec3 towardsViewer, WidgetRects& rects) {
   if (!partSwitch("clip plane", clip.planeOn, "clip_plane",
                   "Remove the half-space on the plane's normal side. Facing the viewer: what lies "
-                  "in front of the plane (it turns with the view).",
+                  "in front of the plane (it turns with the view); Fix keeps that cut in the "
+                  "volume as the view turns.",
                   rects))
     return;
   ImGui::Indent();
   checkbox("facing the viewer", clip.facingViewer, "clip_facing", rects);
   double reach = glm::length(extent) / 2;
-  if (!clip.facingViewer) {
-    ImGui::TextUnformatted("normal");
-    for (int axis = 0; axis < 3; ++axis) {
-      ImGui::SameLine();
-      if (ImGui::RadioButton((std::string("+") + kAxisNames[axis] + "##clip").c_str(),
-                             int(clip.normalAxis) == axis))
-        clip.normalAxis = Axis(axis);
-      noteRect(rects, std::string("clip_normal_") + kAxisNames[axis]);
-    }
+  if (clip.facingViewer) {
     ImGui::SameLine();
-    checkbox("flip", clip.flipNormal, "clip_flip", rects);
-    reach = extent[int(clip.normalAxis)] / 2;
+    if (ImGui::Button("fix##clip")) clip = fixedToView(clip, towardsViewer);
+    noteRect(rects, "clip_fix");
+  }
+  if (!clip.facingViewer) {
+    drawNormal(clip, towardsViewer, rects);
+    reach = planeReachMm(clipNormalOf(clip), extent);
   }
   slider("offset##plane", clip.planeOffsetMm, -reach, reach, "%.1f mm", "clip_plane_offset", rects);
   ImGui::Unindent();
@@ -97,10 +121,11 @@ void drawSlab(ClipState& clip, glm::dvec3 extent, WidgetRects& rects) {
 
 }  // namespace
 
-std::optional<ClipEdit> drawClipPanel(const ClipState& clip, glm::dvec3 extentMm, WidgetRects& rects) {
+std::optional<ClipEdit> drawClipPanel(const ClipState& clip, glm::dvec3 extentMm,
+                                      glm::dvec3 towardsViewer, WidgetRects& rects) {
   ClipState edited = clip;
   drawCrop(edited, extentMm, rects);
-  drawPlane(edited, extentMm, rects);
+  drawPlane(edited, extentMm, towardsViewer, rects);
   drawSlab(edited, extentMm, rects);
   if (ImGui::Button("reset##clip")) edited = {};
   noteRect(rects, "clip_reset");

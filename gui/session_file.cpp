@@ -39,7 +39,9 @@ Json cprJson(const CprState& cpr) {
           {"zoom", cpr.zoom},
           {"pan_px", {cpr.panPx.x, cpr.panPx.y}},
           {"hybrid", cpr.hybrid},
-          {"transition_mm", cpr.transitionMm}};
+          {"transition_mm", cpr.transitionMm},
+          {"cursor", cpr.cursor ? Json{{"path", cpr.cursor->path}, {"arc_mm", cpr.cursor->arcMm}}
+                                : Json(nullptr)}};
 }
 
 Json vesselGlyphJson(const VesselGlyphState& vg) {
@@ -69,8 +71,7 @@ Json clipJson(const ClipState& clip) {
           {"crop_max_mm", vectorJson(clip.crop.maxMm)},
           {"plane_on", clip.planeOn},
           {"facing_viewer", clip.facingViewer},
-          {"normal_axis", toString(clip.normalAxis)},
-          {"flip_normal", clip.flipNormal},
+          {"normal", vectorJson(clipNormalOf(clip))},
           {"plane_offset_mm", clip.planeOffsetMm},
           {"slab_on", clip.slabOn},
           {"slab_offset_mm", clip.slab.offsetMm},
@@ -262,8 +263,15 @@ struct SessionReader {
       fail(where + "crop_min_mm exceeds crop_max_mm");
     clip.planeOn = flag(c, "plane_on", clip.planeOn);
     clip.facingViewer = flag(c, "facing_viewer", clip.facingViewer);
-    clip.normalAxis = *choice(c, "normal_axis", parseAxis, clip.normalAxis, "i, j or k");
-    clip.flipNormal = flag(c, "flip_normal", clip.flipNormal);
+    if (c.contains("normal_axis")) {  // sessions from before oblique planes
+      clip.normal = glm::dvec3(0.0);
+      clip.normal[int(*choice(c, "normal_axis", parseAxis, Axis::i, "i, j or k"))] =
+          flag(c, "flip_normal", false) ? -1 : 1;
+    }
+    clip.normal = vector(c, "normal", clip.normal);
+    if (const double length = glm::length(clip.normal); !(length > 1e-9) || !std::isfinite(length))
+      fail(where + "normal is not a direction");
+    clip.normal = glm::normalize(clip.normal);
     clip.planeOffsetMm = number(c, "plane_offset_mm", -kFar, kFar, clip.planeOffsetMm);
     clip.slabOn = flag(c, "slab_on", clip.slabOn);
     clip.slab.offsetMm = number(c, "slab_offset_mm", -kFar, kFar, clip.slab.offsetMm);
@@ -309,7 +317,16 @@ struct SessionReader {
     cpr.panPx = pan(c, "cpr", cpr.panPx);
     cpr.hybrid = flag(c, "hybrid", cpr.hybrid);
     cpr.transitionMm = number(c, "transition_mm", 0, kMaxTransitionMm, cpr.transitionMm);
+    if (c.contains("cursor") && !c["cursor"].is_null())
+      cpr.cursor = in("cpr").in("cursor").cprCursor(c["cursor"]);
     return cpr;
+  }
+
+  CprCursor cprCursor(const Json& c) const {
+    // `where` is "cpr.cursor." here.
+    if (!c.is_object()) fail("cpr cursor is not an object with path and arc_mm");
+    if (!c.contains("path") || !c["path"].is_number_integer()) fail(where + "path is not a path index");
+    return CprCursor{int(number(c, "path", 0, 1e6, 0)), number(c, "arc_mm", 0, 1e7, 0)};
   }
 
   // The TF a session names by its preset (or TF file); none named: the first preset, as at start.

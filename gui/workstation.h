@@ -57,7 +57,8 @@ struct CenterlineFileEdit {
 };
 // A dataset replaced the shown one: it is the document's, zoom and pan start over, it heads the
 // recent files. What belonged to the old dataset goes (labels, vessel paths, the centerline file,
-// VesselGlyph and the CPR view that showed them, clipping in its millimetres, the slice cursor)
+// VesselGlyph and the CPR view that showed them, clipping in its millimetres, the slice and CPR
+// cursors)
 // unless the dataset is the one a session named: the session's own state, applied before its load, stays.
 struct DatasetOpened {
   std::string dataset;

@@ -9,12 +9,15 @@ namespace {
 
 constexpr double kStepRatio = 1.189207115002721;  // 2^(1/4)
 constexpr double kFinerHeadroom = 0.75;
+constexpr double kCoarsestPerFastIsd = 2.0;
 
-// From the finest (medium's isd) to the coarsest (fast's), both included.
-std::vector<double> isdLadder(double finest, double coarsest) {
+// From the finest (medium's isd) to the fast level's, both included, then on in the same ratio
+// up to kCoarsestPerFastIsd times the fast level's.
+std::vector<double> isdLadder(double finest, double fast) {
   std::vector<double> ladder;
-  for (double isd = finest; isd < coarsest * (1 - 1e-9); isd *= kStepRatio) ladder.push_back(isd);
-  ladder.push_back(coarsest);
+  for (double isd = finest; isd < fast * (1 - 1e-9); isd *= kStepRatio) ladder.push_back(isd);
+  for (double isd = fast; isd <= fast * kCoarsestPerFastIsd * (1 + 1e-9); isd *= kStepRatio)
+    ladder.push_back(isd);
   return ladder;
 }
 
@@ -23,10 +26,10 @@ std::vector<double> isdLadder(double finest, double coarsest) {
 Sampling motionSampling(const LevelSamplings& levels, std::optional<MeasuredFrame> last,
                         double budgetMs) {
   Sampling sampling = levels[int(Quality::fast)];
-  const double finest = levels[int(Quality::medium)].isd, coarsest = sampling.isd;
-  if (budgetMs <= 0 || !last || !(last->ms > 0) || !(last->isd > 0) || !(finest < coarsest))
-    return sampling;
-  for (double isd : isdLadder(finest, coarsest)) {
+  const double finest = levels[int(Quality::medium)].isd;
+  if (budgetMs <= 0 || !last || !(last->ms > 0) || !(last->isd > 0)) return sampling;
+  const std::vector<double> ladder = isdLadder(finest, sampling.isd);
+  for (double isd : ladder) {
     const double predicted = last->ms * (last->isd / isd) * (last->isd / isd);
     const bool finer = isd < last->isd * (1 - 1e-9);
     if (predicted <= budgetMs * (finer ? kFinerHeadroom : 1.0)) {
@@ -34,7 +37,8 @@ Sampling motionSampling(const LevelSamplings& levels, std::optional<MeasuredFram
       return sampling;
     }
   }
-  return sampling;  // even the fast level is over budget: it is the coarsest there is
+  sampling.isd = ladder.back();  // even the coarsest step is over budget: it is the best there is
+  return sampling;
 }
 
 }  // namespace angio

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -128,6 +129,75 @@ TEST_F(GuiClip, DraggingACropHandleMovesItsFaceAndDoesNotTurnTheView) {
   EXPECT_EQ(after["state"]["clip"]["crop_min_mm"], before["state"]["clip"]["crop_min_mm"]);
   EXPECT_EQ(after["state"]["view"]["angle_deg"], before["state"]["view"]["angle_deg"]);
   EXPECT_NE(after["runtime"]["shown"]["checksum"], before["runtime"]["shown"]["checksum"]);
+}
+
+// Pixels of the two screenshots' viewport image (`rect` of the layout) that differ by more than 8
+// in any channel, as a fraction of the image.
+double differingShare(const test_support::Pixels& a, const test_support::Pixels& b, const Json& rect) {
+  const int x0 = int(rect[0].get<double>()) + 1, y0 = int(rect[1].get<double>()) + 1,
+            x1 = int(rect[2].get<double>()) - 1, y1 = int(rect[3].get<double>()) - 1;
+  int differing = 0, all = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x, ++all)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(a.at(x, y)[c] - b.at(x, y)[c]) > 8) {
+          ++differing;
+          break;
+        }
+  return all > 0 ? double(differing) / all : 1.0;
+}
+
+// Fix turns the facing plane into a plane fixed in the volume with the same cut: the image stays,
+// the normal points at the viewer across the view's axis; turning the view then turns the cut
+// with the volume, unlike a facing plane's.
+TEST_F(GuiClip, FixingTheFacingPlaneKeepsItsCutAndTurnsItWithTheVolume) {
+  auto start = run("[" + record("closed") + "]");
+  ASSERT_EQ(start.exitCode, 0) << start.output;
+  const std::string open =
+      R"({"click": )" +
+      test_support::middleOf(readJson("closed.json")["runtime"]["layout"]["section_Crop & clip"]) +
+      R"(}, {"wait_ms": 100})";
+  auto opened = run("[" + open + ", " + record("open") + "]");
+  ASSERT_EQ(opened.exitCode, 0) << opened.output;
+  const std::string planeOn =
+      R"({"click": )" + test_support::leftEnd(readJson("open.json")["runtime"]["layout"]["clip_plane"]) +
+      R"(}, {"move": [5, 5]})";
+  auto facing = run("[" + open + ", " + planeOn + ", " + record("facing") + "]");
+  ASSERT_EQ(facing.exitCode, 0) << facing.output;
+  const Json facingState = readJson("facing.json");
+  ASSERT_FALSE(facingState["runtime"]["layout"]["clip_fix"].is_null());
+  const std::string fix = R"({"click": )" +
+                          test_support::middleOf(facingState["runtime"]["layout"]["clip_fix"]) +
+                          R"(}, {"move": [5, 5]})";
+  const std::string turn = R"({"key": "Shift+Left"}, {"key": "Shift+Left"}, {"key": "Shift+Left"})";
+  auto fixed = run("[" + open + ", " + planeOn + ", " + fix + ", " + record("fixed") + ", " + turn +
+                   ", " + record("fixed-turned") + "]");
+  ASSERT_EQ(fixed.exitCode, 0) << fixed.output;
+  auto facingTurned =
+      run("[" + open + ", " + planeOn + ", " + turn + ", " + record("facing-turned") + "]");
+  ASSERT_EQ(facingTurned.exitCode, 0) << facingTurned.output;
+
+  const Json fixedState = readJson("fixed.json");
+  const Json& clip = fixedState["state"]["clip"];
+  EXPECT_FALSE(clip["facing_viewer"].get<bool>()) << clip;
+  const int axis = std::string("ijk").find(fixedState["state"]["view"]["axis"].get<std::string>());
+  const glm::dvec3 normal(clip["normal"][0], clip["normal"][1], clip["normal"][2]);
+  EXPECT_NEAR(glm::length(normal), 1, 1e-12);
+  EXPECT_NEAR(normal[axis], 0, 1e-12);  // the view looks across its axis
+  const Json rect = facingState["runtime"]["layout"]["viewport_image"];
+  EXPECT_EQ(fixedState["runtime"]["layout"]["viewport_image"], rect);
+  // The same cut: at most float rounding at the cut's edge tells the two images apart.
+  EXPECT_LT(differingShare(test_support::pixelsOf(file("facing.png")),
+                           test_support::pixelsOf(file("fixed.png")), rect),
+            0.005);
+  // 30 degrees on: the fixed plane's normal stays in the volume, the facing one turned with the view.
+  const Json turned = readJson("fixed-turned.json");
+  EXPECT_EQ(turned["state"]["clip"]["normal"], clip["normal"]);
+  EXPECT_NE(turned["state"]["view"]["angle_deg"], fixedState["state"]["view"]["angle_deg"]);
+  EXPECT_GT(differingShare(test_support::pixelsOf(file("fixed-turned.png")),
+                           test_support::pixelsOf(file("facing-turned.png")),
+                           turned["runtime"]["layout"]["viewport_image"]),
+            0.02);
 }
 
 }  // namespace

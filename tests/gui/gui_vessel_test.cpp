@@ -295,6 +295,9 @@ TEST_F(GuiVessel, CprPaneZoomsAboutThePointerSetsTheWindowAndPutsTheCursorWithIt
                             at + R"(}, {"wait_ms": 100},
     {"screenshot": ")" + file("pane.png") +
                             R"("}, {"state": ")" + file("clicked.json") + R"("},
+    {"key": "Down"}, {"key": "Down"}, {"key": "Shift+Down"}, {"key": "Up"}, {"wait_ms": 50},
+    {"state": ")" + file("stepped.json") +
+                            R"("},
     {"double_click": )" + at +
                             R"(}, {"wait_ms": 50}, {"state": ")" + file("fitted.json") + R"("}])";
   const auto run = runScript(steps, centerlines);
@@ -324,6 +327,17 @@ TEST_F(GuiVessel, CprPaneZoomsAboutThePointerSetsTheWindowAndPutsTheCursorWithIt
   EXPECT_TRUE(clicked["runtime"]["layout"].contains("cpr_section"));  // the inset is drawn
   // Nothing of it asked the 3-D view for an image (a press in the pane is not a turn of the view).
   EXPECT_EQ(clicked["runtime"]["newest_request"], before["runtime"]["newest_request"]);
+  // The arrow keys step the cursor along its path, 1 mm (Shift: 10 mm), the slices with it; the
+  // document (and so a session) keeps it.
+  const Json stepped = readJson("stepped.json");
+  const Json& steppedCursor = stepped["state"]["cpr"]["cursor"];
+  ASSERT_TRUE(steppedCursor.is_object()) << stepped["state"]["cpr"];
+  EXPECT_EQ(steppedCursor["path"], cursor["path"]);
+  EXPECT_NEAR(steppedCursor["arc_mm"].get<double>(), cursor["arc_mm"].get<double>() + 11, 1e-9);
+  EXPECT_NE(stepped["state"]["slices"]["cursor_mm"], clicked["state"]["slices"]["cursor_mm"]);
+  EXPECT_NEAR(stepped["runtime"]["vessel_glyph"]["cpr"]["cursor"]["cpr_pixel"][1].get<double>(),
+              cursor["cpr_pixel"][1].get<double>() + 11 / cpr["pixel_mm"].get<double>(), 1.0);
+  EXPECT_EQ(stepped["state"]["view"]["angle_deg"], clicked["state"]["view"]["angle_deg"]);
   const Json fitted = readJson("fitted.json");
   EXPECT_EQ(fitted["state"]["cpr"]["zoom"], 1.0);
   EXPECT_EQ(fitted["state"]["cpr"]["pan_px"], Json({0.0, 0.0}));

@@ -74,7 +74,8 @@ Document unusualSession() {
            .hybrid = true,
            .transitionMm = 3.5,
            .zoom = 2.5,
-           .panPx = {-30, 12.5}};
+           .panPx = {-30, 12.5},
+           .cursor = CprCursor{2, 87.25}};
   s.slices = {true, glm::dvec3(12.5, -3.25, 80), {2000, 500}};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
@@ -166,6 +167,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_EQ(loaded.cpr.coloring, CprColoring::focusTf);
   EXPECT_TRUE(loaded.cpr.hybrid);
   EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
+  EXPECT_EQ(loaded.cpr.cursor, (CprCursor{2, 87.25}));
   EXPECT_EQ(loaded.cpr, saved.cpr);  // and the window, width, zoom and pan
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
   EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
@@ -305,6 +307,10 @@ TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
   expectRejected(R"({"cpr": {"window": 0}})", "window");
   expectRejected(R"({"cpr": {"zoom": 1000}})", "zoom");
   expectRejected(R"({"cpr": {"pan_px": [1]}})", "cpr pan_px is not [x, y]");
+  expectRejected(R"({"cpr": {"cursor": [1, 2]}})", "cpr cursor is not an object");
+  expectRejected(R"({"cpr": {"cursor": {"arc_mm": 2}}})", "cpr.cursor.path is not a path index");
+  expectRejected(R"({"cpr": {"cursor": {"path": 0, "arc_mm": -2}}})",
+                 "cpr.cursor.arc_mm -2 is out of range");
   expectRejected(R"({"slices": {"window": 0}})", "slices.window 0 is out of range");
   expectRejected(R"({"slices": {"cursor_mm": [1, 2]}})", "slices.cursor_mm is not [x, y, z]");
   expectRejected(R"({"slices": {"shown": 1}})", "slices.shown is not true or false");

@@ -127,6 +127,7 @@ Document withVesselState() {
   d.vesselGlyph.centerlinesAbsolute = "/data/a.csv";
   d.vesselGlyph.enabled = true;
   d.cpr.shown = d.cpr.hybrid = true;
+  d.cpr.cursor = CprCursor{0, 25};
   d.vessels.paths = {VesselPath{}};
   d.labels.file = "/data/a-labels.nrrd";
   d.clip.cropOn = true;
@@ -146,6 +147,7 @@ TEST(GuiWorkstation, ANewDatasetDropsWhatBelongedToTheOldOneAndListsIt) {
   EXPECT_FALSE(after.vesselGlyph.enabled);
   EXPECT_FALSE(after.cpr.shown);
   EXPECT_FALSE(after.cpr.hybrid);
+  EXPECT_FALSE(after.cpr.cursor);  // it was on the old paths
   EXPECT_TRUE(after.vessels.paths.empty());
   EXPECT_TRUE(after.labels.file.empty());
   EXPECT_EQ(after.clip, ClipState{});
@@ -171,6 +173,7 @@ TEST(GuiWorkstation, ASessionsDatasetKeepsTheSessionsVesselGlyphCprAndClipping) 
   EXPECT_TRUE(after.vesselGlyph.enabled);
   EXPECT_TRUE(after.cpr.shown && after.cpr.hybrid);
   EXPECT_TRUE(after.clip.cropOn);
+  EXPECT_EQ(after.cpr.cursor, (CprCursor{0, 25}));
   EXPECT_TRUE(after.vessels.paths.empty());  // App brings the session's paths back once it loaded
 }
 

@@ -1,5 +1,6 @@
-// The first level's sampling while dragging: the finest isd of the ladder between the medium and
-// fast levels whose predicted time (the measured one times the pixel ratio) fits the budget.
+// The first level's sampling while dragging: the finest isd of the ladder from the medium level to
+// twice the fast level's whose predicted time (the measured one times the pixel ratio) fits the
+// budget.
 #include "render/motion_sampling.h"
 
 #include <gtest/gtest.h>
@@ -31,8 +32,24 @@ TEST(MotionSampling, ASlowFrameCoarsensToTheFirstStepWithinTheBudget) {
   const LevelSamplings levels = defaultLevelSamplings();
   // 100 ms at isd 1: kStep^3 costs 100 / 2.83 = 35.4 ms <= 40.
   EXPECT_NEAR(motionSampling(levels, MeasuredFrame{100, 1}, 40).isd, kStep * kStep * kStep, 1e-12);
-  // Even the fast level is over budget: it is the coarsest there is.
-  EXPECT_DOUBLE_EQ(motionSampling(levels, MeasuredFrame{500, 1}, 40).isd, 3.0);
+}
+
+TEST(MotionSampling, AFastLevelOverBudgetCoarsensPastItUpToTwiceItsIsd) {
+  const LevelSamplings levels = defaultLevelSamplings();  // fast: isd 3
+  // 52 ms at isd 3 (the fast level on a tall run-off): 3 kStep costs 52 / 1.41 = 36.8 ms.
+  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{52, 3}, 40).isd, 3 * kStep, 1e-12);
+  // 500 ms at isd 1: 3 kStep costs 500 / 12.7 = 39.3 ms.
+  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{500, 1}, 40).isd, 3 * kStep, 1e-12);
+  // Even isd 6 (a quarter of the fast level's pixels) is over budget: it is the coarsest there is.
+  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{2000, 1}, 40).isd, 6.0, 1e-9);
+  EXPECT_EQ(motionSampling(levels, MeasuredFrame{2000, 1}, 40).osd, levels[0].osd);
+}
+
+TEST(MotionSampling, LevelsWithoutRoomBelowTheFastLevelStillCoarsen) {
+  LevelSamplings levels = defaultLevelSamplings();
+  levels[int(Quality::medium)].isd = levels[int(Quality::fast)].isd;  // a zoom clamped both
+  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{78, 3}, 40).isd, 3 * kStep * kStep, 1e-12);
+  EXPECT_DOUBLE_EQ(motionSampling(levels, MeasuredFrame{10, 3}, 40).isd, 3.0);
 }
 
 TEST(MotionSampling, AFrameJustWithinTheBudgetStaysWhereItIs) {
