@@ -279,6 +279,7 @@ class App {
   void drawSliceCrosshair(SliceOrientation orientation);
   void handleSliceMouse(SliceOrientation orientation);
   void moveSliceCursor(glm::dvec3 cursorMm);
+  void zoomOrPanSlice(SliceOrientation orientation);
   void moveSliceCursorOnClick();  // right after drawViewport: a click with no tool on
   void drawSliceCursorOnImage();
   nlohmann::json slicesReport() const;

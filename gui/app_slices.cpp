@@ -13,6 +13,7 @@
 
 #include "gui/app.h"
 #include "gui/panel_slices.h"
+#include "gui/zoom_pan.h"
 
 namespace angio {
 
@@ -144,20 +145,33 @@ void App::drawSlicePane(SliceOrientation orientation, ImVec2 min, ImVec2 size,
   const float titleHeight = ImGui::GetTextLineHeightWithSpacing();
   const glm::dvec2 imageArea(size.x, std::max(size.y - titleHeight, 1.f));
   updateSliceTexture(orientation);
-  pane.placement = placeSlice(pane.size, sliceSpacingMm(volume, orientation),
-                              {min.x, min.y + titleHeight}, imageArea);
-  const SlicePlacement& placed = pane.placement;
-  const ImVec2 imageMin = toIm(placed.min), imageMax = toIm(placed.min + placed.size);
-  ImGui::SetCursorScreenPos(imageMin);
+  const glm::dvec2 areaMin{min.x, min.y + titleHeight};
+  const auto place = [&] {
+    const SlicePaneView& view = doc().slices.panes[int(orientation)];
+    return placeSlice(pane.size, sliceSpacingMm(volume, orientation), areaMin, imageArea, view.zoom,
+                      view.panPx);
+  };
+  pane.placement = place();
+  const ImVec2 paneMin = toIm(areaMin), paneMax = toIm(areaMin + imageArea);
+  ImGui::SetCursorScreenPos(paneMin);
   const std::string id = std::string("slice_") + sliceOrientationName(orientation);
   ImGui::InvisibleButton(
-      id.c_str(), ImVec2(std::max(imageMax.x - imageMin.x, 1.f), std::max(imageMax.y - imageMin.y, 1.f)),
-      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+      id.c_str(), ImVec2(std::max(paneMax.x - paneMin.x, 1.f), std::max(paneMax.y - paneMin.y, 1.f)),
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+          ImGuiButtonFlags_MouseButtonMiddle);
   noteRect(id);
   pane.drawn = true;
   handleSliceMouse(orientation);
+  pane.placement = place();  // with this frame's zoom and pan, so the image follows the gesture
+  const SlicePlacement& placed = pane.placement;
+  const ImVec2 imageMin = toIm(placed.min), imageMax = toIm(placed.min + placed.size);
+  noteRect(id + "_image", imageMin, imageMax);
+  draw->PushClipRect(paneMin, paneMax, true);
   draw->AddImage(pane.texture.id(), imageMin, imageMax);
-  draw->PushClipRect(imageMin, imageMax, true);
+  // The part of the image in view: the overlays stay on it, the letters at its edges.
+  const ImVec2 shownMin(std::max(imageMin.x, paneMin.x), std::max(imageMin.y, paneMin.y)),
+      shownMax(std::min(imageMax.x, paneMax.x), std::min(imageMax.y, paneMax.y));
+  draw->PushClipRect(shownMin, shownMax, true);
   drawSliceCrosshair(orientation);
   if (centerlines)
     for (const SliceCrossing& crossing : sliceCrossings(volume, orientation, cursor, *centerlines))
@@ -165,12 +179,13 @@ void App::drawSlicePane(SliceOrientation orientation, ImVec2 min, ImVec2 size,
                             IM_COL32(40, 230, 255, 255));
   const SliceLetters letters = sliceLetters(orientation);
   const ImU32 letterColor = IM_COL32(255, 255, 255, 200);
-  const float midX = (imageMin.x + imageMax.x) / 2, midY = (imageMin.y + imageMax.y) / 2;
+  const float midX = (shownMin.x + shownMax.x) / 2, midY = (shownMin.y + shownMax.y) / 2;
   const auto letter = [&](char c, ImVec2 at) { draw->AddText(at, letterColor, &c, &c + 1); };
-  letter(letters.left, ImVec2(imageMin.x + 3, midY - 7));
-  letter(letters.right, ImVec2(imageMax.x - 11, midY - 7));
-  letter(letters.top, ImVec2(midX - 3, imageMin.y + 2));
-  letter(letters.bottom, ImVec2(midX - 3, imageMax.y - 16));
+  letter(letters.left, ImVec2(shownMin.x + 3, midY - 7));
+  letter(letters.right, ImVec2(shownMax.x - 11, midY - 7));
+  letter(letters.top, ImVec2(midX - 3, shownMin.y + 2));
+  letter(letters.bottom, ImVec2(midX - 3, shownMax.y - 16));
+  draw->PopClipRect();
   draw->PopClipRect();
 }
 
@@ -193,20 +208,25 @@ void App::drawSliceCrosshair(SliceOrientation orientation) {
   draw->AddLine(ImVec2(x + kGap, y), ImVec2(right, y), horizontal);
 }
 
-// Right after the slice's button: press or drag with the left button moves the cursor, the right
-// button's drag sets window/level, the wheel steps through slices; hovering reads the voxel.
+// Right after the slice's button: press or drag with the left button moves the cursor (on the
+// image), the right button's drag sets window/level, the wheel steps through slices; Ctrl+wheel
+// zooms about the pointer, a middle drag pans, a double click fits again; hovering reads the voxel.
 void App::handleSliceMouse(SliceOrientation orientation) {
   const SlicePaneUi& pane = slices_.panes[int(orientation)];
   const ImGuiIO& io = ImGui::GetIO();
   const glm::dvec2 pixel =
       slicePixelOfScreen(pane.placement, {double(io.MousePos.x), double(io.MousePos.y)});
+  const bool onImage = glm::all(glm::greaterThanEqual(pixel, glm::dvec2(0.0))) &&
+                       glm::all(glm::lessThan(pixel, glm::dvec2(pane.size)));
   const glm::dvec3 cursor = sliceCursor();
-  if (ImGui::IsItemHovered())
+  if (ImGui::IsItemHovered() && onImage)
     slices_.hoveredVoxel = cursorVoxel(
         data_.volume,
         clampToVolume(data_.volume, pointOfSlicePixel(data_.volume, orientation, pixel, cursor)));
   if (ImGui::IsItemActive()) slices_.held = true;
-  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+  zoomOrPanSlice(orientation);
+  if (io.KeyCtrl || ImGui::IsMouseDown(ImGuiMouseButton_Middle)) return;
+  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left) && onImage) {
     const glm::dvec3 moved =
         clampToVolume(data_.volume, pointOfSlicePixel(data_.volume, orientation, pixel, cursor));
     if (moved != cursor) moveSliceCursor(moved);
@@ -223,6 +243,23 @@ void App::handleSliceMouse(SliceOrientation orientation) {
                       std::max(int(std::lround(std::abs(io.MouseWheel))), 1);
     moveSliceCursor(steppedCursor(data_.volume, orientation, cursor, steps));
   }
+}
+
+// The pane's view gestures (handleSliceMouse).
+void App::zoomOrPanSlice(SliceOrientation orientation) {
+  const SlicePlacement& placed = slices_.panes[int(orientation)].placement;
+  const ImGuiIO& io = ImGui::GetIO();
+  SliceViewState slices = doc().slices;
+  SlicePaneView& view = slices.panes[int(orientation)];
+  // The fitted image's centre on the screen: the placement's centre less the pan.
+  const glm::dvec2 home = placed.min + placed.size * 0.5 - view.panPx;
+  if (ImGui::IsItemHovered() && io.KeyCtrl && io.MouseWheel != 0)
+    zoomAboutPointer(view.zoom, view.panPx, glm::dvec2(io.MousePos.x, io.MousePos.y) - home,
+                     io.MouseWheel, kMinSliceZoom, kMaxSliceZoom);
+  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Middle) && !ImGui::IsItemActivated())
+    view.panPx += glm::dvec2(io.MouseDelta.x, io.MouseDelta.y);
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) view = {};
+  if (!(slices == doc().slices)) commit(SliceViewEdit{slices});
 }
 
 // The column beside the image: a caption with the voxel under the mouse, then the three slices.
@@ -275,10 +312,14 @@ nlohmann::json App::slicesReport() const {
     panes[sliceOrientationName(orientation)] = {
         {"index", pane.shown->index}, {"width", pane.size.x}, {"height", pane.size.y}};
   }
+  nlohmann::json hovered = nullptr;
+  if (slices_.hoveredVoxel)
+    hovered = {slices_.hoveredVoxel->x, slices_.hoveredVoxel->y, slices_.hoveredVoxel->z};
   return {{"shown", sliceViewWidth() > 0},
           {"cursor_mm", {cursor.x, cursor.y, cursor.z}},
           {"cursor_voxel", {voxel.x, voxel.y, voxel.z}},
           {"hu", huOfDensity(data_.volume.densityAt(voxel.x, voxel.y, voxel.z))},
+          {"hovered_voxel", hovered},
           {"panes", panes}};
 }
 

@@ -4,6 +4,7 @@
 // hybrid, the VesselGlyph panel's settings and TFs, crop box, clip plane and slab, the slice view,
 // which side-panel sections are open, recent files), as plain values. Only Workstation::apply (gui/workstation.h) changes one; the session
 // file (gui/session_file.h) is its JSON. Runtime things (textures, the renderer, jobs) live in App.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -138,10 +139,21 @@ Centerlines centerlinesOf(const VesselsState& vessels);
 // The linked slice view (render/slice_images.h): axial, coronal and sagittal slices through the
 // 3-D cursor beside the image, grey through a window/level. The cursor is in mm of the volume frame
 // and belongs to the dataset: a new one starts at its centre.
+// A slice pane's zoom about its fitted image's centre and its pan (screen pixels), as the CPR
+// pane's; zoom 1 and no pan: the slice fits the pane.
+constexpr double kMinSliceZoom = 1, kMaxSliceZoom = 16;
+struct SlicePaneView {
+  double zoom = 1;
+  glm::dvec2 panPx{0.0};
+
+  friend bool operator==(const SlicePaneView&, const SlicePaneView&) = default;
+};
+
 struct SliceViewState {
   bool shown = false;
-  std::optional<glm::dvec3> cursorMm;  // none: the volume's centre
-  WindowLevel windowLevel{600, 250};   // CTA
+  std::optional<glm::dvec3> cursorMm;    // none: the volume's centre
+  WindowLevel windowLevel{600, 250};     // CTA
+  std::array<SlicePaneView, 3> panes{};  // axial, coronal, sagittal (SliceOrientation order)
 
   friend bool operator==(const SliceViewState&, const SliceViewState&) = default;
 };

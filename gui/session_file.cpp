@@ -79,11 +79,20 @@ Json clipJson(const ClipState& clip) {
 }
 
 // The slice view; the cursor only where the user put it (null: the volume's centre).
+Json slicePanesJson(const std::array<SlicePaneView, 3>& panes) {
+  Json json = Json::object();
+  for (int o = 0; o < 3; ++o)
+    json[sliceOrientationName(SliceOrientation(o))] = {{"zoom", panes[o].zoom},
+                                                       {"pan_px", {panes[o].panPx.x, panes[o].panPx.y}}};
+  return json;
+}
+
 Json slicesJson(const SliceViewState& slices) {
   return {{"shown", slices.shown},
           {"window", slices.windowLevel.window},
           {"level", slices.windowLevel.level},
-          {"cursor_mm", slices.cursorMm ? vectorJson(*slices.cursorMm) : Json(nullptr)}};
+          {"cursor_mm", slices.cursorMm ? vectorJson(*slices.cursorMm) : Json(nullptr)},
+          {"panes", slicePanesJson(slices.panes)}};
 }
 
 Json samplingJson(const Sampling& sampling) {
@@ -287,6 +296,15 @@ struct SessionReader {
     slices.windowLevel.level = number(s, "level", -1e5, 1e5, slices.windowLevel.level);
     if (s.contains("cursor_mm") && !s["cursor_mm"].is_null())
       slices.cursorMm = vector(s, "cursor_mm", glm::dvec3(0.0));
+    const Json& panes = section(s, "panes");
+    for (int o = 0; o < 3; ++o) {
+      const char* name = sliceOrientationName(SliceOrientation(o));
+      const SessionReader pane = in("panes").in(name);
+      const Json& view = in("panes").section(panes, name);
+      SlicePaneView& set = slices.panes[o];
+      set.zoom = pane.number(view, "zoom", kMinSliceZoom, kMaxSliceZoom, set.zoom);
+      set.panPx = pane.pan(view, pane.where.substr(0, pane.where.size() - 1), set.panPx);
+    }
     return slices;
   }
 

@@ -6,14 +6,15 @@
 namespace angio {
 
 SlicePlacement placeSlice(glm::ivec2 imageSize, glm::dvec2 spacingMm, glm::dvec2 paneMin,
-                          glm::dvec2 paneSize) {
+                          glm::dvec2 paneSize, double zoom, glm::dvec2 panPx) {
   const glm::dvec2 sizeMm = glm::dvec2(glm::max(imageSize, glm::ivec2(1))) * spacingMm;
-  const double screenPerMm =
+  const double fitPerMm =
       std::max(std::min(paneSize.x / sizeMm.x, paneSize.y / sizeMm.y), 1e-6);  // fit, keep mm square
+  const double screenPerMm = fitPerMm * zoom;
   SlicePlacement placement;
   placement.scale = spacingMm * screenPerMm;
   placement.size = sizeMm * screenPerMm;
-  placement.min = paneMin + glm::max(paneSize - placement.size, glm::dvec2(0.0)) * 0.5;
+  placement.min = paneMin + paneSize * 0.5 + panPx - placement.size * 0.5;
   return placement;
 }
 

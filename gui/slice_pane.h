@@ -23,8 +23,10 @@ struct SlicePlacement {
   friend bool operator==(const SlicePlacement&, const SlicePlacement&) = default;
 };
 
+// At `zoom` about the fitted image's centre, moved by `panPx` (the pane's view, zoom 1 and no
+// pan: fitted).
 SlicePlacement placeSlice(glm::ivec2 imageSize, glm::dvec2 spacingMm, glm::dvec2 paneMin,
-                          glm::dvec2 paneSize);
+                          glm::dvec2 paneSize, double zoom = 1, glm::dvec2 panPx = glm::dvec2(0.0));
 glm::dvec2 screenOfSlicePixel(const SlicePlacement& placement, glm::dvec2 pixel);
 glm::dvec2 slicePixelOfScreen(const SlicePlacement& placement, glm::dvec2 screen);
 

@@ -78,6 +78,7 @@ void change(Document& d, const DatasetOpened& edit) {
   d.cpr.hybrid = false;
   d.clip = {};                // the crop box was in the old dataset's millimetres
   d.slices.cursorMm.reset();  // so was the slice cursor
+  d.slices.panes = {};        // and the slices' zoom and pan fitted its images
   d.cpr.cursor.reset();       // and the CPR's was on its paths
 }
 void change(Document& d, const RecentFilesEdit& edit) { d.recentFiles = edit.recentFiles; }

@@ -51,13 +51,13 @@ TEST_F(GuiSlices, ClicksWheelAndRightDragMoveTheCursorAndSetTheWindow) {
   ASSERT_TRUE(slices["shown"].get<bool>()) << slices;
   EXPECT_EQ(slices["cursor_voxel"], Json::parse("[48, 48, 100]"));  // the centre of 96x96x200 (rounded)
   const Json layout = start["runtime"]["layout"];
-  ASSERT_FALSE(layout["slice_axial"].is_null()) << layout;
+  ASSERT_FALSE(layout["slice_axial_image"].is_null()) << layout;
   EXPECT_EQ(slices["panes"]["axial"]["width"], 96);
   EXPECT_EQ(slices["panes"]["coronal"]["height"], 200);
 
   // The axial image spans i across and j down: a click a quarter across and three quarters down
   // lands in voxel (24, 72) (pixel centres), k unchanged.
-  const Json& axial = layout["slice_axial"];
+  const Json& axial = layout["slice_axial_image"];
   const double x =
       axial[0].get<double>() + (axial[2].get<double>() - axial[0].get<double>()) * 24.5 / 96;
   const double y =
@@ -80,6 +80,41 @@ TEST_F(GuiSlices, ClicksWheelAndRightDragMoveTheCursorAndSetTheWindow) {
   // The slice gestures asked the 3-D view for nothing: no request after the start-up one (a press
   // counted as a 3-D interaction would have asked for an interactive render).
   EXPECT_EQ(moved["runtime"]["newest_request"], start["runtime"]["newest_request"]);
+}
+
+// Ctrl+wheel zooms a pane about the pointer (the voxel under it stays) without stepping the slice,
+// a middle drag pans it by the drag, a double click fits it again; the other panes keep their view.
+TEST_F(GuiSlices, CtrlWheelZoomsAPaneAboutThePointerAMiddleDragPansADoubleClickFits) {
+  const Json start = run("", "start");
+  const Json& image = start["runtime"]["layout"]["slice_axial_image"];
+  const double x0 = image[0], y0 = image[1], x1 = image[2], y1 = image[3];
+  const double x = x0 + (x1 - x0) * 0.3, y = y0 + (y1 - y0) * 0.6;
+  const Json hovered = run(R"({"move": )" + at(x, y) + "}", "hovered");
+  const Json voxel = hovered["runtime"]["slices"]["hovered_voxel"];
+  ASSERT_TRUE(voxel.is_array()) << hovered["runtime"]["slices"];
+  const std::string zoom = R"({"move": )" + at(x, y) + R"(}, {"wheel": {"at": )" + at(x, y) +
+                           R"(, "delta": 2, "hold": "Ctrl"}})";
+  const Json zoomed = run(zoom + R"(, {"move": )" + at(x, y) + "}", "zoomed");
+  const Json& pane = zoomed["state"]["slices"]["panes"]["axial"];
+  EXPECT_NEAR(pane["zoom"].get<double>(), 1.44, 1e-9) << pane;
+  EXPECT_EQ(zoomed["runtime"]["slices"]["hovered_voxel"], voxel);
+  EXPECT_EQ(zoomed["runtime"]["slices"]["cursor_voxel"], start["runtime"]["slices"]["cursor_voxel"]);
+  const Json& zoomedImage = zoomed["runtime"]["layout"]["slice_axial_image"];
+  EXPECT_NEAR(zoomedImage[2].get<double>() - zoomedImage[0].get<double>(), 1.44 * (x1 - x0), 1.0);
+  EXPECT_EQ(zoomed["state"]["slices"]["panes"]["coronal"]["zoom"], 1.0);
+
+  const Json panned = run(zoom + R"(, {"drag": {"from": )" + at(x, y) + R"(, "to": )" +
+                              at(x + 30, y - 20) + R"(, "button": 2, "steps": 4}})",
+                          "panned");
+  const Json& pan = panned["state"]["slices"]["panes"]["axial"]["pan_px"];
+  EXPECT_NEAR(pan[0].get<double>() - pane["pan_px"][0].get<double>(), 30, 1e-6) << pan;
+  EXPECT_NEAR(pan[1].get<double>() - pane["pan_px"][1].get<double>(), -20, 1e-6) << pan;
+  EXPECT_EQ(panned["runtime"]["slices"]["cursor_voxel"], start["runtime"]["slices"]["cursor_voxel"]);
+
+  const Json fitted = run(zoom + R"(, {"double_click": )" + at(x, y) + "}", "fitted");
+  EXPECT_EQ(fitted["state"]["slices"]["panes"]["axial"],
+            Json::parse(R"({"zoom": 1.0, "pan_px": [0.0, 0.0]})"));
+  EXPECT_EQ(fitted["runtime"]["layout"]["slice_axial_image"], image);
 }
 
 TEST_F(GuiSlices, AClickOnTheImagePutsTheCursorOnTheVisibleSurface) {

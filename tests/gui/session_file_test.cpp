@@ -77,6 +77,7 @@ Document unusualSession() {
            .panPx = {-30, 12.5},
            .cursor = CprCursor{2, 87.25}};
   s.slices = {true, glm::dvec3(12.5, -3.25, 80), {2000, 500}};
+  s.slices.panes[int(SliceOrientation::coronal)] = {3.5, {-12.25, 40}};
   s.panelsOpen = {{"Data", true}, {"Transfer function", false}};
   s.recentFiles = {"/data/b.nrrd", "/data/dicom/series1"};
   VesselGlyphState& vg = s.vesselGlyph;
@@ -169,6 +170,8 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
   EXPECT_DOUBLE_EQ(loaded.cpr.transitionMm, 3.5);
   EXPECT_EQ(loaded.cpr.cursor, (CprCursor{2, 87.25}));
   EXPECT_EQ(loaded.cpr, saved.cpr);  // and the window, width, zoom and pan
+  EXPECT_EQ(loaded.slices.panes[int(SliceOrientation::coronal)], (SlicePaneView{3.5, {-12.25, 40}}));
+  EXPECT_EQ(loaded.slices, saved.slices);
   EXPECT_EQ(loaded.panelsOpen, saved.panelsOpen);
   EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
   const VesselGlyphState &vg = loaded.vesselGlyph, &want = saved.vesselGlyph;
@@ -314,6 +317,11 @@ TEST_F(SessionFileTest, BadSessionsAreOneLineErrorsNamingTheFile) {
   expectRejected(R"({"slices": {"window": 0}})", "slices.window 0 is out of range");
   expectRejected(R"({"slices": {"cursor_mm": [1, 2]}})", "slices.cursor_mm is not [x, y, z]");
   expectRejected(R"({"slices": {"shown": 1}})", "slices.shown is not true or false");
+  expectRejected(R"({"slices": {"panes": {"axial": {"zoom": 0.5}}}})",
+                 "slices.panes.axial.zoom 0.5 is out of range");
+  expectRejected(R"({"slices": {"panes": {"sagittal": []}}})", "slices.panes.sagittal is not an object");
+  expectRejected(R"({"slices": {"panes": {"coronal": {"pan_px": [1]}}}})",
+                 "slices.panes.coronal pan_px is not [x, y]");
   expectRejected(R"({"transfer_function": {"name": "t", "points": [{"hu": 0}]}})", "point 1");
 }
 

@@ -25,6 +25,17 @@ TEST(SlicePane, AnAnisotropicSliceFitsItsPaneWithSquareMillimetres) {
   EXPECT_DOUBLE_EQ(screenOfSlicePixel(p, {100, 40}).x, 10 + 75 + 150);  // the far corner
 }
 
+TEST(SlicePane, AZoomedSliceScalesAboutThePanesCentreAndMovesByThePan) {
+  // The slice of the test above at zoom 2, panned (20, -10): 6 screen px per mm, its centre at
+  // the pane's centre (160, 170) plus the pan.
+  const SlicePlacement p = placeSlice({100, 40}, {0.5, 2.5}, {10, 20}, {300, 300}, 2, {20, -10});
+  EXPECT_DOUBLE_EQ(p.scale.x, 3);
+  EXPECT_DOUBLE_EQ(p.scale.y, 15);
+  EXPECT_DOUBLE_EQ(p.size.y, 600);
+  EXPECT_DOUBLE_EQ(p.min.x + p.size.x / 2, 160 + 20);
+  EXPECT_DOUBLE_EQ(p.min.y + p.size.y / 2, 170 - 10);
+}
+
 TEST(SlicePane, LettersAreRadiological) {
   EXPECT_EQ(sliceLetters(SliceOrientation::axial), (SliceLetters{'R', 'L', 'A', 'P'}));
   EXPECT_EQ(sliceLetters(SliceOrientation::coronal), (SliceLetters{'R', 'L', 'S', 'I'}));

@@ -157,6 +157,7 @@ TEST(GuiWorkstation, ANewDatasetDropsWhatBelongedToTheOldOneAndListsIt) {
 TEST(GuiWorkstation, ANewDatasetStartsTheSliceCursorAtItsCentreAndKeepsTheSliceSettings) {
   Document before;
   before.slices = {true, glm::dvec3(10, 20, 30), {2000, 500}};
+  before.slices.panes[0].zoom = 3;  // the zoom and pan fitted the old dataset's slices
   Workstation workstation(before);
   workstation.apply(DatasetOpened{"/data/b.mha"});
   EXPECT_EQ(workstation.document().slices, (SliceViewState{true, std::nullopt, {2000, 500}}));
