@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "bench/frame_bench.h"
+#include "bench/slice_bench.h"
 #include "bench/trace_bench.h"
 #include "bench/vessel_glyph_bench.h"
 #include "phantom/phantom.h"
@@ -90,6 +91,10 @@ int runBench(const BenchOptionsCli& options) {
   const Phantom data = benchVolume(options);
   const Volume& volume = data.volume;
   if (options.glyphIntervals) return runGlyphIntervalBench(options, volume);
+  if (options.slices) {
+    std::printf("%s", formatSliceBench(runSliceBench(volume, options.angles)).c_str());
+    return 0;
+  }
   if (options.trace) {
     const auto centerlines = benchCenterlines(options, data);
     if (!centerlines)

@@ -113,8 +113,9 @@ struct BenchOptionsCli {
   std::vector<std::string> hide;    // the labels those rows hide (default: bone)
   std::string json;
   bool glyphIntervals =
-      false;           // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
-  bool trace = false;  // time only vessel tracing (bench/trace_bench.h)
+      false;            // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
+  bool trace = false;   // time only vessel tracing (bench/trace_bench.h)
+  bool slices = false;  // time only the slice view's images (bench/slice_bench.h)
 };
 int runBench(const BenchOptionsCli& options);
 

@@ -178,6 +178,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--trace", o.trace,
                 "Time only vessel tracing: the lumen field, traces between the ends of the phantom's "
                 "paths (or --centerlines) cut to 600 mm, the 3-D pick");
+  cmd->add_flag("--slices", o.slices,
+                "Time only the slice view's images: each orientation stepped through --angles "
+                "slices");
 }
 
 void addDemo(CLI::App& app, angio::DemoOptions& o) {
