@@ -1,12 +1,34 @@
 // The `angioray` command line: parses options and dispatches to gui/commands.h. No work here.
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "cli/number_checks.h"
+#include "core/render_params.h"
+#include "io/library_messages.h"
 
 namespace {
+
+// ITK's and GDCM's own printing stays off the terminal, where the user reads one line per problem;
+// ANGIORAY_LIBRARY_MESSAGES=1 shows it (one line each) when a developer needs it.
+void routeLibraryOutput() {
+  const char* wanted = std::getenv("ANGIORAY_LIBRARY_MESSAGES");
+  const bool show = wanted && std::string(wanted) == "1";
+  angio::routeLibraryMessages([show](const std::string& line) {
+    if (show) std::fprintf(stderr, "angioray: library: %s\n", line.c_str());
+  });
+}
+
+// An exception's text on one line (library texts may hold several).
+std::string folded(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
 
 void addInfo(CLI::App& app, angio::InfoOptions& o) {
   auto* cmd = app.add_subcommand("info", "Print dimensions, spacing, orientation and HU statistics");
@@ -30,18 +52,20 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
   cmd->add_option("--quality", o.quality, "Quality level (sampling defaults)")
       ->check(CLI::IsMember({"fast", "medium", "high"}))
       ->capture_default_str();
-  cmd->add_option("--isd", o.isd, "Image sampling distance (voxel units)")->check(CLI::PositiveNumber);
-  cmd->add_option("--osd", o.osd, "Object sampling distance (voxel units)")->check(CLI::PositiveNumber);
+  cmd->add_option("--isd", o.isd, "Image sampling distance (voxel units)")
+      ->check(angio::numberAtLeast(angio::kMinSamplingDistance));
+  cmd->add_option("--osd", o.osd, "Object sampling distance (voxel units)")
+      ->check(angio::numberAtLeast(angio::kMinSamplingDistance));
   cmd->add_option("--filter", o.filter, "Reconstruction filter")
       ->check(CLI::IsMember({"nearest", "trilinear", "mean"}));
   cmd->add_option("--shading", o.shading, "Headlight diffuse shading")
       ->check(CLI::IsMember({"on", "off"}));
-  cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(CLI::Range(0.0, 10.0));
-  cmd->add_option("--kd", o.kd, "Diffuse coefficient")->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(angio::numberBetween(0, 10));
+  cmd->add_option("--kd", o.kd, "Diffuse coefficient")->check(angio::numberBetween(0, 10));
   cmd->add_option("--ert", o.ert, "Early ray termination opacity (1 = off)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(angio::numberBetween(0, 1));
   cmd->add_flag("--mip", o.mip, "Maximum intensity projection instead of DVR");
-  cmd->add_option("--window", o.window, "MIP window width (HU)")->check(CLI::PositiveNumber);
+  cmd->add_option("--window", o.window, "MIP window width (HU)")->check(angio::numberAbove(0));
   cmd->add_option("--level", o.level, "MIP window centre (HU)");
   cmd->add_option("--image-window", o.imageWindow,
                   "Render only this part of the image: left,right,bottom,top in mm about the image "
@@ -80,11 +104,11 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
                   "Lateral extent in mm (default 60): straightened: width per "
                   "path; stretched: width / 2 beside the centerline; projected: "
                   "band around it (default: whole rows)")
-      ->check(CLI::PositiveNumber);
+      ->check(angio::numberAbove(0));
   cmd->add_option("--pixel", o.pixelMm, "Pixel size in mm (default: the voxel unit)")
-      ->check(CLI::PositiveNumber);
+      ->check(angio::numberAbove(0));
   auto* window =
-      cmd->add_option("--window", o.window, "Grey window width (HU)")->check(CLI::PositiveNumber);
+      cmd->add_option("--window", o.window, "Grey window width (HU)")->check(angio::numberAbove(0));
   auto* level = cmd->add_option("--level", o.level, "Grey window centre (HU)");
   window->needs(level);
   level->needs(window);
@@ -97,9 +121,9 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
       ->check(CLI::IsMember({"trilinear", "opencv-remap"}))
       ->capture_default_str();
   cmd->add_option("--bench", o.benchRuns, "Also time the CPR this many times (median, min, max)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(angio::numberAtLeast(0));
   cmd->add_option("--bench-length", o.benchLengthMm, "Cut each path to this length for --bench (mm)")
-      ->check(CLI::PositiveNumber)
+      ->check(angio::numberAbove(0))
       ->capture_default_str();
 }
 
@@ -212,19 +236,19 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
                   "Screenshot at the end (headless without --script: once the high image is shown)");
   cmd->add_option("--state-out", o.stateOut, "Write the app's state and timings as JSON at the end");
   cmd->add_option("--timeout", o.timeoutSeconds, "Headless: seconds to wait for a quality level")
-      ->check(CLI::PositiveNumber)
+      ->check(angio::numberAbove(0))
       ->capture_default_str();
   cmd->add_option("--session", o.session,
                   "Restore a saved session (its dataset unless VOLUME is "
                   "given, view, TF, levels, panels)");
   cmd->add_option("--quit-after", o.quitAfterSeconds, "Window: close after this many seconds")
-      ->check(CLI::NonNegativeNumber);
+      ->check(angio::numberAtLeast(0));
   cmd->add_option("--centerlines", o.centerlines,
                   "Centerlines (.vtp, .mrk.json, .csv) for the VesselGlyph panel");
   cmd->add_option("--motion-budget", o.motionBudgetMs,
                   "ms the first level may take while dragging: the finest image sampling between "
                   "the medium and fast levels' that fits (0: always the fast level)")
-      ->check(CLI::Range(0.0, 1000.0))
+      ->check(angio::numberBetween(0, 1000))
       ->capture_default_str();
   cmd->add_option("--labels", o.labels,
                   "Label volume or Slicer .seg.nrrd on VOLUME's grid, read at start");
@@ -234,6 +258,8 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
 
 int main(int argc, char** argv) {
   CLI::App app{"angioray " ANGIORAY_VERSION " - CPU volume rendering for CT angiography"};
+  routeLibraryOutput();
+  app.failure_message(angio::oneLineFailure);
   app.set_version_flag("--version", ANGIORAY_VERSION);
   angio::InfoOptions info;
   angio::RenderOptions render;
@@ -254,6 +280,7 @@ int main(int argc, char** argv) {
   addBench(app, bench);
   addGui(app, gui);
   app.require_subcommand(0, 1);
+  angio::requireFiniteNumbers(app);
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -270,7 +297,7 @@ int main(int argc, char** argv) {
     if (angio::canOpenWindow()) return angio::runGui(gui);
     return angio::runDemo(demo);
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "angioray: error: %s\n", error.what());
+    std::fprintf(stderr, "angioray: error: %s\n", folded(error.what()).c_str());
     return 1;
   }
 }

@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "cli/size_option.h"
+#include "io/atomic_write.h"
 #include "io/centerline_csv.h"
 #include "io/label_volume_file.h"
 #include "io/volume_writer.h"
@@ -18,21 +19,28 @@ int runPhantom(const PhantomOptionsCli& options) {
   phantomOptions.dims = parseSize(options.size);
   phantomOptions.seed = options.seed;
   phantomOptions.groundTruthLabels = !options.labels.empty();
+  for (const std::string& target : {options.out, options.labels, options.centerlines})
+    if (!target.empty()) requireWritableTarget(target);  // before minutes of generating
   Phantom phantom;
   {
     ProgressLine progress("generating phantom");
     phantom = generatePhantom(phantomOptions, std::ref(progress));
   }
-  writeVolume(phantom.volume, options.out);
+  // The volume and its ground truth appear together or not at all.
+  AtomicFileGroup files;
+  files.add(options.out, [&](const std::filesystem::path& file) { writeVolume(phantom.volume, file); });
+  if (!options.labels.empty())
+    files.add(options.labels,
+              [&](const std::filesystem::path& file) { writeLabelVolume(file, phantom.volume); });
+  if (!options.centerlines.empty())
+    files.add(options.centerlines, [&](const std::filesystem::path& file) {
+      writeCenterlinesCsv(phantom.centerlines, file);
+    });
+  files.commit();
   std::printf("wrote %s\n", options.out.c_str());
-  if (!options.labels.empty()) {
-    writeLabelVolume(options.labels, phantom.volume);
-    std::printf("wrote %s\n", options.labels.c_str());
-  }
-  if (!options.centerlines.empty()) {
-    writeCenterlinesCsv(phantom.centerlines, options.centerlines);
+  if (!options.labels.empty()) std::printf("wrote %s\n", options.labels.c_str());
+  if (!options.centerlines.empty())
     std::printf("wrote %s (%zu paths)\n", options.centerlines.c_str(), phantom.centerlines.paths.size());
-  }
   return 0;
 }
 

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/number_checks.h"
 #include "io/tf_file.h"
 #include "render/region_tfs.h"
 #include "vessel/vessel_glyph_spec.h"
@@ -38,11 +39,11 @@ void addVesselGlyphOptions(CLI::App& cmd, VesselGlyphCliOptions& o) {
   cmd.add_flag("--hybrid-cpr", o.hybrid, "DVR+CPR hybrid: the projected CPR in the focus footprint");
   cmd.add_option("--hybrid-path", o.hybridPath, "Hybrid: path index or all [all]");
   cmd.add_option("--transition", o.transitionMm, "Hybrid: smooth transition band in mm [0]")
-      ->check(CLI::NonNegativeNumber);
+      ->check(numberAtLeast(0));
   cmd.add_option("--cpr-window", o.cprWindow,
                  "Hybrid: grey CPR window width (HU) instead of the "
                  "focus TF's colors")
-      ->check(CLI::PositiveNumber);
+      ->check(numberAbove(0));
   cmd.add_option("--cpr-level", o.cprLevel, "Hybrid: grey CPR window centre (HU)");
 }
 

@@ -1,6 +1,7 @@
 #include "core/render_params.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace angio {
 
@@ -14,6 +15,29 @@ std::string imageWindowProblem(const ImageWindow& w) {
     if (!std::isfinite(mm)) return "the image window's bounds must be finite numbers (mm)";
   if (!(w.leftMm < w.rightMm) || !(w.bottomMm < w.topMm))
     return "the image window must have left < right and bottom < top";
+  return "";
+}
+
+std::string samplingProblem(const Sampling& s) {
+  if (!std::isfinite(s.isd) || !std::isfinite(s.osd) || !std::isfinite(s.ert))
+    return "the sampling's isd, osd and ert must be finite numbers";
+  if (s.isd < kMinSamplingDistance || s.osd < kMinSamplingDistance) {
+    char text[64];
+    std::snprintf(text, sizeof text, "isd and osd must be at least %g voxel", kMinSamplingDistance);
+    return text;
+  }
+  if (s.ert < 0 || s.ert > 1) return "ert must be in [0, 1]";
+  return "";
+}
+
+std::string renderParamsProblem(const RenderParams& p) {
+  if (!std::isfinite(p.angleDeg)) return "the view angle must be a finite number";
+  if (!std::isfinite(p.shading.ka) || !std::isfinite(p.shading.kd))
+    return "the shading's ka and kd must be finite numbers";
+  if (!std::isfinite(p.mip.window) || !std::isfinite(p.mip.level))
+    return "the MIP window and level must be finite numbers";
+  if (std::string problem = samplingProblem(p.sampling); !problem.empty()) return problem;
+  if (p.window) return imageWindowProblem(*p.window);
   return "";
 }
 

@@ -21,6 +21,14 @@ struct Sampling {
   friend bool operator==(const Sampling&, const Sampling&) = default;
 };
 
+// The finest sampling distance anything may ask for (voxel units): a thousand samples per voxel,
+// far past what any filter resolves; finer is a mistake that would take hours, not a better image.
+constexpr double kMinSamplingDistance = 1e-3;
+
+// Why `sampling` cannot be rendered (a distance not finite or below kMinSamplingDistance, an ERT
+// threshold outside [0, 1]), or "".
+std::string samplingProblem(const Sampling& sampling);
+
 struct Shading {
   bool enabled = true;
   double ka = 0.3;  // ambient
@@ -49,6 +57,11 @@ struct ImageWindow {
 
 // Why `window` cannot be rendered (non-finite, or empty), or "".
 std::string imageWindowProblem(const ImageWindow& window);
+
+struct RenderParams;
+// Why `params` cannot be rendered: a non-finite angle, shading or MIP window, samplingProblem,
+// imageWindowProblem; or "". (The clipping has its own check, core/clip_interval.h.)
+std::string renderParamsProblem(const RenderParams& params);
 
 struct RenderParams {
   Axis axis = Axis::k;

@@ -3,10 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace angio {
 
 namespace {
+
+// Pixels along a side of `extent` pixels, at least 1; past kMaxImageSide it stays there (int cannot
+// hold it, and such an image is refused by its size before anything renders it).
+constexpr double kMaxImageSide = 1 << 24;
+int pixelCount(double extent) { return int(std::clamp(std::ceil(extent), 1.0, kMaxImageSide)); }
 
 glm::dvec3 unitAxis(int index) {
   glm::dvec3 e(0.0);
@@ -30,6 +37,8 @@ void applyWindow(ViewGeometry& view, const ImageWindow& window) {
 }  // namespace
 
 ViewGeometry makeViewGeometry(const Volume& volume, const RenderParams& params) {
+  if (const std::string problem = renderParamsProblem(params); !problem.empty())
+    throw std::invalid_argument(problem);
   ViewGeometry view;
   view.axis = int(params.axis);
   view.axisB = (view.axis + 1) % 3;  // (a, b, c) cyclic: (k, i, j), (i, j, k), (j, k, i)
@@ -46,8 +55,8 @@ ViewGeometry makeViewGeometry(const Volume& volume, const RenderParams& params) 
   view.extent = domainExtent(volume);
   view.centre = view.extent * 0.5;
   const double diagonal = std::hypot(view.extent[view.axisB], view.extent[view.axisC]);
-  view.wholeWidth = view.width = std::max(1, int(std::ceil(diagonal / view.pixelMm)));
-  view.wholeHeight = view.height = std::max(1, int(std::ceil(view.extent[view.axis] / view.pixelMm)));
+  view.wholeWidth = view.width = pixelCount(diagonal / view.pixelMm);
+  view.wholeHeight = view.height = pixelCount(view.extent[view.axis] / view.pixelMm);
   if (params.window) applyWindow(view, *params.window);
   return view;
 }

@@ -36,6 +36,8 @@ struct ViewGeometry {
   glm::dvec3 rayOrigin(int x, int y) const;
 };
 
+// Throws std::invalid_argument when renderParamsProblem(params) names a problem (a NaN angle or
+// sampling distance would make every size below it meaningless).
 ViewGeometry makeViewGeometry(const Volume& volume, const RenderParams& params);
 
 // The pixels of a W x H image (pixel size D) that overlap `window`, as [x0, x1) x [y0, y1), cut

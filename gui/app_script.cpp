@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
+#include "io/json_text.h"
 
 namespace angio {
 
@@ -126,12 +127,7 @@ struct StepParser {
 }  // namespace
 
 std::vector<ScriptStep> parseScript(const std::string& text, const std::filesystem::path& source) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::exception& error) {
-    throw InputError(source, std::string("not valid JSON: ") + error.what());
-  }
+  const Json json = parseJsonText(text, source);
   if (!json.is_array()) throw InputError(source, "a script is a JSON list of steps");
   std::vector<ScriptStep> steps;
   for (std::size_t n = 0; n < json.size(); ++n)

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_write.h"
+#include "io/json_text.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
@@ -449,14 +450,7 @@ std::string toJson(const Document& session) {
 }
 
 Document parseSession(const std::string& text, const fs::path& source) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::exception& error) {
-    const std::string message = error.what();
-    throw InputError(source, "not valid JSON: " + message.substr(message.find(']') + 2));
-  }
-  return SessionReader{source}.session(json);
+  return SessionReader{source}.session(parseJsonText(text, source));
 }
 
 Document loadSession(const fs::path& path) {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_write.h"
+#include "io/json_text.h"
 #include "io/input_error.h"
 #include "io/lowercase.h"
 
@@ -216,12 +217,7 @@ void writeCenterlinesMarkups(const Centerlines& centerlines, const fs::path& fil
 
 Centerlines parseCenterlinesMarkups(const std::string& text, const fs::path& source,
                                     const CenterlineLoadOptions& options) {
-  Json json;
-  try {
-    json = Json::parse(text);
-  } catch (const Json::parse_error& error) {
-    throw InputError(source, std::string("bad JSON: ") + error.what());
-  }
+  const Json json = parseJsonText(text, source);
   const auto markups = json.is_object() ? json.find("markups") : json.end();
   if (!json.is_object() || markups == json.end() || !markups->is_array()) {
     throw InputError(source, "not a markups file (no \"markups\" array)");

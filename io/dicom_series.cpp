@@ -10,6 +10,7 @@
 #include <itkGDCMImageIO.h>
 #include <itkGDCMSeriesFileNames.h>
 
+#include "io/dicom_slice_check.h"
 #include "io/input_error.h"
 #include "io/volume_conversion.h"
 #include "io/volume_formats.h"
@@ -69,6 +70,7 @@ Series chooseSeries(const std::filesystem::path& folder, const ReadOptions& opti
 }
 
 itk::GDCMImageIO::Pointer readSliceHeader(const std::filesystem::path& folder, const std::string& file) {
+  checkDicomSlice(folder, file, true);  // before GDCM sees a tag it would assert on
   auto io = itk::GDCMImageIO::New();
   io->SetFileName(file);
   io->ReadImageInformation();
@@ -148,6 +150,23 @@ void requireSameOrientationAndSize(const std::filesystem::path& folder,
 int dominantAxis(glm::dvec3 normal) {
   const glm::dvec3 a = glm::abs(normal);
   return a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+}
+
+// Slices of a tilted gantry are stacked along a direction off their normal (sheared). Placing them
+// along the normal would move the far slices sideways by the drift; refused when that is more than
+// half a pixel, as resampling the shear onto a straight grid is not done here.
+void requireUnsheared(const std::filesystem::path& folder, const std::vector<Slice>& slices,
+                      glm::dvec3 normal) {
+  const glm::dvec3 offset = slices.back().position - slices.front().position;
+  const double along = glm::dot(offset, normal);
+  const double sideways = glm::length(offset - along * normal);
+  const double pixel = std::min(slices.front().pixelSpacing.x, slices.front().pixelSpacing.y);
+  if (sideways <= 0.5 * pixel) return;
+  const double tiltDeg = glm::degrees(std::atan2(sideways, std::abs(along)));
+  throw InputError(folder, "slices are sheared (gantry tilt of " + millimetres(tiltDeg) +
+                               " degrees: they drift " + millimetres(sideways) + " mm sideways over " +
+                               millimetres(std::abs(along)) +
+                               " mm); tilted series are not resampled, reconstruct it without tilt");
 }
 
 double uniformSpacing(const std::filesystem::path& folder, const std::vector<Slice>& slices,
@@ -231,6 +250,7 @@ DicomStack readDicomSeries(const std::filesystem::path& folder, const ReadOption
     std::sort(slices.begin(), slices.end(),
               [](const Slice& a, const Slice& b) { return a.along < b.along; });
 
+    requireUnsheared(folder, slices, normal);
     VolumeGeometry& geometry = stack.geometry;
     geometry.dims = {slices[0].columns, slices[0].rows, int(slices.size())};
     geometry.spacing = {slices[0].pixelSpacing.x, slices[0].pixelSpacing.y,

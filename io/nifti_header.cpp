@@ -22,6 +22,22 @@ T fieldAt(const HeaderBytes& header, std::size_t offset, bool swap) {
   return value;
 }
 
+// NIfTI-1 stores floats and shorts, NIfTI-2 doubles and ints, at their own offsets.
+void readPlacement(const HeaderBytes& header, bool swap, NiftiHeader& parsed) {
+  const bool n2 = parsed.nifti2;
+  const auto real = [&](std::size_t offset1, std::size_t offset2, int index) {
+    return n2 ? fieldAt<double>(header, offset2 + 8 * index, swap)
+              : double(fieldAt<float>(header, offset1 + 4 * index, swap));
+  };
+  for (int axis = 0; axis < 3; ++axis) parsed.pixdim[axis] = real(76, 104, axis + 1);
+  parsed.qformCode =
+      n2 ? fieldAt<std::int32_t>(header, 344, swap) : fieldAt<std::int16_t>(header, 252, swap);
+  parsed.sformCode =
+      n2 ? fieldAt<std::int32_t>(header, 348, swap) : fieldAt<std::int16_t>(header, 254, swap);
+  for (int n = 0; n < 6; ++n) parsed.qform[n] = real(256, 352, n);
+  for (int n = 0; n < 12; ++n) parsed.sform[n] = real(280, 400, n);
+}
+
 std::optional<NiftiHeader> parsed(const HeaderBytes& header, int headerBytes, bool swap) {
   const std::int32_t size = fieldAt<std::int32_t>(header, 0, swap);
   NiftiHeader parsed;
@@ -50,6 +66,7 @@ std::optional<NiftiHeader> parsed(const HeaderBytes& header, int headerBytes, bo
       magic[0] == 'n' && magic[1] == '+' && magic[2] == (n2 ? '2' : '1') && magic[3] == 0;
   parsed.sclSlope = n2 ? fieldAt<double>(header, 176, swap) : fieldAt<float>(header, 112, swap);
   parsed.sclInter = n2 ? fieldAt<double>(header, 184, swap) : fieldAt<float>(header, 116, swap);
+  readPlacement(header, swap, parsed);
   return parsed;
 }
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "io/atomic_write.h"
+#include "io/json_text.h"
 #include "io/input_error.h"
 #include "io/lowercase.h"
 
@@ -175,23 +176,6 @@ std::vector<LabelStyle> parseLabelStyles(const Json& labels, const fs::path& sou
     styles.push_back(std::move(style));
   }
   return styles;
-}
-
-Json parseJsonText(const std::string& text, const fs::path& source) {
-  try {
-    return Json::parse(text);
-  } catch (const Json::parse_error& error) {
-    // what() is "[json.exception.parse_error.101] parse error at line 1, column 2: <reason>".
-    const std::string message = error.what();
-    const auto reasonStart = message.find(": ");
-    const std::string reason =
-        reasonStart == std::string::npos ? message : message.substr(reasonStart + 2);
-    throw InputError(source, "not valid JSON at byte " + std::to_string(error.byte) + ": " + reason);
-  } catch (const Json::exception& error) {
-    // E.g. out_of_range 406 "number overflow parsing '1e999'", which carries no position.
-    const std::string message = error.what();
-    throw InputError(source, "not valid JSON: " + message.substr(message.find(']') + 2));
-  }
 }
 
 // --- Saving ---------------------------------------------------------------------------------

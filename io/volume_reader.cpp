@@ -15,6 +15,8 @@
 #include <tbb/parallel_for.h>
 
 #include "io/dicom_series.h"
+#include "io/declared_geometry.h"
+#include "io/dicom_slice_check.h"
 #include "io/input_error.h"
 #include "io/segmentation_file.h"
 #include "io/volume_conversion.h"
@@ -72,6 +74,7 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
     if (!io->CanReadFile(file.c_str()))
       throw InputError(
           file, std::string("is not a valid ") + formatLabel + " file (corrupt or truncated header)");
+    checkDeclaredGeometry(file, *format);
   } else {
     io = itk::GDCMImageIO::New().GetPointer();
     formatLabel = "DICOM";
@@ -79,6 +82,7 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
       throw InputError(file,
                        "unknown volume format (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, "
                        ".mhd or a folder of DICOM slices)");
+    checkDicomSlice(file, file, false);  // before GDCM sees a tag it would assert on
   }
   io->SetFileName(file.string());
   io->ReadImageInformation();

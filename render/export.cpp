@@ -16,11 +16,22 @@ void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out) 
                               " pixels is too large; use a larger isd");
 }
 
-void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderRecipe sidecar) {
+void addImageAndSidecar(AtomicFileGroup& files, const Image& image, const std::filesystem::path& path,
+                        RenderRecipe sidecar) {
   std::error_code error;
   sidecar.image = std::filesystem::absolute(path, error).lexically_normal().string();
-  exportImage(image, path, renderSidecarMetadata(sidecar));
-  saveRenderSidecar(sidecar, sidecarPathFor(path));
+  files.add(path, [&](const std::filesystem::path& file) {
+    exportImage(image, file, renderSidecarMetadata(sidecar));
+  });
+  files.add(sidecarPathFor(path),
+            [&](const std::filesystem::path& file) { saveRenderSidecar(sidecar, file); });
+}
+
+void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderRecipe sidecar) {
+  // Both or neither: an image whose sidecar could not be written would not reproduce.
+  AtomicFileGroup files;
+  addImageAndSidecar(files, image, path, std::move(sidecar));
+  files.commit();
 }
 
 std::string exportView(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& sidecar,

@@ -1,6 +1,6 @@
 #pragma once
 // Exports of rendered views: the image (PNG/TIFF/EXR with the recipe in its metadata) and its JSON
-// sidecar (render/recipe_json.h) beside it, each written atomically, so that
+// sidecar (render/recipe_json.h) beside it, written together or not at all, so that
 // `angioray render --params` of the sidecar gives the image again. The window's "Export image",
 // rotation series and `angioray render` all write through here.
 #include <atomic>
@@ -10,6 +10,7 @@
 #include "core/image.h"
 #include "core/view_geometry.h"
 #include "core/volume.h"
+#include "io/atomic_write.h"
 #include "render/recipe_json.h"
 #include "vessel/centerline.h"
 
@@ -21,8 +22,11 @@ constexpr long kMaxImagePixels = 64L * 1024 * 1024;
 // Throws InputError naming `out` if the view's image has more than kMaxImagePixels.
 void checkImageSize(const ViewGeometry& view, const std::filesystem::path& out);
 
-// Writes `image` (rendered from `sidecar`) and its sidecar (with image = path), each atomically.
+// Writes `image` (rendered from `sidecar`) and its sidecar (with image = path): both or neither.
 void writeImageAndSidecar(const Image& image, const std::filesystem::path& path, RenderRecipe sidecar);
+// The same, as part of a larger group (a rotation series) that the caller commits.
+void addImageAndSidecar(AtomicFileGroup& files, const Image& image, const std::filesystem::path& path,
+                        RenderRecipe sidecar);
 
 // Renders and writes the image and its sidecar. `centerlines` (volume frame) are used iff
 // sidecar.vesselGlyph is set. Returns a one-line summary; an empty string when `cancel` stopped

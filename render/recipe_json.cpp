@@ -10,6 +10,7 @@
 #include "core/clip_interval.h"
 #include "core/number_text.h"
 #include "io/atomic_write.h"
+#include "io/json_text.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
@@ -238,8 +239,8 @@ RenderParams readParams(const Reader& r, const Json& json) {
   p.sampling.osd = r.number(sampling, "osd", "sampling.");
   p.sampling.filter = r.choice(sampling, "filter", parseFilter, "sampling.");
   p.sampling.ert = r.number(sampling, "ert", "sampling.");
-  if (p.sampling.isd <= 0 || p.sampling.osd <= 0)
-    throw InputError(r.source, "\"sampling\" isd and osd must be > 0");
+  if (const std::string problem = samplingProblem(p.sampling); !problem.empty())
+    throw InputError(r.source, "\"sampling\": " + problem);
   const Json& shading = r.at(json, "shading", "");
   p.shading.enabled = r.flag(shading, "enabled", "shading.");
   p.shading.ka = r.number(shading, "ka", "shading.");
@@ -253,19 +254,6 @@ RenderParams readParams(const Reader& r, const Json& json) {
   p.mip.level = r.number(mip, "level", "mip.");
   p.clipping = readClipping(r, json);
   return p;
-}
-
-Json parseJson(const std::string& text, const fs::path& source) {
-  try {
-    return Json::parse(text);
-  } catch (const Json::exception& error) {
-    // "[json.exception.parse_error.101] parse error at ...: <reason>; last read: '<bytes>'": the
-    // bytes may be binary (an image given by mistake), so they are left out.
-    std::string message = error.what();
-    message = message.substr(message.find(']') + 2);
-    message = message.substr(0, message.find("; last read"));
-    throw InputError(source, "not a valid sidecar (bad JSON: " + message + ")");
-  }
 }
 
 // The view, sampling and shading (or MIP window) of a plain render.
@@ -361,7 +349,7 @@ void saveRenderSidecar(const RenderRecipe& sidecar, const fs::path& file) {
 }
 
 RenderRecipe parseRenderSidecar(const std::string& text, const fs::path& source) {
-  const Json json = parseJson(text, source);
+  const Json json = parseJsonText(text, source);
   const Reader r{source};
   if (!json.is_object() || !json.contains("angioray_render_sidecar"))
     throw InputError(source, "not an angioray render sidecar (no \"angioray_render_sidecar\" key)");

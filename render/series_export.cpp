@@ -143,6 +143,8 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
   const std::shared_ptr<const PreparedScene> scene = PreparedScene::prepare(volume, centerlines, base);
   const std::vector<double> angles = seriesAngles(spec.startDeg, spec.arcDeg, spec.count);
 
+  // The views and their sidecars replace an earlier series only once all of them are written.
+  AtomicFileGroup files;
   SeriesResult result;
   std::unique_ptr<MovieWriter> movie;
   for (int n = 0; n < spec.count && !result.cancelled; ++n) {
@@ -156,7 +158,7 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
       break;
     }
     const fs::path file = folder / numbered(spec, n);
-    writeImageAndSidecar(image, file, sidecar);
+    addImageAndSidecar(files, image, file, sidecar);
     result.images.push_back(file);
     if (spec.movie && !movie)
       movie =
@@ -164,6 +166,12 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
     if (movie && movie->open()) movie->add(image);
     if (callbacks.progress) callbacks.progress(n + 1, spec.count);
   }
+  if (result.cancelled) {  // nothing of it is written; the part-written movie goes with `movie`
+    result.images.clear();
+    result.summary = "cancelled: nothing written to " + folder.string();
+    return result;
+  }
+  files.commit();
   if (movie) {
     movie->close();
     result.movieNote = movie->note();
@@ -172,9 +180,8 @@ SeriesResult exportRotationSeries(const Volume& volume, const Centerlines& cente
     result.movieNote = "no movie: no views were rendered";
   }
   char summary[512];
-  std::snprintf(summary, sizeof summary, "%s %zu of %d views to %s%s%s",
-                result.cancelled ? "cancelled after" : "exported", result.images.size(), spec.count,
-                folder.string().c_str(), result.movie.empty() ? "" : " + ",
+  std::snprintf(summary, sizeof summary, "exported %zu of %d views to %s%s%s", result.images.size(),
+                spec.count, folder.string().c_str(), result.movie.empty() ? "" : " + ",
                 result.movie.empty() ? "" : result.movie.filename().string().c_str());
   result.summary = summary;
   return result;

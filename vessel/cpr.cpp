@@ -40,11 +40,11 @@ ViewGeometry cprView(const Volume& volume, Axis axis, double angleDeg, double pi
   if (!std::isfinite(pixelMm) || pixelMm <= 0) {
     throw std::invalid_argument("CPR pixel size must be a finite length > 0 mm");
   }
-  // The view's image size is an int; keep it far from overflowing (the CPR checks its own size).
-  const glm::dvec3 extent = domainExtent(volume);
-  if (glm::length(extent) / pixelMm > 1e8) {
+  // The CPR's pixel is the view's image sample distance (in voxels), which has a floor.
+  if (pixelMm / voxelUnit(volume) < kMinSamplingDistance) {
     throw std::invalid_argument("CPR pixel size " + numberText(pixelMm) +
-                                " mm is too small for this volume");
+                                " mm is too small for this volume (at least " +
+                                numberText(kMinSamplingDistance * voxelUnit(volume)) + " mm)");
   }
   RenderParams params;
   params.axis = axis;

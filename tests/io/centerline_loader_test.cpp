@@ -603,7 +603,7 @@ TEST_F(CenterlineMarkups, OtherMarkupTypesAndUndefinedPointsAreSkippedWithWarnin
 
 TEST_F(CenterlineMarkups, BrokenFilesGiveAnInputErrorNamingFileAndProblem) {
   const std::vector<Broken> cases = {
-      {"BadJson", "{\"markups\": [", "bad JSON"},
+      {"BadJson", "{\"markups\": [", "not valid JSON"},
       {"NoMarkups", "{\"points\": []}", "no \"markups\" array"},
       {"PositionOfTwo", curveJson("", R"({"position": [1, 2]})"),
        "markup 'LeftIliac' control point 0: position is not an array of 3 numbers"},

@@ -191,8 +191,8 @@ TEST_F(RenderSidecarFiles, BrokenSidecarsGiveOneLineNamingTheFileAndKey) {
     std::string name, text, mention;
   };
   const Case cases[] = {
-      {"truncated.json", good.substr(0, good.size() / 2), "bad JSON"},
-      {"binary.json", std::string("\x89PNG\r\n\x1a\n\0\0", 10), "bad JSON"},
+      {"truncated.json", good.substr(0, good.size() / 2), "not valid JSON"},
+      {"binary.json", std::string("\x89PNG\r\n\x1a\n\0\0", 10), "not valid JSON"},
       {"array.json", "[1, 2]", "not an angioray render sidecar"},
       {"tf.json", R"({"name": "x", "points": []})", "not an angioray render sidecar"},
       {"version.json", replaced("\"angioray_render_sidecar\": 1", "\"angioray_render_sidecar\": 7"),
@@ -208,6 +208,10 @@ TEST_F(RenderSidecarFiles, BrokenSidecarsGiveOneLineNamingTheFileAndKey) {
       {"display.json", replaced("\"grey\"", "\"rainbow\""), "hybrid_cpr.display"},
       {"hybrid-alone.json", replaced("\"vessel_glyph\": {", "\"vessel_glyph\": null, \"x\": {"),
        "needs"},
+      // A hostile osd (10^10 samples per ray) and a file nested past any of ours.
+      {"osd.json", replaced("\"osd\": ", "\"osd\": 1e-9, \"was\": "), "at least 0.001 voxel"},
+      {"ert.json", replaced("\"ert\": ", "\"ert\": 5, \"was\": "), "ert must be in [0, 1]"},
+      {"deep.json", std::string(200000, '[') + std::string(200000, ']'), "nested 200000 levels"},
   };
   EXPECT_NE(loadError(dir_ / "absent.json").find("absent.json: no such render sidecar"),
             std::string::npos);

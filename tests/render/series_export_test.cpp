@@ -188,10 +188,18 @@ TEST_F(SeriesExport, CancelStopsTheSeries) {
   callbacks.progress = [&](int done, int) {
     if (done == 2) cancel.store(true);
   };
+  // A series the user had: a cancelled one must leave it as it was (all or nothing).
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "view-000.png", std::ios::binary) << "the earlier series";
   const SeriesResult result = exportRotationSeries(smallPhantom(), {}, base_, spec, dir_, callbacks);
   EXPECT_TRUE(result.cancelled);
-  EXPECT_EQ(result.images.size(), 2u);
-  EXPECT_EQ(filesWithExtension(".png").size(), 2u);
+  EXPECT_TRUE(result.images.empty());
+  EXPECT_EQ(filesWithExtension(".png").size(), 1u);
+  EXPECT_TRUE(filesWithExtension(".json").empty());
+  std::ifstream earlier(dir_ / "view-000.png", std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(earlier), {}), "the earlier series");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1)
+      << "no scratch folder left";
   EXPECT_NE(result.summary.find("cancelled"), std::string::npos) << result.summary;
 }
 

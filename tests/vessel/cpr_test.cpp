@@ -778,6 +778,9 @@ TEST(CprErrors, EmptyDegenerateAndOutsidePathsAreRefusedWithTheirName) {
       layoutOf(straightPath({30, 30, 5}, {30, 30, 95}), {CprMode::straightened, -3.0}).find("width"),
       std::string::npos);
   EXPECT_NE(errorOf([&] { cprView(volume, Axis::k, 0, 0.0); }).find("pixel size"), std::string::npos);
+  EXPECT_NE(
+      errorOf([&] { cprView(volume, Axis::k, 0, 1e-9); }).find("too small for this volume (at least"),
+      std::string::npos);
   // Problems of the paths (the CLI blames the centerline file) are told apart from the others.
   EXPECT_THROW(layoutCpr({CenterlinePath{"empty", {}}}, view, {}), CprPathError);
   bool pathError = false;
@@ -789,7 +792,7 @@ TEST(CprErrors, EmptyDegenerateAndOutsidePathsAreRefusedWithTheirName) {
   }
   EXPECT_FALSE(pathError);
   EXPECT_NE(errorOf([&] {
-              layoutCpr({straightPath({30, 30, 5}, {30, 30, 95})}, cprView(volume, Axis::k, 0, 1e-4),
+              layoutCpr({straightPath({30, 30, 5}, {30, 30, 95})}, cprView(volume, Axis::k, 0, 1e-3),
                         {CprMode::straightened, {}});
             }).find("pixels; choose a larger pixel size"),
             std::string::npos);

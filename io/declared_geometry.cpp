@@ -1,0 +1,166 @@
+#include "io/declared_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "io/input_error.h"
+#include "io/metaimage_header.h"
+#include "io/nifti_header.h"
+
+namespace angio {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The numbers in `text`, separated by blanks, commas or parentheses; a word that is not a number
+// (NaN, inf, "none") is NaN.
+std::vector<double> numbersIn(const std::string& text) {
+  std::vector<double> numbers;
+  std::string word;
+  const auto flush = [&] {
+    if (word.empty()) return;
+    char* end = nullptr;
+    const double value = std::strtod(word.c_str(), &end);
+    numbers.push_back(*end == '\0' && std::isfinite(value) ? value : NAN);
+    word.clear();
+  };
+  for (const char c : text) {
+    if (c == ' ' || c == '\t' || c == ',' || c == '(' || c == ')' || c == '\r') flush();
+    else word += c;
+  }
+  flush();
+  return numbers;
+}
+
+bool allFinite(const std::vector<double>& values) {
+  for (const double v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+std::string shown(const std::string& value) {
+  return value.size() > 80 ? value.substr(0, 77) + "..." : value;
+}
+
+void requireSpacing(const fs::path& file, const std::string& field, const std::vector<double>& spacing,
+                    const std::string& text) {
+  for (const double s : spacing)
+    if (!(s > 0 && std::isfinite(s)))
+      throw InputError(
+          file, "has a zero, negative or unknown voxel spacing in " + field + " (" + shown(text) + ")");
+}
+
+void requireFinite(const fs::path& file, const std::string& field, const std::vector<double>& values,
+                   const std::string& text) {
+  if (!allFinite(values)) throw InputError(file, "has a non-finite " + field + " (" + shown(text) + ")");
+}
+
+// Three axis vectors (column-wise) must span space.
+void requireAxes(const fs::path& file, const std::string& field, const std::vector<double>& values,
+                 const std::string& text) {
+  requireFinite(file, field, values, text);
+  if (values.size() < 9) return;
+  const glm::dmat3 axes(values[0], values[1], values[2], values[3], values[4], values[5], values[6],
+                        values[7], values[8]);
+  double scale = 0;
+  for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(axes[c]));
+  if (!(std::abs(glm::determinant(axes)) > 1e-12 * scale * scale * scale))
+    throw InputError(file, "has " + field + " that do not span 3-D space (" + shown(text) + ")");
+}
+
+// NRRD: "field: value" lines up to the first empty line (or the end of a detached .nhdr).
+void checkNrrd(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  std::vector<double> directions;
+  std::string directionsText;
+  for (int lines = 0; lines < 4096 && std::getline(in, line) && line != "" && line != "\r"; ++lines) {
+    if (line.size() > 65536) break;  // binary data, not a header
+    const auto colon = line.find(':');
+    if (colon == std::string::npos || line[0] == '#') continue;
+    const std::string key = line.substr(0, colon);
+    std::string value = line.substr(colon + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    if (!value.empty() && value[0] == '=') continue;  // "key:=value" pairs are not fields
+    if (key == "spacings") {
+      // Axes past the third are not spatial (NaN is NRRD's "no spacing" for them).
+      std::vector<double> spacings = numbersIn(value);
+      spacings.resize(std::min<std::size_t>(spacings.size(), 3));
+      requireSpacing(file, "spacings", spacings, value);
+    }
+    if (key == "space origin") requireFinite(file, "space origin", numbersIn(value), value);
+    if (key == "space directions") {
+      // "none" marks a non-spatial axis; the others are vectors of the space's dimension.
+      std::string spatial;
+      for (std::size_t at = 0; at < value.size(); ++at) {
+        if (value.compare(at, 4, "none") == 0) at += 3;
+        else spatial += value[at];
+      }
+      directions = numbersIn(spatial);
+      directionsText = value;
+      requireFinite(file, "space directions", directions, value);
+      for (std::size_t axis = 0; axis + 3 <= directions.size() && directions.size() == 9; axis += 3)
+        if (glm::length(glm::dvec3(directions[axis], directions[axis + 1], directions[axis + 2])) == 0)
+          throw InputError(file, "has a zero-length axis in space directions (" + shown(value) + ")");
+    }
+  }
+  if (directions.size() == 9) requireAxes(file, "space directions", directions, directionsText);
+}
+
+void checkMetaImage(const fs::path& file) {
+  const MetaImageHeader header = readMetaImageHeader(file);
+  for (const char* key : {"ElementSpacing", "ElementSize"})
+    if (const std::string value = header.field(key); !value.empty())
+      requireSpacing(file, key, numbersIn(value), value);
+  for (const char* key : {"Offset", "Origin", "Position", "CenterOfRotation"})
+    if (const std::string value = header.field(key); !value.empty())
+      requireFinite(file, key, numbersIn(value), value);
+  for (const char* key : {"TransformMatrix", "Rotation", "Orientation"})
+    if (const std::string value = header.field(key); !value.empty())
+      requireAxes(file, key, numbersIn(value), value);
+}
+
+void checkNifti(const fs::path& file) {
+  const auto header = readNiftiHeader(file);
+  if (!header) return;  // ITK says what is wrong with it
+  const auto text = [](auto values) {
+    std::string out;
+    for (const double v : values) out += (out.empty() ? "" : " ") + std::to_string(v);
+    return out;
+  };
+  const std::vector<double> pixdim(header->pixdim.begin(), header->pixdim.end());
+  requireSpacing(file, "pixdim", pixdim, text(pixdim));
+  if (header->qformCode > 0) {
+    const std::vector<double> qform(header->qform.begin(), header->qform.end());
+    requireFinite(file, "qform (quatern_b/c/d, qoffset)", qform, text(qform));
+    const double squared = qform[0] * qform[0] + qform[1] * qform[1] + qform[2] * qform[2];
+    if (squared > 1.0 + 1e-4)
+      throw InputError(file, "has a qform quaternion longer than 1 (" + text(qform) + ")");
+  }
+  if (header->sformCode > 0) {
+    const auto& s = header->sform;
+    const std::vector<double> values(s.begin(), s.end());
+    requireFinite(file, "sform (srow_x/y/z)", values, text(values));
+    requireAxes(file, "sform (srow_x/y/z) axes", {s[0], s[4], s[8], s[1], s[5], s[9], s[2], s[6], s[10]},
+                text(values));
+  }
+}
+
+}  // namespace
+
+void checkDeclaredGeometry(const fs::path& file, VolumeFormat format) {
+  switch (format) {
+    case VolumeFormat::nrrd: return checkNrrd(file);
+    case VolumeFormat::metaImage: return checkMetaImage(file);
+    case VolumeFormat::nifti: return checkNifti(file);
+  }
+}
+
+}  // namespace angio
