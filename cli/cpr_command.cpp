@@ -9,6 +9,7 @@
 #include "cli/load_volume.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
+#include "io/atomic_write.h"
 #include "io/centerline_file.h"
 #include "io/image_export.h"
 #include "io/input_error.h"
@@ -75,6 +76,7 @@ void runBenchmark(const Volume& volume, const std::vector<CenterlinePath>& paths
 }  // namespace
 
 int runCpr(const CprOptions& o) {
+  requireWritableTarget(o.out);  // before loading and resampling
   std::string displayDescription;
   const CprDisplay display = displayFrom(o, displayDescription);
   const LoadedVolume loaded = loadVolumeWithProgress(o.volume);

@@ -2,12 +2,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <string>
+#include <system_error>
 
 #include "phantom/phantom.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
 #include "cli/size_option.h"
 #include "io/image_export.h"
+#include "io/input_error.h"
 #include "render/recipe_json.h"
 #include "render/frame_renderer.h"
 #include "io/tf_file.h"
@@ -17,12 +20,16 @@ namespace angio {
 int runDemo(const DemoOptions& options) {
   PhantomOptions phantomOptions;
   phantomOptions.dims = parseSize(options.size);
+  std::error_code error;
+  std::filesystem::create_directories(options.outDir, error);  // before the phantom is generated
+  if (error || !std::filesystem::is_directory(options.outDir))
+    throw InputError(options.outDir, "cannot be made a folder for the images" +
+                                         (error ? ": " + error.message() : std::string()));
   Phantom phantom;
   {
     ProgressLine progress("generating phantom " + options.size);
     phantom = generatePhantom(phantomOptions, std::ref(progress));
   }
-  std::filesystem::create_directories(options.outDir);
   const TransferFunction tf = loadPresetOrFile("cta-vessels-bone");
   for (Quality quality : {Quality::fast, Quality::medium, Quality::high}) {
     RenderRecipe recipe;

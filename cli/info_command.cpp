@@ -59,6 +59,7 @@ void printHistogramSummary(const Volume& volume, const std::string& tfName) {
 }  // namespace
 
 int runInfo(const InfoOptions& options) {
+  if (!options.tf.empty()) loadPresetOrFile(options.tf);  // a bad TF fails before anything is printed
   const LoadedVolume loaded = loadVolumeWithProgress(options.volume, options.labels);
   const Volume& v = loaded.volume;
   std::printf("file:        %s\n", options.volume.c_str());

@@ -15,12 +15,13 @@ namespace {
 
 // ITK's and GDCM's own printing stays off the terminal, where the user reads one line per problem;
 // ANGIORAY_LIBRARY_MESSAGES=1 shows it (one line each) when a developer needs it.
-void routeLibraryOutput() {
+// ITK's and GDCM's own messages are shown (one line each) only when asked for.
+angio::LibraryMessageSink libraryMessageSink() {
   const char* wanted = std::getenv("ANGIORAY_LIBRARY_MESSAGES");
   const bool show = wanted && std::string(wanted) == "1";
-  angio::routeLibraryMessages([show](const std::string& line) {
+  return [show](const std::string& line) {
     if (show) std::fprintf(stderr, "angioray: library: %s\n", line.c_str());
-  });
+  };
 }
 
 // An exception's text on one line (library texts may hold several).
@@ -258,7 +259,6 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
 
 int main(int argc, char** argv) {
   CLI::App app{"angioray " ANGIORAY_VERSION " - CPU volume rendering for CT angiography"};
-  routeLibraryOutput();
   app.failure_message(angio::oneLineFailure);
   app.set_version_flag("--version", ANGIORAY_VERSION);
   angio::InfoOptions info;
@@ -281,8 +281,9 @@ int main(int argc, char** argv) {
   addGui(app, gui);
   app.require_subcommand(0, 1);
   angio::requireFiniteNumbers(app);
-  CLI11_PARSE(app, argc, argv);
+  CLI11_PARSE(app, argc, argv);  // its messages go to std::cerr, so before the libraries get it
 
+  const angio::LibraryMessageRoute libraryMessages(libraryMessageSink());
   try {
     if (app.got_subcommand("info")) return angio::runInfo(info);
     if (app.got_subcommand("render")) return angio::runRender(render);

@@ -7,6 +7,7 @@
 #include "cli/progress_line.h"
 #include "cli/size_option.h"
 #include "io/atomic_write.h"
+#include "io/centerline_file.h"
 #include "io/centerline_csv.h"
 #include "io/label_volume_file.h"
 #include "io/volume_writer.h"
@@ -19,8 +20,10 @@ int runPhantom(const PhantomOptionsCli& options) {
   phantomOptions.dims = parseSize(options.size);
   phantomOptions.seed = options.seed;
   phantomOptions.groundTruthLabels = !options.labels.empty();
-  for (const std::string& target : {options.out, options.labels, options.centerlines})
-    if (!target.empty()) requireWritableTarget(target);  // before minutes of generating
+  // Every output is checked before minutes of generating.
+  requireVolumeTarget(options.out);
+  if (!options.labels.empty()) requireVolumeTarget(options.labels);
+  if (!options.centerlines.empty()) requireCenterlineTarget(options.centerlines);
   Phantom phantom;
   {
     ProgressLine progress("generating phantom");

@@ -9,6 +9,7 @@
 #include "cli/number_list.h"
 #include "cli/commands.h"
 #include "cli/progress_line.h"
+#include "io/atomic_write.h"
 #include "io/centerline_file.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
@@ -91,6 +92,8 @@ Centerlines loadCenterlines(const RenderRecipe& sidecar, const Volume& volume) {
 
 // Loads the volume (and centerlines), renders, writes `out` and its sidecar (image = out).
 void renderToFile(const RenderRecipe& sidecar, const std::filesystem::path& out) {
+  requireWritableTarget(out);  // before loading and rendering
+  requireWritableTarget(sidecarPathFor(out));
   const Volume volume = loadVolumeWithProgress(sidecar.dataset, sidecar.labels).volume;
   const Centerlines centerlines = loadCenterlines(sidecar, volume);
   checkImageSize(makeViewGeometry(volume, sidecar.params), out);

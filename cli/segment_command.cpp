@@ -10,6 +10,7 @@
 #include "cli/progress_line.h"
 #include "io/centerline_file.h"
 #include "io/input_error.h"
+#include "io/volume_writer.h"
 #include "render/label_styles.h"
 #include "segment/bone_removal.h"
 
@@ -30,6 +31,7 @@ void printCounts(const LabelResult& result, const Volume& volume) {
 }  // namespace
 
 int runSegment(const SegmentOptionsCli& options) {
+  requireVolumeTarget(options.out);  // before the minutes of loading and labelling
   LoadedVolume loaded = loadVolumeWithProgress(options.volume, options.labels);
   std::optional<Centerlines> centerlines;
   if (!options.centerlines.empty()) {

@@ -6,7 +6,7 @@
 namespace angio {
 
 glm::ivec3 parseSize(const std::string& text) {
-  const std::regex pattern(R"((\d{1,5})x(\d{1,5})x(\d{1,5}))");
+  const std::regex pattern(R"((\d{1,9})x(\d{1,9})x(\d{1,9}))");
   std::smatch match;
   if (!std::regex_match(text, match, pattern))
     throw std::runtime_error("size '" + text + "' is not of the form IxJxK (e.g. 512x512x1200)");

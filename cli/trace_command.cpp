@@ -71,6 +71,13 @@ std::vector<glm::dvec3> pointsInVolumeFrame(const TraceOptionsCli& options, cons
     for (const glm::dvec3& v : parsePoints(options.voxels, "--voxels"))
       points.push_back(v * volume.spacing);
   }
+  // Every point inside the volume before any is traced (volume frame: 0 .. dims x spacing).
+  const glm::dvec3 extent = glm::dvec3(volume.dims) * volume.spacing;
+  for (std::size_t n = 0; n < points.size(); ++n)
+    if (glm::any(glm::lessThan(points[n], glm::dvec3(0))) ||
+        glm::any(glm::greaterThan(points[n], extent)))
+      throw std::invalid_argument(std::string(options.points.empty() ? "--voxels" : "--points") +
+                                  ": point " + std::to_string(n + 1) + " lies outside the volume");
   const std::size_t needed = options.downstream ? 1 : 2;
   if (points.size() < needed)
     throw std::invalid_argument(options.downstream ? "--downstream needs one point"
@@ -125,6 +132,7 @@ void printComparison(const Centerlines& traced, const Centerlines& reference) {
 }  // namespace
 
 int runTrace(const TraceOptionsCli& options) {
+  requireCenterlineTarget(options.out);  // before loading and tracing
   LoadedVolume loaded = loadVolumeWithProgress(options.volume, options.labels);
   const Volume& volume = loaded.volume;
   const std::vector<glm::dvec3> points = pointsInVolumeFrame(options, volume);

@@ -1,5 +1,6 @@
 #include "gui/app_script.h"
 
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -129,9 +130,27 @@ struct StepParser {
 std::vector<ScriptStep> parseScript(const std::string& text, const std::filesystem::path& source) {
   const Json json = parseJsonText(text, source);
   if (!json.is_array()) throw InputError(source, "a script is a JSON list of steps");
+  // Every step draws frames (a few milliseconds each in software GL): bounded so that a script
+  // ends within minutes, not hours.
+  if (json.size() > kMaxScriptSteps)
+    throw InputError(source, "has " + std::to_string(json.size()) + " steps; a script holds at most " +
+                                 std::to_string(kMaxScriptSteps) + " (split it)");
   std::vector<ScriptStep> steps;
-  for (std::size_t n = 0; n < json.size(); ++n)
+  double waitMs = 0;
+  std::size_t dragMoves = 0;
+  for (std::size_t n = 0; n < json.size(); ++n) {
     steps.push_back(StepParser{source, "step " + std::to_string(n + 1)}.parse(json[n]));
+    if (steps.back().kind == ScriptStep::Kind::waitMs) waitMs += steps.back().value;
+    if (steps.back().kind == ScriptStep::Kind::drag) dragMoves += std::size_t(steps.back().steps);
+  }
+  if (waitMs > kMaxScriptWaitMs)
+    throw InputError(source, "waits " + std::to_string(std::int64_t(waitMs / 1000)) +
+                                 " s in all; a script may wait at most " +
+                                 std::to_string(std::int64_t(kMaxScriptWaitMs / 1000)) + " s");
+  if (dragMoves > kMaxScriptSteps)
+    throw InputError(source, "drags through " + std::to_string(dragMoves) +
+                                 " mouse moves in all; a script holds at most " +
+                                 std::to_string(kMaxScriptSteps));
   return steps;
 }
 

@@ -58,6 +58,10 @@ struct ScriptStep {
   std::string text;  // key name, typed text, output file
 };
 
+// The bounds of one script: its steps, the mouse moves of its drags, its wait_ms in all.
+inline constexpr std::size_t kMaxScriptSteps = 5000;
+inline constexpr double kMaxScriptWaitMs = 600000;
+
 // Throws InputError naming the file and the step (numbered from 1) for anything malformed.
 std::vector<ScriptStep> loadScript(const std::filesystem::path& path);
 std::vector<ScriptStep> parseScript(const std::string& json, const std::filesystem::path& source);

@@ -298,10 +298,12 @@ struct SessionReader {
     if (s.contains("cursor_mm") && !s["cursor_mm"].is_null())
       slices.cursorMm = vector(s, "cursor_mm", glm::dvec3(0.0));
     const Json& panes = section(s, "panes");
+    // Named: section() may return the reader's own empty object, which must outlive `view`.
+    const SessionReader panesReader = in("panes");
     for (int o = 0; o < 3; ++o) {
       const char* name = sliceOrientationName(SliceOrientation(o));
-      const SessionReader pane = in("panes").in(name);
-      const Json& view = in("panes").section(panes, name);
+      const SessionReader pane = panesReader.in(name);
+      const Json& view = panesReader.section(panes, name);
       SlicePaneView& set = slices.panes[o];
       set.zoom = pane.number(view, "zoom", kMinSliceZoom, kMaxSliceZoom, set.zoom);
       set.panPx = pane.pan(view, pane.where.substr(0, pane.where.size() - 1), set.panPx);

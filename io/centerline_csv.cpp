@@ -21,6 +21,24 @@ bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 std::string lineText(int line) { return "line " + std::to_string(line); }
 
+// Text from the file as messages quote it: one line (line breaks and control characters as
+// \n, \xNN), at most 80 characters.
+std::string quotedText(std::string_view text) {
+  std::string shown = "'";
+  for (const char c : text.substr(0, 80)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      shown += "\\n";
+    } else if (byte < 0x20 || byte == 0x7F) {
+      static constexpr char kHex[] = "0123456789ABCDEF";
+      shown += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+    } else {
+      shown += c;
+    }
+  }
+  return shown + (text.size() > 80 ? "...'" : "'");
+}
+
 // --- Writing ------------------------------------------------------------------------------------
 
 // RFC 4180 quoting where a field needs it; also for leading or trailing spaces, which the reader
@@ -138,7 +156,7 @@ double parseNumber(std::string_view field, const fs::path& source, int line) {
   if (!field.empty() && *first == '+') ++first;
   const auto [end, error] = std::from_chars(first, last, value);
   if (error != std::errc() || end != last || field.empty()) {
-    throw InputError(source, lineText(line) + ": '" + std::string(field) + "' is not a number");
+    throw InputError(source, lineText(line) + ": " + quotedText(field) + " is not a number");
   }
   return value;
 }

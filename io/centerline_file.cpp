@@ -8,6 +8,7 @@
 #include "io/centerline_csv.h"
 #include "io/centerline_markups.h"
 #include "io/centerline_vtp.h"
+#include "io/atomic_write.h"
 #include "io/input_error.h"
 #include "io/lowercase.h"
 
@@ -32,11 +33,43 @@ std::optional<CenterlineFormat> formatOf(const fs::path& file) {
   return std::nullopt;
 }
 
+// Path names come from the file and may hold line breaks or other control characters (a quoted
+// CSV field, a JSON string); messages stay one line with those shown as \n, \xNN.
+std::string oneLine(const std::string& text) {
+  std::string line;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      line += "\\n";
+    } else if (c == '\r') {
+      line += "\\r";
+    } else if (byte < 0x20 || byte == 0x7F) {
+      static constexpr char kHex[] = "0123456789ABCDEF";
+      line += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+    } else {
+      line += c;
+    }
+  }
+  return line;
+}
+
 void warnEach(const Centerlines& centerlines, const std::vector<CenterlineIssue>& issues,
               const CenterlineLoadOptions& options) {
   if (!options.warn) return;
   for (const CenterlineIssue& issue : issues) {
-    if (issue.severity == IssueSeverity::warning) options.warn(describe(centerlines, issue));
+    if (issue.severity == IssueSeverity::warning) options.warn(oneLine(describe(centerlines, issue)));
+  }
+}
+
+// A path of one point has no direction or length: every use of centerlines (VesselGlyph, CPR,
+// tracing comparisons) needs at least a segment, so such a file is refused where it is read.
+void requireSegments(const Centerlines& centerlines, const fs::path& file) {
+  for (std::size_t n = 0; n < centerlines.paths.size(); ++n) {
+    const CenterlinePath& path = centerlines.paths[n];
+    if (path.points.size() == 1) {
+      throw InputError(file, oneLine("path '" + path.name + "' (number " + std::to_string(n + 1) +
+                                     ") has a single point; a centerline path needs at least 2"));
+    }
   }
 }
 
@@ -58,12 +91,18 @@ void saveCenterlines(const Centerlines& centerlines, const fs::path& file) {
   throw InputError(file, "unknown centerline format (use .mrk.json, .vtp or .csv)");
 }
 
+void requireCenterlineTarget(const fs::path& file) {
+  if (!formatOf(file)) throw InputError(file, "unknown centerline format (use .mrk.json, .vtp or .csv)");
+  requireWritableTarget(file);
+}
+
 void checkLoadedCenterlines(const Centerlines& centerlines, const fs::path& file,
                             const CenterlineLoadOptions& options) {
   const std::vector<CenterlineIssue> issues = validateCenterlines(centerlines);
   for (const CenterlineIssue& issue : issues) {
-    if (issue.severity == IssueSeverity::error) throw InputError(file, issue.problem);
+    if (issue.severity == IssueSeverity::error) throw InputError(file, oneLine(issue.problem));
   }
+  requireSegments(centerlines, file);
   warnEach(centerlines, issues, options);
 }
 

@@ -29,6 +29,9 @@ Centerlines loadCenterlines(const std::filesystem::path& file,
 // Throws InputError naming the file if it cannot be written, std::logic_error if `centerlines` is
 // not in the physical frame (files hold physical coordinates).
 void saveCenterlines(const Centerlines& centerlines, const std::filesystem::path& file);
+// Throws InputError unless saveCenterlines could write `file` (its format, its folder): for
+// checking before a long computation.
+void requireCenterlineTarget(const std::filesystem::path& file);
 
 // Validates freshly parsed centerlines (validateCenterlines): throws InputError(file, problem) for
 // the first error, passes each warning to options.warn. Used by every format's reader.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +20,24 @@ using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
 namespace {
+
+// Text from the file as messages quote it: one line (line breaks and control characters as
+// \n, \xNN), at most 80 characters.
+std::string quotedText(std::string_view text) {
+  std::string shown = "'";
+  for (const char c : text.substr(0, 80)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      shown += "\\n";
+    } else if (byte < 0x20 || byte == 0x7F) {
+      static constexpr char kHex[] = "0123456789ABCDEF";
+      shown += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+    } else {
+      shown += c;
+    }
+  }
+  return shown + (text.size() > 80 ? "...'" : "'");
+}
 
 std::string stringOr(const Json& object, const char* key, const std::string& fallback) {
   const auto found = object.find(key);
@@ -37,7 +57,7 @@ CoordinateMapping coordinateMapping(const Json& markup, const fs::path& source,
   if (system == "RAS") {
     mapping.axisSigns = {-1.0, -1.0, 1.0};
   } else if (system != "LPS") {
-    throw InputError(source, where + ": unknown coordinateSystem '" + system + "'");
+    throw InputError(source, where + ": unknown coordinateSystem " + quotedText(system));
   }
   // Units are a string ("mm") or a DICOM code triple (["mm", "UCUM", "millimeter"]).
   std::string units = "mm";
@@ -48,7 +68,7 @@ CoordinateMapping coordinateMapping(const Json& markup, const fs::path& source,
   if (units == "um") {
     mapping.toMm = 1e-3;
   } else if (units != "mm") {
-    throw InputError(source, where + ": unknown coordinateUnits '" + units + "'");
+    throw InputError(source, where + ": unknown coordinateUnits " + quotedText(units));
   }
   return mapping;
 }
@@ -93,7 +113,7 @@ CenterlinePath readCurve(const Json& markup, std::size_t index, const fs::path& 
                          const CenterlineLoadOptions& options) {
   CenterlinePath path{stringOr(markup, "name", ""), {}};
   if (path.name.empty()) path.name = std::to_string(index);
-  const std::string where = "markup '" + path.name + "'";
+  const std::string where = "markup " + quotedText(path.name);
   const CoordinateMapping mapping = coordinateMapping(markup, source, where);
 
   const Json noPoints = Json::array();
@@ -232,8 +252,8 @@ Centerlines parseCenterlinesMarkups(const std::string& text, const fs::path& sou
     if (type == "Curve" || type == "Line") {
       centerlines.paths.push_back(readCurve(markup, index, source, options));
     } else if (options.warn) {
-      options.warn(source.string() + ": markup " + std::to_string(index) + " of type '" + type +
-                   "' is not a curve; skipped");
+      options.warn(source.string() + ": markup " + std::to_string(index) + " of type " +
+                   quotedText(type) + " is not a curve; skipped");
     }
   }
   checkLoadedCenterlines(centerlines, source, options);

@@ -250,6 +250,9 @@ void inflateBlock(const std::string& compressed, char* out, std::size_t outBytes
   }
 }
 
+// How many bytes deflate can make of one (its limit is about 1032), with room to spare.
+constexpr std::uint64_t kMaxInflation = 1100;
+
 // vtkZLibDataCompressor: header words [nblocks, blocksize, lastblocksize, compressed size of each
 // block] (lastblocksize 0 = the last block is full), then the zlib streams one after another.
 std::string readCompressed(ByteStream& in, const Encoding& encoding, std::size_t expectedBytes) {
@@ -271,6 +274,20 @@ std::string readCompressed(ByteStream& in, const Encoding& encoding, std::size_t
   if (total != expectedBytes) throw ArrayProblem(sizeMismatch(total, expectedBytes));
   const std::string sizes = in.read(std::size_t(blocks) * word);
   in.endStream();
+  // Every block's compressed bytes must be there, and could inflate to its size: deflate makes at
+  // most about 1032 bytes of one, so a header claiming more is refused before anything is allocated.
+  std::uint64_t compressedTotal = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::uint64_t compressedBytes = wordAt(sizes, b, word, encoding.swapBytes);
+    const std::uint64_t outBytes = b + 1 == blocks && lastBytes != 0 ? lastBytes : blockBytes;
+    if (compressedBytes > in.available() || compressedTotal + compressedBytes > in.available())
+      throw ArrayProblem("data ends early (compressed blocks of " + std::to_string(compressedTotal) +
+                         "+ bytes in " + std::to_string(in.available()) + ")");
+    if (outBytes / kMaxInflation > compressedBytes)
+      throw ArrayProblem("zlib block " + std::to_string(b) + " claims " + std::to_string(outBytes) +
+                         " bytes from " + std::to_string(compressedBytes) + " compressed");
+    compressedTotal += compressedBytes;
+  }
 
   std::string data(expectedBytes, '\0');
   for (std::size_t b = 0; b < blocks; ++b) {
@@ -383,6 +400,9 @@ struct ArrayContext {
   const Encoding& encoding;
   const AppendedData& appended;
   const fs::path& source;
+  // The file's size: the most values it can hold are a value per byte, or kMaxInflation per byte
+  // compressed; counts from the header are checked against that before anything is allocated.
+  std::size_t fileBytes = 0;
 };
 
 std::vector<double> decodeArray(const pugi::xml_node& array, std::size_t expectedValues,
@@ -417,8 +437,11 @@ std::vector<double> readDataArray(const pugi::xml_node& array, std::size_t tuple
   try {
     const std::size_t declared =
         parseCount(attribute(array, "NumberOfComponents", "1"), "NumberOfComponents");
-    if (tuples > (std::size_t(1) << 56)) {
-      throw ArrayProblem("impossibly large (" + std::to_string(tuples) + " tuples)");
+    const double maxValues =
+        double(context.fileBytes) * double(context.encoding.zlib ? kMaxInflation : 1);
+    if (double(tuples) * double(components) > maxValues) {
+      throw ArrayProblem("claims " + std::to_string(tuples) + " tuples, more than the file's " +
+                         std::to_string(context.fileBytes) + " bytes can hold");
     }
     if (declared != components) {
       throw ArrayProblem("has " + std::to_string(declared) + " components, expected " +
@@ -561,6 +584,26 @@ std::vector<CenterlinePoint> cellPoints(const std::vector<double>& connectivity,
   return cell;
 }
 
+// The points all paths will hold, checked before the connectivity is read: a line cell visits each
+// point once (a closed one its first twice), and all paths together stay within kMaxPathPoints (a
+// few repeated indices could otherwise ask for more memory than the machine has).
+constexpr std::size_t kMaxPathPoints = std::size_t(1) << 24;
+
+void requirePlausiblePathPoints(std::size_t entries, std::size_t points, std::size_t cells,
+                                const Centerlines& centerlines, const ArrayContext& context) {
+  std::size_t loaded = 0;
+  for (const CenterlinePath& path : centerlines.paths) loaded += path.points.size();
+  const auto claim = [&] {
+    return "Lines: " + std::to_string(entries) + " connectivity entries for " + std::to_string(points) +
+           " points in " + std::to_string(cells) + " lines";
+  };
+  if (double(entries) > double(cells) * (double(points) + 1))
+    throw InputError(context.source, claim() + " (a line visits each point once)");
+  if (entries > kMaxPathPoints - loaded)
+    throw InputError(context.source,
+                     claim() + ", more than " + std::to_string(kMaxPathPoints) + " path points in all");
+}
+
 void readPiece(const pugi::xml_node& piece, const ArrayContext& context,
                const CenterlineLoadOptions& options, Centerlines& centerlines) {
   const std::size_t pointCount = pieceCount(piece, "NumberOfPoints", context.source);
@@ -572,6 +615,7 @@ void readPiece(const pugi::xml_node& piece, const ArrayContext& context,
   const pugi::xml_node lines = piece.child("Lines");
   if (!lines) throw InputError(context.source, "Piece has NumberOfLines but no <Lines>");
   const std::vector<std::size_t> ends = readLineEnds(lines, cells, context);
+  requirePlausiblePathPoints(ends.back(), pointCount, cells, centerlines, context);
   const pugi::xml_node connectivityArray = namedArray(lines, "connectivity");
   if (!connectivityArray) throw InputError(context.source, "<Lines> has no \"connectivity\" DataArray");
   const std::vector<double> connectivity = readDataArray(connectivityArray, ends.back(), 1, context);
@@ -673,7 +717,7 @@ Centerlines parseCenterlinesVtp(const std::string& bytes, const fs::path& source
 
   const Encoding encoding = fileEncoding(root, source);
   const AppendedData appended = appendedData(root, split, source);
-  const ArrayContext context{encoding, appended, source};
+  const ArrayContext context{encoding, appended, source, bytes.size()};
   Centerlines centerlines;
   centerlines.source = source.string();
   for (const pugi::xml_node piece : polyData.children("Piece")) {

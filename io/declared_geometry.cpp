@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/number_text.h"
 #include "io/input_error.h"
 #include "io/metaimage_header.h"
 #include "io/nifti_header.h"
@@ -114,8 +115,29 @@ void checkNrrd(const fs::path& file) {
   if (directions.size() == 9) requireAxes(file, "space directions", directions, directionsText);
 }
 
+// MetaIO reads a list of slice files (LIST, or a printf pattern with a range) without saying when
+// one is missing; a CT arrives as one .mha or .mhd + .raw, so only those are read.
+void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
+  const std::string dims = header.field("NDims");
+  char* end = nullptr;
+  const long ndims = std::strtol(dims.c_str(), &end, 10);
+  if (dims.empty() || *end != '\0' || ndims < 1 || ndims > 8)
+    throw InputError(file, "has NDims '" + shown(dims) + "'; need 3");
+  const std::vector<double> sizes = numbersIn(header.field("DimSize"));
+  bool whole = sizes.size() == std::size_t(ndims);
+  for (const double n : sizes) whole = whole && n >= 1 && n == std::floor(n);
+  if (!whole)
+    throw InputError(file, "has DimSize '" + shown(header.field("DimSize")) + "' that is not " +
+                               std::to_string(ndims) + " whole numbers >= 1");
+  const std::string data = header.field("ElementDataFile");
+  if (data == "LIST" || data.find('%') != std::string::npos)
+    throw InputError(file, "keeps its voxels in a list of files (ElementDataFile = " + shown(data) +
+                               "); only one data file (or LOCAL) is read: convert it to one .mha");
+}
+
 void checkMetaImage(const fs::path& file) {
   const MetaImageHeader header = readMetaImageHeader(file);
+  checkMetaImageLayout(file, header);
   for (const char* key : {"ElementSpacing", "ElementSize"})
     if (const std::string value = header.field(key); !value.empty())
       requireSpacing(file, key, numbersIn(value), value);
@@ -132,7 +154,10 @@ void checkNifti(const fs::path& file) {
   if (!header) return;  // ITK says what is wrong with it
   const auto text = [](auto values) {
     std::string out;
-    for (const double v : values) out += (out.empty() ? "" : " ") + std::to_string(v);
+    for (const double v : values) {
+      if (!out.empty()) out += ' ';
+      out += std::isfinite(v) ? numberText(v) : std::to_string(v);
+    }
     return out;
   };
   const std::vector<double> pixdim(header->pixdim.begin(), header->pixdim.end());

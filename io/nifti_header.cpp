@@ -58,7 +58,8 @@ std::optional<NiftiHeader> parsed(const HeaderBytes& header, int headerBytes, bo
   }
   const double offset =
       n2 ? double(fieldAt<std::int64_t>(header, 168, swap)) : double(fieldAt<float>(header, 108, swap));
-  if (!(offset >= 0.0) || voxels * bitsPerVoxel / 8 > 1e18) return std::nullopt;
+  // Both become 64-bit integers: beyond 1e18 (no file is that large) the conversion is undefined.
+  if (!(offset >= 0.0 && offset <= 1e18) || voxels * bitsPerVoxel / 8 > 1e18) return std::nullopt;
   parsed.dataOffset = std::uint64_t(offset);
   parsed.dataBytes = std::uint64_t(voxels * bitsPerVoxel / 8);
   const unsigned char* magic = header.data() + (n2 ? 4 : 344);

@@ -18,6 +18,7 @@
 #include "io/declared_geometry.h"
 #include "io/dicom_slice_check.h"
 #include "io/input_error.h"
+#include "io/library_messages.h"
 #include "io/segmentation_file.h"
 #include "io/volume_conversion.h"
 #include "io/volume_formats.h"
@@ -140,7 +141,11 @@ void readAllThroughItk(itk::ImageIOBase& io, char* out) {
     region.SetSize(d, io.GetDimensions(d));
   }
   io.SetIORegion(region);
+  const LibraryErrorCapture errors;
   io.Read(out);
+  // MetaIO says a decompression failed only on std::cerr, and leaves the voxels unset.
+  if (const std::string text = errors.text(); !text.empty())
+    throw std::invalid_argument("cannot be read: " + text);
 }
 
 // Reads the voxels as stored into `out`. ITK reads a single-file volume in one call, without

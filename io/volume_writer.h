@@ -9,5 +9,8 @@
 namespace angio {
 
 void writeVolume(const Volume& volume, const std::filesystem::path& path);
+// Throws InputError unless a volume could be written at `path` (a known format, a writable
+// folder): for checking before a long computation.
+void requireVolumeTarget(const std::filesystem::path& path);
 
 }  // namespace angio

@@ -641,7 +641,7 @@ TEST_F(CenterlineCsv, WrittenCentrelinesReadBackExactlyWithTheirNames) {
   written.paths = {
       {"trunk-left",
        {{{double(-218.4904f), -316.4061, 1.0 / 3.0}, double(10.3651f)}, {{-218.5, -315.5, 24.4}, 10.0}}},
-      {"trunk, \"right\"", {{{1, 2, 3}, 0.5}}}};
+      {"trunk, \"right\"", {{{1, 2, 3}, 0.5}, {{1, 2, 4}, 0.25}}}};
   const fs::path file = dir_ / "round.csv";
   writeCenterlinesCsv(written, file);
   const Centerlines read = readCenterlinesCsv(file);
@@ -661,7 +661,8 @@ TEST_F(CenterlineCsv, IdsGroupRowsAndBlankLinesAndSpacesAreIgnored) {
                               "path, x_mm, y_mm, z_mm, radius_mm\r\n"
                               "left,1,2,3,4\r\n\r\n"
                               "right,5,6,7,8\n"
-                              " left , 1.5 , +2 , 3e0 , 4.25\n");
+                              " left , 1.5 , +2 , 3e0 , 4.25\n"
+                              "right,5,6,8,8\n");
   const Centerlines loaded = loadCenterlines(file);
   ASSERT_EQ(loaded.paths.size(), 2u);
   EXPECT_EQ(loaded.paths[0].name, "left");
@@ -739,7 +740,8 @@ TEST_F(CenterlineFiles, FormatIsChosenByExtension) {
   const Polylines data = branchingFixture();
   EXPECT_EQ(loadCenterlines(write("upper.VTP", writeVtp(data, style("", "binary")))).paths.size(), 2u);
   EXPECT_EQ(loadCenterlines(write("a.mrk.json", curveJson("", kThreePoints))).paths.size(), 1u);
-  EXPECT_EQ(loadCenterlines(write("a.csv", "path,x_mm,y_mm,z_mm,radius_mm\n0,1,2,3,4\n")).paths.size(),
+  EXPECT_EQ(loadCenterlines(write("a.csv", "path,x_mm,y_mm,z_mm,radius_mm\n0,1,2,3,4\n0,1,2,4,4\n"))
+                .paths.size(),
             1u);
   // A .vtp that holds CSV fails as XML, not silently.
   EXPECT_NE(loadError(write("csv.vtp", "path,x_mm,y_mm,z_mm,radius_mm\n")).find("bad XML"),

@@ -1,7 +1,6 @@
 // DICOM slices whose tags contradict their pixel data or do not place them: each is refused with
 // one line naming the slice and the tag, before GDCM or ITK would assert or load it wrongly. The
-// slices are written by ITK, then one tag's value is rewritten in the file's bytes (the writer
-// uses implicit VR little endian: tag, 4-byte length, value).
+// slices are written by ITK, then one tag's value is rewritten in the file's bytes.
 #include "io/dicom_slice_check.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +15,7 @@
 #include "io/input_error.h"
 #include "io/volume_reader.h"
 #include "tests/support/dicom_series_writer.h"
+#include "tests/support/dicom_tag_patch.h"
 #include "tests/support/temp_folder_test.h"
 
 namespace angio {
@@ -24,38 +24,8 @@ namespace {
 namespace fs = std::filesystem;
 using test_support::writeDicomSeries;
 
-std::string bytesOf(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void overwrite(const fs::path& file, const std::string& bytes) {
-  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
-}
-
-std::string littleEndian(std::uint32_t value, int bytes) {
-  std::string out;
-  for (int n = 0; n < bytes; ++n) out += char((value >> (8 * n)) & 0xff);
-  return out;
-}
-
-// Replaces the value of tag (group, element) in an implicit-VR little-endian slice.
-void setTag(const fs::path& slice, std::uint16_t group, std::uint16_t element,
-            const std::string& value) {
-  std::string bytes = bytesOf(slice);
-  const std::string tag = littleEndian(group, 2) + littleEndian(element, 2);
-  // The data set starts after the file meta group (0002); search from the first (0008) tag.
-  const std::size_t dataSet = bytes.find(littleEndian(0x0008, 2), 132 + 12);
-  const std::size_t at = bytes.find(tag, dataSet);
-  ASSERT_NE(at, std::string::npos) << "no tag " << std::hex << group << "," << element;
-  const std::uint32_t length = std::uint8_t(bytes[at + 4]) | std::uint8_t(bytes[at + 5]) << 8 |
-                               std::uint8_t(bytes[at + 6]) << 16 |
-                               std::uint32_t(std::uint8_t(bytes[at + 7])) << 24;
-  bytes.replace(at + 4, 4 + length, littleEndian(std::uint32_t(value.size()), 4) + value);
-  overwrite(slice, bytes);
-}
-
-std::string unsignedShort(int value) { return littleEndian(std::uint32_t(value), 2); }
+using test_support::setDicomTag;
+using test_support::unsignedShort;
 
 class DicomSliceCheckTest : public test_support::TempFolderTest {
  protected:
@@ -95,7 +65,7 @@ TEST_F(DicomSliceCheckTest, AnUntouchedSeriesLoads) {
 }
 
 TEST_F(DicomSliceCheckTest, ColourSamplesAreRefused) {
-  setTag(series(), 0x0028, 0x0002, unsignedShort(3));
+  setDicomTag(series(), 0x0028, 0x0002, unsignedShort(3));
   const std::string message = refusal();
   EXPECT_NE(message.find("IM2-4.dcm"), std::string::npos) << message;
   EXPECT_NE(message.find("3 samples per pixel"), std::string::npos) << message;
@@ -103,26 +73,26 @@ TEST_F(DicomSliceCheckTest, ColourSamplesAreRefused) {
 
 TEST_F(DicomSliceCheckTest, BitsAllocatedThatContradictThePixelDataAreRefused) {
   const fs::path slice = series();
-  setTag(slice, 0x0028, 0x0100, unsignedShort(8));
-  setTag(slice, 0x0028, 0x0101, unsignedShort(8));
-  setTag(slice, 0x0028, 0x0102, unsignedShort(7));
+  setDicomTag(slice, 0x0028, 0x0100, unsignedShort(8));
+  setDicomTag(slice, 0x0028, 0x0101, unsignedShort(8));
+  setDicomTag(slice, 0x0028, 0x0102, unsignedShort(7));
   EXPECT_NE(refusal().find(
                 "512 bytes of pixel data where Rows x Columns x BitsAllocated (16 x 16 x 8) need 256"),
             std::string::npos);
 }
 
 TEST_F(DicomSliceCheckTest, BitsStoredBeyondBitsAllocatedAreRefused) {
-  setTag(series(), 0x0028, 0x0101, unsignedShort(20));
+  setDicomTag(series(), 0x0028, 0x0101, unsignedShort(20));
   EXPECT_NE(refusal().find("do not fit BitsAllocated 16"), std::string::npos);
 }
 
 TEST_F(DicomSliceCheckTest, HugeRowsOnOneSliceAreRefused) {
-  setTag(series(), 0x0028, 0x0010, unsignedShort(65535));
+  setDicomTag(series(), 0x0028, 0x0010, unsignedShort(65535));
   EXPECT_NE(refusal().find("(65535 x 16 x 16) need"), std::string::npos);
 }
 
 TEST_F(DicomSliceCheckTest, AMalformedUnsignedShortIsRefused) {
-  setTag(series(), 0x0028, 0x0011, "\x10");
+  setDicomTag(series(), 0x0028, 0x0011, "\x10");
   EXPECT_NE(refusal().find("malformed Columns"), std::string::npos);
 }
 
@@ -130,32 +100,30 @@ TEST_F(DicomSliceCheckTest, ZeroNegativeOrNanPixelSpacingIsRefused) {
   for (const std::string spacing : {"0\\0.7 ", "-0.7\\0.7", "nan\\0.7", "0.7"}) {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    setTag(series(), 0x0028, 0x0030, spacing);
+    setDicomTag(series(), 0x0028, 0x0030, spacing);
     const std::string message = refusal();
     EXPECT_NE(message.find("PixelSpacing (0028,0030)"), std::string::npos) << spacing << ": " << message;
   }
 }
 
 TEST_F(DicomSliceCheckTest, AnAllZeroOrientationIsRefused) {
-  setTag(series(), 0x0020, 0x0037, "0\\0\\0\\0\\0\\0 ");
+  setDicomTag(series(), 0x0020, 0x0037, "0\\0\\0\\0\\0\\0 ");
   EXPECT_NE(refusal().find("ImageOrientationPatient (0020,0037) whose rows and columns are not"),
             std::string::npos);
 }
 
 TEST_F(DicomSliceCheckTest, NanRescaleSlopeIsRefused) {
-  setTag(series(), 0x0028, 0x1053, "nan ");
+  setDicomTag(series(), 0x0028, 0x1053, "nan ");
   EXPECT_NE(refusal().find("invalid RescaleSlope (0028,1053)"), std::string::npos);
 }
 
 TEST_F(DicomSliceCheckTest, ZeroRescaleSlopeIsRefused) {
-  setTag(series(), 0x0028, 0x1053, "0 ");
+  setDicomTag(series(), 0x0028, 0x1053, "0 ");
   EXPECT_NE(refusal().find("RescaleSlope (0028,1053) of 0"), std::string::npos);
 }
 
 TEST_F(DicomSliceCheckTest, ATruncatedSliceIsRefused) {
-  const fs::path slice = series();
-  const std::string bytes = bytesOf(slice);
-  overwrite(slice, bytes.substr(0, bytes.size() - 100));
+  test_support::truncateBy(series(), 100);
   const std::string message = refusal();
   EXPECT_NE(message.find("IM2-4.dcm is truncated (412 of 512 bytes"), std::string::npos) << message;
 }
@@ -175,7 +143,7 @@ TEST_F(DicomSliceCheckTest, ASmallDriftWithinHalfAPixelStillLoads) {
 
 TEST_F(DicomSliceCheckTest, AOneSliceFileIsCheckedToo) {
   const fs::path slice = series();
-  setTag(slice, 0x0028, 0x0002, unsignedShort(3));
+  setDicomTag(slice, 0x0028, 0x0002, unsignedShort(3));
   try {
     readVolume(slice);
     FAIL() << "loaded";
