@@ -192,6 +192,7 @@ class App {
   // Sessions (gui/app_session.cpp).
   void startSession();  // panel states to apply, recent files, the last session offered
   void applySession(const Document& session);
+  void commitSession(const Document& session);
   void drawSessionSection();
   void drawSessionBanner();
   // VesselGlyph (gui/app_vessel.cpp): centerlines loaded in the background, the overlay.
@@ -342,17 +343,17 @@ class App {
   FileBrowser browser_;
   BackgroundJob<LoadedDataset> load_;
   std::string loadPath_, loadError_;
-  bool loadOfSession_ = false;
+  bool loadOfSession_ = false;              // the running load is a session's dataset
+  std::optional<Document> pendingSession_;  // applied once that load succeeds
   // The first level's sampling while dragging (render/motion_sampling.h): the budget, the last
   // first-level frame shown, the isd chosen by the last interactive request (kept for the
   // release's request, which then continues above the frame the drag left).
   double motionBudgetMs_ = 40;
   std::optional<MeasuredFrame> lastFirstLevel_;
-  std::optional<double> motionIsd_;  // the running load is a session's dataset (DatasetOpened)
-  std::string startPreset_;
-  std::optional<CropGrab> cropGrab_;  // a crop handle held (until the frame after release)
-  bool viewAdjusting_ =
-      false;  // a Shift+drag on the view is under way (one TF undo step)                 // the main TF a new dataset falls back to from an edited one
+  std::optional<double> motionIsd_;
+  std::string startPreset_;                 // the main TF a new dataset falls back to from an edited one
+  std::optional<CropGrab> cropGrab_;        // a crop handle held (until the frame after release)
+  bool viewAdjusting_ = false;              // a Shift+drag on the view is under way (one TF undo step)
   std::optional<Document> offeredSession_;  // "Restore last session" banner
   SessionPanelUi sessionPanel_;
   std::map<std::string, bool> panelsToApply_;  // section open states to set on the next frame

@@ -75,12 +75,15 @@ void App::pollBackgroundJobs() {
       if (!dropped.empty()) message_ += "; dropped with the old dataset: " + joined(dropped);
       if (const std::string tf = loadOfSession_ ? "" : resetTfForNewDataset(); !tf.empty())
         message_ += "; " + tf;
+      if (pendingSession_) commitSession(*std::exchange(pendingSession_, std::nullopt));
     } catch (const LoadCancelled&) {
-      message_ = "loading " + loadPath_ + " cancelled";
+      message_ = "loading " + loadPath_ + " cancelled" +
+                 (pendingSession_ ? "; the session was not applied" : "");
     } catch (const std::exception& error) {
-      loadError_ = error.what();
+      loadError_ = error.what() + std::string(pendingSession_ ? " (the session was not applied)" : "");
       message_.clear();
     }
+    pendingSession_.reset();
   }
   pollCenterlineLoad();  // after the dataset: centerlines are checked against the one shown
   if (seriesJob_.ready()) {

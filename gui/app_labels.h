@@ -24,7 +24,7 @@ struct LabelsPanel {
   std::future<LabelCounts> counting;  // after a dataset change
   bool counted = false;
   bool dirty = false;       // changed since loaded or saved
-  std::string pendingFile;  // a session's label file, read once its dataset is there
+  std::string pendingFile;  // the start's label file, read once the dataset is there
   std::string error;
 };
 

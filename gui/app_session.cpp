@@ -35,24 +35,36 @@ Document App::session() const {
   return session;
 }
 
+// A session naming another dataset is applied once that has loaded: one that fails to load (or
+// is cancelled) leaves the app as it was, with the error shown.
 void App::applySession(const Document& session) {
+  const bool sameDataset = session.dataset == data_.name || session.dataset.empty();
+  if (sameDataset || isPhantomName(session.dataset)) {
+    commitSession(session);
+    if (!sameDataset)
+      message_ = "the session's dataset is a " + session.dataset + "; kept " + data_.name;
+    return;
+  }
+  if (load_.running()) {
+    message_ = "still loading " + loadPath_ + "; cancel it first";
+    return;
+  }
+  pendingSession_ = session;
+  openDataset(session.dataset, true);
+}
+
+// The session onto the dataset shown.
+void App::commitSession(const Document& session) {
   tfTargets_.history().push(editedTf());
-  commit(SessionEdit{session});  // the dataset changes when its load succeeds
+  Document onShown = session;
+  onShown.dataset = data_.name;
+  commit(SessionEdit{onShown});
   vessels_.undo.clear();
   vessels_.redo.clear();
   vessels_.ui.selectedPath = -1;
-  const bool sameDataset = session.dataset == data_.name || session.dataset.empty();
-  if (!sameDataset && session.vessels.unsaved) vessels_.pending = session.vessels;
-  loadSessionCenterlines();  // checked against the session's dataset once that is there
+  loadSessionCenterlines();
   panelsToApply_ = session.panelsOpen;
-  labels_.pendingFile = session.labels.file;  // read once its dataset is there
-  if (session.dataset == data_.name || session.dataset.empty()) {
-    if (!labels_.pendingFile.empty()) startLabelRead(std::exchange(labels_.pendingFile, ""));
-    return;
-  }
-  if (isPhantomName(session.dataset))
-    message_ = "the session's dataset is a " + session.dataset + "; kept " + data_.name;
-  else openDataset(session.dataset, true);
+  if (!session.labels.file.empty()) startLabelRead(session.labels.file);
 }
 
 bool App::sectionHeader(const char* title, bool openByDefault) {

@@ -211,18 +211,13 @@ void App::resetTracer() {
 }
 
 // Called once the new dataset is the document's (DatasetOpened dropped the old one's paths); a
-// session's own paths come back then.
+// session's own paths come with its SessionEdit after that.
 void App::resetVessels() {
   resetTracer();
   vessels_.undo.clear();
   vessels_.redo.clear();
   vessels_.problem.clear();
   vessels_.ui.selectedPath = vessels_.ui.selectedPoint = -1;
-  if (vessels_.pending) {
-    commit(VesselFileEdit{vessels_.pending->paths, vessels_.pending->file});
-    if (vessels_.pending->unsaved) commit(VesselPathsEdit{vessels_.pending->paths});
-    vessels_.pending.reset();
-  }
 }
 
 void App::saveVessels(const std::string& file) {

@@ -35,7 +35,6 @@ struct VesselsPanel {
   std::string problem;   // the tracer's last one-line problem
   std::string error;     // a file's
   bool focused = false;  // the last click was in the section (or on the image, tracing): keys undo
-  std::optional<VesselsState> pending;  // a session's paths, put in once its dataset is there
 };
 
 }  // namespace angio

@@ -259,6 +259,34 @@ TEST_F(GuiData, CorruptFileKeepsThePreviousDatasetAndShowsTheError) {
   EXPECT_EQ(end["runtime"]["shown"]["level"], "high");  // the phantom still renders
 }
 
+TEST_F(GuiData, ASessionWhoseDatasetFailsToLoadChangesNothing) {
+  std::ofstream(dir_ / "corrupt.mha") << "ObjectType = Image\nNDims = banana\n";
+  std::ofstream(dir_ / "s.json") << Json({{"dataset", file("corrupt.mha")},
+                                          {"view", {{"angle_deg", 45}, {"axis", "k"}}},
+                                          {"transfer_function",
+                                           {{"name", "the session's"},
+                                            {"points",
+                                             {{{"hu", -1024}, {"color", {0, 0, 0}}, {"opacity", 0}},
+                                              {{"hu", 3071}, {"color", {1, 1, 1}}, {"opacity", 1}}}}}}})
+                                        .dump();
+  const Json start = startup();
+  const Json& layout = start["runtime"]["layout"];
+  const GuiRun run = runScript(R"([{"click": )" + centre(layout["session_path"]) +
+                               R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("s.json") +
+                               R"("}, {"key": "Enter"}, {"click": )" + centre(layout["session_load"]) +
+                               R"(}, {"wait_level": "high"}])");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json end = readJson(dir_ / "end.json");
+  EXPECT_EQ(end["runtime"]["data"]["name"], "phantom 96x96x200");
+  const std::string error = end["runtime"]["data"]["load_error"];
+  EXPECT_EQ(error.rfind(file("corrupt.mha") + ": ", 0), 0u) << error;
+  EXPECT_NE(error.find("the session was not applied"), std::string::npos) << error;
+  // Nothing of the session: the view and the TF are those from before.
+  EXPECT_EQ(end["state"]["view"], start["state"]["view"]);
+  EXPECT_EQ(end["state"]["transfer_function"], start["state"]["transfer_function"]);
+  EXPECT_EQ(end["runtime"]["shown"]["level"], "high");
+}
+
 TEST_F(GuiData, SavedSessionRestoresWithTheOptionAndTheLoadButton) {
   const Json layout = startup()["runtime"]["layout"];
   const std::string session = file("my-session.json");
