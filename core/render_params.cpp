@@ -36,6 +36,7 @@ std::string renderParamsProblem(const RenderParams& p) {
     return "the shading's ka and kd must be finite numbers";
   if (!std::isfinite(p.mip.window) || !std::isfinite(p.mip.level))
     return "the MIP window and level must be finite numbers";
+  if (!(p.mip.window > 0)) return "the MIP window must be > 0 HU";
   if (std::string problem = samplingProblem(p.sampling); !problem.empty()) return problem;
   if (p.window) return imageWindowProblem(*p.window);
   return "";

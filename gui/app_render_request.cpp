@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <string>
 
 #include "gui/app.h"
 
@@ -70,6 +71,15 @@ void App::requestRender(bool interactive) {
   if (interactive) motionIsd_ = motionSampling(request.levels, lastFirstLevel_, motionBudgetMs_).isd;
   if (motionIsd_) request.levels[int(Quality::fast)].isd = *motionIsd_;
   if (lastRequest_ && *lastRequest_ == request) return;
+  // A value typed into a field (Ctrl+click on a slider takes any text) that no renderer can
+  // finish is not sent: the image shown stays, the problem is said.
+  std::string problem = renderParamsProblem(request.params);
+  for (const Sampling& level : request.levels)
+    if (problem.empty()) problem = samplingProblem(level);
+  if (!problem.empty()) {
+    message_ = "not rendered: " + problem;
+    return;
+  }
   lastRequestId_ = renderer_->request(request);
   latency_.requested(lastRequestId_, frameStart_);
   lastRequest_ = request;

@@ -40,27 +40,36 @@ std::vector<double> numbersIn(const std::string& text) {
   return numbers;
 }
 
+// Coordinates and lengths in mm beyond this are not a patient (a scanner's bore is under 1 m);
+// ITK's direction decomposition does not finish on values near the float limit.
+constexpr double kMaxHeaderMm = 1e6;
+
 bool allFinite(const std::vector<double>& values) {
   for (const double v : values)
-    if (!std::isfinite(v)) return false;
+    if (!std::isfinite(v) || std::abs(v) > kMaxHeaderMm) return false;
   return true;
 }
 
+// A header value quoted in a message: control bytes shown as '?', at most 80 characters.
 std::string shown(const std::string& value) {
-  return value.size() > 80 ? value.substr(0, 77) + "..." : value;
+  std::string text = value.size() > 80 ? value.substr(0, 77) + "..." : value;
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return text;
 }
 
 void requireSpacing(const fs::path& file, const std::string& field, const std::vector<double>& spacing,
                     const std::string& text) {
   for (const double s : spacing)
-    if (!(s > 0 && std::isfinite(s)))
+    if (!(s > 0 && s <= kMaxHeaderMm))
       throw InputError(
           file, "has a zero, negative or unknown voxel spacing in " + field + " (" + shown(text) + ")");
 }
 
 void requireFinite(const fs::path& file, const std::string& field, const std::vector<double>& values,
                    const std::string& text) {
-  if (!allFinite(values)) throw InputError(file, "has a non-finite " + field + " (" + shown(text) + ")");
+  if (!allFinite(values))
+    throw InputError(file, "has a non-finite or absurd " + field + " (" + shown(text) + ")");
 }
 
 // Three axis vectors (column-wise) must span space.
@@ -73,7 +82,8 @@ void requireAxes(const fs::path& file, const std::string& field, const std::vect
   double scale = 0;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(axes[c]));
   if (!(std::abs(glm::determinant(axes)) > 1e-12 * scale * scale * scale))
-    throw InputError(file, "has " + field + " that do not span 3-D space (" + shown(text) + ")");
+    throw InputError(file, "has an invalid direction matrix: " + field + " does not span 3-D space (" +
+                               shown(text) + ")");
 }
 
 // NRRD: "field: value" lines up to the first empty line (or the end of a detached .nhdr).
@@ -118,7 +128,12 @@ void checkNrrd(const fs::path& file) {
 // MetaIO reads a list of slice files (LIST, or a printf pattern with a range) without saying when
 // one is missing; a CT arrives as one .mha or .mhd + .raw, so only those are read.
 void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
+  if (!header.repeated.empty())
+    throw InputError(
+        file, "has the field " + shown(*header.repeated.begin()) + " more than once (a damaged header)");
   const std::string dims = header.field("NDims");
+  if (dims.empty())
+    throw InputError(file, "is not a valid MetaImage file (corrupt or truncated header)");
   char* end = nullptr;
   const long ndims = std::strtol(dims.c_str(), &end, 10);
   if (dims.empty() || *end != '\0' || ndims < 1 || ndims > 8)
@@ -151,7 +166,8 @@ void checkMetaImage(const fs::path& file) {
 
 void checkNifti(const fs::path& file) {
   const auto header = readNiftiHeader(file);
-  if (!header) return;  // ITK says what is wrong with it
+  // ITK's reader takes headers ours refuses (a wrong header size), then trusts their fields.
+  if (!header) throw InputError(file, "is not a valid NIfTI file (its header does not add up)");
   const auto text = [](auto values) {
     std::string out;
     for (const double v : values) {

@@ -1,3 +1,4 @@
+#include "io/dicom_element_lengths.h"
 #include "io/dicom_series.h"
 
 #include <algorithm>
@@ -48,6 +49,10 @@ std::string millimetres(double value) {
 }
 
 Series chooseSeries(const std::filesystem::path& folder, const ReadOptions& options) {
+  // GDCM reads every file of the folder to group them; each is walked before it does.
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+    if (entry.is_regular_file(error)) checkDicomElementLengths(folder, entry.path());
   auto names = itk::GDCMSeriesFileNames::New();
   // Group by SeriesInstanceUID alone: a series that mixes orientations or sizes is reported as
   // such below instead of being split silently.

@@ -28,6 +28,7 @@ MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
     const auto equals = line.find('=');
     if (equals == std::string::npos) continue;
     const std::string key = trimmed(line.substr(0, equals));
+    if (header.fields.count(key)) header.repeated.insert(key);
     header.fields[key] = trimmed(line.substr(equals + 1));
     if (key != "ElementDataFile") continue;
     if (in) header.dataStart = std::uint64_t(in.tellg());

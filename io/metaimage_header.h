@@ -4,13 +4,15 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 
 namespace angio {
 
 struct MetaImageHeader {
-  std::map<std::string, std::string> fields;  // values trimmed of blanks
+  std::map<std::string, std::string> fields;  // values trimmed of blanks; the last of a repeated key
+  std::set<std::string> repeated;             // keys the header has more than once
   // Offset of the byte after the ElementDataFile line; empty if the header has no such line.
   std::optional<std::uint64_t> dataStart;
   bool dataLineEndsWithCr = false;  // a CRLF header: where MetaIO starts its data is less certain

@@ -16,6 +16,7 @@
 
 #include "io/dicom_series.h"
 #include "io/declared_geometry.h"
+#include "io/dicom_element_lengths.h"
 #include "io/dicom_slice_check.h"
 #include "io/input_error.h"
 #include "io/library_messages.h"
@@ -72,13 +73,14 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
   if (const auto format = volumeFormatOf(file)) {
     io = makeImageIO(*format);
     formatLabel = formatName(*format);
+    checkDeclaredGeometry(file, *format);  // before ITK parses it (MetaIO can hang on NDims < 0)
     if (!io->CanReadFile(file.c_str()))
       throw InputError(
           file, std::string("is not a valid ") + formatLabel + " file (corrupt or truncated header)");
-    checkDeclaredGeometry(file, *format);
   } else {
     io = itk::GDCMImageIO::New().GetPointer();
     formatLabel = "DICOM";
+    checkDicomElementLengths(file, file);  // before GDCM allocates what a length field says
     if (!io->CanReadFile(file.c_str()))
       throw InputError(file,
                        "unknown volume format (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, "

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite from a fresh clone: install what is missing, build and run every test in
-# Release, then once more built with AddressSanitizer + UndefinedBehaviorSanitizer.
+# Release, then the libraries' tests once more built with clang's AddressSanitizer +
+# UndefinedBehaviorSanitizer, and a short libFuzzer run of every file reader.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -12,12 +13,20 @@ jobs=$(nproc)
 "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
 ctest --test-dir "$root/build" --output-on-failure -j"$jobs"
 
-# The sanitizer pass covers the libraries' tests (renderer, vessels, CPR, segmentation, loaders,
-# exports), built at -O1 with line tables only, to keep CI within its 30 minutes; the GUI's tests
-# run in Release. Tracing the full-size phantom (PhantomTracing: a 1.3 GB distance map, minutes at
-# -O1 with ASan) runs in Release only; the synthetic tubes take the same code through ASan.
-"$root/scripts/build.sh" "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DANGIORAY_SANITIZE=ON -- core_tests vessel_tests io_tests phantom_tests segment_tests render_tests
+# The sanitizer pass: the libraries' tests (renderer, vessels, CPR, segmentation, loaders,
+# exports) and the file readers' libFuzzer targets, in one clang build with AddressSanitizer +
+# UndefinedBehaviorSanitizer at -O1 with line tables only, to keep CI within its 30 minutes; the
+# GUI's and the command line's tests run in Release. Tracing the full-size phantom (PhantomTracing:
+# a 1.3 GB distance map, minutes at -O1 with ASan) runs in Release only; the synthetic tubes take
+# the same code through ASan.
+sanitized="$root/build-fuzz"
+"$root/scripts/build.sh" "$sanitized" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DANGIORAY_FUZZ=ON \
+  -- core_tests vessel_tests io_tests phantom_tests segment_tests render_tests
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions="$root/tests/ubsan.supp" \
 LSAN_OPTIONS=suppressions="$root/tests/lsan.supp" \
-  ctest --test-dir "$root/build-asan" --output-on-failure -j"$jobs" -E '(gui|cli)_tests_NOT_BUILT|PhantomTracing'
+  ctest --test-dir "$sanitized" --output-on-failure -j"$jobs" -E '(gui|cli)_tests_NOT_BUILT|PhantomTracing'
+
+# Every reader's fuzz target for a short run (scripts/fuzz-long.sh: an hour each).
+"$root/scripts/fuzz.sh" "$sanitized" "${ANGIORAY_CI_FUZZ_SECONDS:-10}"

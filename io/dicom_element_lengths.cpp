@@ -1,0 +1,140 @@
+#include "io/dicom_element_lengths.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include "io/input_error.h"
+
+namespace angio {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The headers before the pixel data lie in the first kilobytes; a multi-frame file's are walked
+// up to here (its pixel data's length is checked against the whole file).
+constexpr std::uint64_t kMaxWalkedBytes = 64 << 20;
+
+struct Syntax {
+  bool explicitVr = true;
+  bool bigEndian = false;
+};
+
+class ElementWalk {
+ public:
+  ElementWalk(const fs::path& reported, const fs::path& file, std::string bytes, std::uint64_t fileSize)
+      : reported_(reported), file_(file), bytes_(std::move(bytes)), fileSize_(fileSize) {}
+
+  bool run() {
+    std::size_t at = 0;
+    if (bytes_.size() >= 132 && bytes_.compare(128, 4, "DICM") == 0) at = 132;
+    if (at + 4 > bytes_.size()) return false;
+    const std::uint16_t firstGroup = read16(at, false);
+    if (at == 0 && firstGroup != 0x0002 && firstGroup != 0x0008) return false;
+    // The file meta group is explicit VR little endian; without it GDCM guesses implicit VR.
+    Syntax syntax{firstGroup == 0x0002 || at == 132, false};
+    std::string transferSyntax;
+    bool inMeta = firstGroup == 0x0002;
+    while (at + 8 <= bytes_.size()) {
+      if (inMeta && read16(at, false) != 0x0002) {
+        inMeta = false;
+        syntax = syntaxOf(transferSyntax);
+        if (transferSyntax.rfind("1.2.840.10008.1.2.1.99", 0) == 0) return true;  // deflated
+      }
+      const Syntax current = inMeta ? Syntax{} : syntax;
+      const std::uint16_t group = read16(at, current.bigEndian);
+      const std::uint16_t element = read16(at + 2, current.bigEndian);
+      std::size_t header = 8;
+      std::uint64_t length = 0;
+      if (group == 0xfffe) {  // item and delimiters: always tag + 4-byte length
+        at += 8;              // an item's contents are walked as elements
+        continue;
+      }
+      if (current.explicitVr) {
+        const std::string vr = bytes_.substr(at + 4, 2);
+        if (!(std::isupper(static_cast<unsigned char>(vr[0])) &&
+              std::isupper(static_cast<unsigned char>(vr[1]))))
+          fail(group, element, "has no valid value representation");
+        if (longForm(vr)) {
+          if (at + 12 > bytes_.size()) fail(group, element, "is cut off");
+          length = read32(at + 8, current.bigEndian);
+          header = 12;
+        } else {
+          length = read16(at + 6, current.bigEndian);
+        }
+        if (vr == "SQ" && length != 0xffffffffu) length = 0;  // walk into a sequence
+      } else {
+        length = read32(at + 4, current.bigEndian);
+      }
+      if (length == 0xffffffffu) {  // undefined: a sequence or encapsulated data, walked into
+        at += header;
+        continue;
+      }
+      const std::uint64_t left = fileSize_ - at - header;
+      if (length > left)
+        fail(group, element,
+             "claims " + std::to_string(length) + " bytes where the file has " + std::to_string(left) +
+                 " left");
+      if (group == 0x0002 && element == 0x0010)
+        transferSyntax = bytes_.substr(at + header, std::min<std::uint64_t>(length, 64));
+      at += header + length;
+    }
+    return true;
+  }
+
+ private:
+  static bool longForm(const std::string& vr) {
+    for (const char* candidate :
+         {"OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV"})
+      if (vr == candidate) return true;
+    return false;
+  }
+  static Syntax syntaxOf(std::string uid) {
+    while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
+    if (uid == "1.2.840.10008.1.2") return {false, false};
+    if (uid == "1.2.840.10008.1.2.2") return {true, true};
+    return {true, false};
+  }
+  std::uint16_t read16(std::size_t at, bool bigEndian) const {
+    const auto b = [&](std::size_t n) {
+      return std::uint16_t(static_cast<unsigned char>(bytes_[at + n]));
+    };
+    return bigEndian ? std::uint16_t(b(0) << 8 | b(1)) : std::uint16_t(b(1) << 8 | b(0));
+  }
+  std::uint32_t read32(std::size_t at, bool bigEndian) const {
+    const std::uint32_t high = read16(at + (bigEndian ? 0 : 2), bigEndian);
+    const std::uint32_t low = read16(at + (bigEndian ? 2 : 0), bigEndian);
+    return high << 16 | low;
+  }
+  [[noreturn]] void fail(std::uint16_t group, std::uint16_t element, const std::string& problem) const {
+    char tag[16];
+    std::snprintf(tag, sizeof tag, "(%04x,%04x)", group, element);
+    const std::string where = reported_ == file_ ? "" : "slice " + file_.filename().string() + ": ";
+    throw InputError(reported_, where + "element " + tag + " " + problem + " (a damaged DICOM file)");
+  }
+
+  const fs::path& reported_;
+  const fs::path& file_;
+  std::string bytes_;       // the file's first kMaxWalkedBytes
+  std::uint64_t fileSize_;  // what the lengths are checked against
+};
+
+}  // namespace
+
+bool checkDicomElementLengths(const fs::path& reported, const fs::path& file) {
+  std::error_code error;
+  const std::uint64_t size = fs::file_size(file, error);
+  std::ifstream in(file, std::ios::binary);
+  if (error || !in) return false;
+  std::string bytes(std::min(size, kMaxWalkedBytes), '\0');
+  in.read(bytes.data(), std::streamsize(bytes.size()));
+  bytes.resize(std::size_t(in.gcount()));
+  return ElementWalk(reported, file, std::move(bytes), size).run();
+}
+
+}  // namespace angio

@@ -1,0 +1,6 @@
+// libFuzzer target: a whole .mhd volume read, its header naming input.raw (io/volume_reader.h readVolume).
+#include "tests/fuzz/fuzz_target.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return angio::fuzz::fuzzTarget("volume_mhd", data, size);
+}
