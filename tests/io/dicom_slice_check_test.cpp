@@ -125,7 +125,10 @@ TEST_F(DicomSliceCheckTest, ZeroRescaleSlopeIsRefused) {
 TEST_F(DicomSliceCheckTest, ATruncatedSliceIsRefused) {
   test_support::truncateBy(series(), 100);
   const std::string message = refusal();
-  EXPECT_NE(message.find("slice IM2-4.dcm: element (7fe0,0010) claims 512 bytes where the file has 412 left"), std::string::npos) << message;
+  EXPECT_NE(
+      message.find("slice IM2-4.dcm: element (7fe0,0010) claims 512 bytes where the file has 412 left"),
+      std::string::npos)
+      << message;
 }
 
 TEST_F(DicomSliceCheckTest, AGantryTiltIsRefusedWithItsAngle) {
