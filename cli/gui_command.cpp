@@ -6,7 +6,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "io/centerline_file.h"
 #include "io/input_error.h"
 #include "phantom/phantom.h"
 #include "gui/app_window.h"
@@ -95,11 +94,6 @@ int runGui(const GuiOptions& options) {
     throw std::runtime_error("--script drives the headless app; add --headless");
   std::optional<std::vector<ScriptStep>> script;
   if (!options.script.empty()) script = loadScript(options.script);
-  // Files named on the command line are read once here, so a bad one stops the start with its
-  // error (files opened later in the app show theirs in the app).
-  if (!options.centerlines.empty()) loadCenterlines(options.centerlines);
-  if (!options.labels.empty() && !std::filesystem::exists(options.labels))
-    throw InputError(options.labels, "label volume does not exist");
   if (!options.headless && !windowSystemAvailable())
     throw std::runtime_error(
         "no display to open a window on (DISPLAY/WAYLAND_DISPLAY unset or "

@@ -77,7 +77,8 @@ std::vector<glm::dvec3> pointsInVolumeFrame(const TraceOptionsCli& options, cons
     if (glm::any(glm::lessThan(points[n], glm::dvec3(0))) ||
         glm::any(glm::greaterThan(points[n], extent)))
       throw std::invalid_argument(std::string(options.points.empty() ? "--voxels" : "--points") +
-                                  ": point " + std::to_string(n + 1) + " lies outside the volume");
+                                  ": point " + std::to_string(n + 1) +
+                                  ": the point lies outside the volume");
   const std::size_t needed = options.downstream ? 1 : 2;
   if (points.size() < needed)
     throw std::invalid_argument(options.downstream ? "--downstream needs one point"

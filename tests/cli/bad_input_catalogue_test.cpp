@@ -125,7 +125,7 @@ const BadInput kFlags[] = {
     {"trace {aorta} --points 1,2 --out {dir}/t.csv", "--points", "1,2"},
     {"trace {aorta} --points 'nan,0,0;1,1,1' --out {dir}/t.csv", "--points", "nan"},
     {"trace {aorta} --voxels '80,60,10;99999,0,0' --out {dir}/t.csv", "--voxels",
-     "point 2 lies outside"},
+     "point 2: the point lies outside"},
     {"trace {aorta} --points '-218,-316,24;-218,-315,25' --tissue-hu nan --out {dir}/t.csv",
      "--tissue-hu", "finite"},
     {"trace {aorta} --points '-218,-316,24;-218,-315,25' --calcium-hu inf --out {dir}/t.csv",
@@ -157,7 +157,6 @@ const BadInput kFlags[] = {
     {"gui {aorta} --headless --tf nope", "nope", "no such preset or file"},
     {"gui {aorta} --headless --script {dir}/missing.json", "missing.json", "cannot"},
     {"gui {aorta} --headless --session {dir}/missing.json", "missing.json", "does not exist"},
-    {"gui {aorta} --headless --centerlines {dir}/missing.vtp", "missing.vtp", "no such file"},
     {"gui {aorta} --headless --screenshot {dir}/missing/s.png", "s.png", "does not exist"},
     {"frobnicate", "frobnicate", "frobnicate"},
 };
