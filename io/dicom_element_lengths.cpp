@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "io/input_error.h"
 
@@ -19,6 +20,7 @@ namespace fs = std::filesystem;
 // The headers before the pixel data lie in the first kilobytes; a multi-frame file's are walked
 // up to here (its pixel data's length is checked against the whole file).
 constexpr std::uint64_t kMaxWalkedBytes = 64 << 20;
+constexpr std::uint64_t kOpen = ~std::uint64_t(0);  // a sequence of undefined length
 
 struct Syntax {
   bool explicitVr = true;
@@ -40,7 +42,10 @@ class ElementWalk {
     Syntax syntax{firstGroup == 0x0002 || at == 132, false};
     std::string transferSyntax;
     bool inMeta = firstGroup == 0x0002;
+    // Where the open sequences end (kOpen: at their delimiter); an item belongs inside one.
+    std::vector<std::uint64_t> open;
     while (at + 8 <= bytes_.size()) {
+      while (!open.empty() && open.back() != kOpen && at >= open.back()) open.pop_back();
       if (inMeta && read16(at, false) != 0x0002) {
         inMeta = false;
         syntax = syntaxOf(transferSyntax);
@@ -52,7 +57,13 @@ class ElementWalk {
       std::size_t header = 8;
       std::uint64_t length = 0;
       if (group == 0xfffe) {  // item and delimiters: always tag + 4-byte length
-        at += 8;              // an item's contents are walked as elements
+        if (open.empty() || (element != 0xe000 && element != 0xe00d && element != 0xe0dd))
+          fail(group, element, "is an item tag outside a sequence");
+        if (element == 0xe0dd) {
+          if (open.back() != kOpen) fail(group, element, "ends a sequence that has a length");
+          open.pop_back();
+        }
+        at += 8;  // an item's contents are walked as elements
         continue;
       }
       if (current.explicitVr) {
@@ -60,6 +71,7 @@ class ElementWalk {
         if (!(std::isupper(static_cast<unsigned char>(vr[0])) &&
               std::isupper(static_cast<unsigned char>(vr[1]))))
           fail(group, element, "has no valid value representation");
+        if (!knownVr(vr)) fail(group, element, "has an unknown value representation");
         if (longForm(vr)) {
           if (at + 12 > bytes_.size()) fail(group, element, "is cut off");
           length = read32(at + 8, current.bigEndian);
@@ -67,11 +79,16 @@ class ElementWalk {
         } else {
           length = read16(at + 6, current.bigEndian);
         }
-        if (vr == "SQ" && length != 0xffffffffu) length = 0;  // walk into a sequence
+        if (vr == "SQ" && length != 0xffffffffu && length <= fileSize_ - at - header) {
+          open.push_back(at + header + length);  // walked into
+          length = 0;
+        }
       } else {
         length = read32(at + 4, current.bigEndian);
       }
       if (length == 0xffffffffu) {  // undefined: a sequence or encapsulated data, walked into
+        if (inMeta) fail(group, element, "has an undefined length in the file meta group");
+        open.push_back(kOpen);
         at += header;
         continue;
       }
@@ -88,6 +105,15 @@ class ElementWalk {
   }
 
  private:
+  static bool knownVr(const std::string& vr) {
+    static constexpr const char* kVrs[] = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL",
+                                           "IS", "LO", "LT", "OB", "OD", "OF", "OL", "OV", "OW",
+                                           "PN", "SH", "SL", "SQ", "SS", "ST", "SV", "TM", "UC",
+                                           "UI", "UL", "UN", "UR", "US", "UT", "UV"};
+    for (const char* candidate : kVrs)
+      if (vr == candidate) return true;
+    return false;
+  }
   static bool longForm(const std::string& vr) {
     for (const char* candidate :
          {"OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV"})
