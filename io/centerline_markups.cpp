@@ -11,6 +11,7 @@
 #include "io/atomic_write.h"
 #include "io/json_text.h"
 #include "io/input_error.h"
+#include "io/quoted_text.h"
 #include "io/lowercase.h"
 
 namespace angio {
@@ -20,24 +21,6 @@ using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
 namespace {
-
-// Text from the file as messages quote it: one line (line breaks and control characters as
-// \n, \xNN), at most 80 characters.
-std::string quotedText(std::string_view text) {
-  std::string shown = "'";
-  for (const char c : text.substr(0, 80)) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n') {
-      shown += "\\n";
-    } else if (byte < 0x20 || byte == 0x7F) {
-      static constexpr char kHex[] = "0123456789ABCDEF";
-      shown += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
-    } else {
-      shown += c;
-    }
-  }
-  return shown + (text.size() > 80 ? "...'" : "'");
-}
 
 std::string stringOr(const Json& object, const char* key, const std::string& fallback) {
   const auto found = object.find(key);
