@@ -1,16 +1,17 @@
-#include "io/dicom_element_lengths.h"
 #include "io/dicom_series.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <itkGDCMImageIO.h>
-#include <itkGDCMSeriesFileNames.h>
 
+#include "io/dicom_file_walk.h"
 #include "io/dicom_slice_check.h"
 #include "io/input_error.h"
 #include "io/volume_conversion.h"
@@ -37,6 +38,14 @@ struct Slice {
   std::vector<Voxel> voxels;
 };
 
+// A UID as the user reads it in a message (it comes from the file: printable characters only).
+std::string shownUid(const std::string& uid) {
+  if (uid.empty()) return "(no SeriesInstanceUID)";
+  std::string shown;
+  for (const char c : uid) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  return shown;
+}
+
 std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 // "12.5", "15.0": two decimals at most, one at least.
@@ -48,27 +57,40 @@ std::string millimetres(double value) {
   return s == "-0.0" ? "0.0" : s;
 }
 
-Series chooseSeries(const std::filesystem::path& folder, const ReadOptions& options) {
-  // GDCM reads every file of the folder to group them; each is walked before it does.
+// The image files of the folder grouped by SeriesInstanceUID alone (a series that mixes
+// orientations or sizes is reported as such later instead of being split silently), from our own
+// walk of every file: GDCM's series scan would read each file whole, and assert on damaged ones.
+// Files that are not DICOM, and DICOM files without pixel data (a DICOMDIR, a report), are skipped.
+std::vector<Series> seriesInFolder(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(folder, error))
-    if (entry.is_regular_file(error)) checkDicomElementLengths(folder, entry.path());
-  auto names = itk::GDCMSeriesFileNames::New();
-  // Group by SeriesInstanceUID alone: a series that mixes orientations or sizes is reported as
-  // such below instead of being split silently.
-  names->SetUseSeriesDetails(false);
-  names->SetDirectory(folder.string());
+    if (entry.is_regular_file(error)) files.push_back(entry.path());
+  if (error) throw InputError(folder, "cannot list the folder: " + error.message());
+  std::sort(files.begin(), files.end());
   std::vector<Series> all;
-  for (const std::string& uid : names->GetSeriesUIDs()) all.push_back({uid, names->GetFileNames(uid)});
+  for (const std::filesystem::path& file : files) {
+    const std::optional<DicomFileFacts> facts = walkDicomFile(folder, file);
+    if (!facts || !facts->hasPixelData) continue;
+    const auto known = std::find_if(
+        all.begin(), all.end(), [&](const Series& series) { return series.uid == facts->seriesUid; });
+    if (known == all.end()) all.push_back({facts->seriesUid, {file.string()}});
+    else known->files.push_back(file.string());
+  }
+  return all;
+}
+
+Series chooseSeries(const std::filesystem::path& folder, const ReadOptions& options) {
+  std::vector<Series> all = seriesInFolder(folder);
   if (all.empty()) throw InputError(folder, "no DICOM series found in the folder");
   std::stable_sort(all.begin(), all.end(),
                    [](const Series& a, const Series& b) { return a.files.size() > b.files.size(); });
   if (all.size() > 1 && options.warn) {
     std::ostringstream text;
     text << folder.string() << ": " << all.size() << " DICOM series in the folder; loading "
-         << all[0].uid << " (" << all[0].files.size() << " slices), ignoring";
+         << shownUid(all[0].uid) << " (" << all[0].files.size() << " slices), ignoring";
     for (std::size_t n = 1; n < all.size(); ++n)
-      text << (n > 1 ? ", " : " ") << all[n].uid << " (" << all[n].files.size() << " slices)";
+      text << (n > 1 ? ", " : " ") << shownUid(all[n].uid) << " (" << all[n].files.size() << " slices)";
     options.warn(text.str());
   }
   return all.front();
@@ -270,7 +292,8 @@ DicomStack readDicomSeries(const std::filesystem::path& folder, const ReadOption
                 stack.voxels.begin() + k * sliceVoxels);
       std::vector<Voxel>().swap(slices[k].voxels);  // give the memory back as we go
     }
-    stack.description = "DICOM series " + series.uid + " (" + std::to_string(slices.size()) + " slices)";
+    stack.description =
+        "DICOM series " + shownUid(series.uid) + " (" + std::to_string(slices.size()) + " slices)";
     return stack;
   } catch (const itk::ExceptionObject& error) {
     throw InputError(folder, "cannot read the DICOM series: " + oneLine(error));

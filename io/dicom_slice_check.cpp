@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gdcmAttribute.h>
+#include <gdcmMediaStorage.h>
 #include <gdcmReader.h>
 
 #include "io/input_error.h"
@@ -119,6 +120,42 @@ void checkImagePixelModule(const gdcm::DataSet& data, const SliceProblem& proble
   tags.rows = *rows;
   tags.columns = *columns;
   tags.bitsAllocated = *bits;
+}
+
+std::string trimmed(std::string text) {
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\0')) text.pop_back();
+  return text;
+}
+
+// What GDCM's image reader takes without asserting. It reads a file without a meta header as
+// ACR-NEMA and one of an unknown SOP class by guessing, both with assertions on the tags it finds;
+// it asserts on palette colour tables, on an icon image without a PhotometricInterpretation and on
+// curve and overlay groups it cannot count. CT slices have none of these; a slice that does is
+// refused here, before ITK hands it to that reader.
+void checkReadableImage(const gdcm::File& file, const SliceProblem& problem) {
+  const gdcm::DataSet& data = file.GetDataSet();
+  if (file.GetHeader().IsEmpty())
+    problem.fail(
+        "has no DICOM file meta header (an ACR-NEMA file or a bare data set), which is not read");
+  std::optional<std::string> sopClass = valueBytes(file.GetHeader(), gdcm::Tag(0x0002, 0x0002));
+  if (!sopClass) sopClass = valueBytes(data, gdcm::Tag(0x0008, 0x0016));
+  const std::string uid = trimmed(sopClass.value_or(""));
+  if (!gdcm::MediaStorage::IsImage(gdcm::MediaStorage::GetMSType(uid.c_str())))
+    problem.fail("is not an image (SOP class '" + uid.substr(0, 64) + "')");
+  if (const auto photometric = valueBytes(data, gdcm::Tag(0x0028, 0x0004))) {
+    const std::string name = trimmed(*photometric);
+    if (name != "MONOCHROME1" && name != "MONOCHROME2")
+      problem.fail("has PhotometricInterpretation (0028,0004) '" + name.substr(0, 16) +
+                   "'; need greyscale CT (MONOCHROME1 or MONOCHROME2)");
+  }
+  if (data.FindDataElement(gdcm::Tag(0x0088, 0x0200)))
+    problem.fail("has an icon image sequence (0088,0200), which is not read");
+  for (const std::uint16_t first : {std::uint16_t(0x5000), std::uint16_t(0x6000)}) {
+    const gdcm::DataElement& next = data.FindNextDataElement(gdcm::Tag(first, 0x0000));
+    if (next.GetTag().GetGroup() >= first && next.GetTag().GetGroup() <= first + 0xff)
+      problem.fail(first == 0x5000 ? "has curve data (50xx), which is not read"
+                                   : "has an overlay (60xx), which is not read");
+  }
 }
 
 void checkRescale(const gdcm::DataSet& data, const SliceProblem& problem) {
@@ -242,6 +279,7 @@ DicomSliceTags checkDicomSlice(const fs::path& reported, const fs::path& slice, 
   if (!reader.ReadUpToTag(kPixelData, {kPixelData})) problem.fail("is not a readable DICOM file");
   const gdcm::DataSet& data = reader.GetFile().GetDataSet();
   DicomSliceTags tags;
+  checkReadableImage(reader.GetFile(), problem);
   checkImagePixelModule(data, problem, tags);
   checkRescale(data, problem);
   checkPlacement(data, problem, requirePlacement, tags);

@@ -16,7 +16,7 @@
 
 #include "io/dicom_series.h"
 #include "io/declared_geometry.h"
-#include "io/dicom_element_lengths.h"
+#include "io/dicom_file_walk.h"
 #include "io/dicom_slice_check.h"
 #include "io/input_error.h"
 #include "io/library_messages.h"
@@ -80,12 +80,14 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
   } else {
     io = itk::GDCMImageIO::New().GetPointer();
     formatLabel = "DICOM";
-    checkDicomElementLengths(file, file);  // before GDCM allocates what a length field says
-    if (!io->CanReadFile(file.c_str()))
+    // Before GDCM sees the file: it takes almost anything for DICOM and trusts its length fields,
+    // and its image reader (CanReadFile reads the image) asserts on some tags' values.
+    if (!walkDicomFile(file, file))
       throw InputError(file,
                        "unknown volume format (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, "
                        ".mhd or a folder of DICOM slices)");
-    checkDicomSlice(file, file, false);  // before GDCM sees a tag it would assert on
+    checkDicomSlice(file, file, false);
+    if (!io->CanReadFile(file.c_str())) throw InputError(file, "is not a DICOM image GDCM can read");
   }
   io->SetFileName(file.string());
   io->ReadImageInformation();

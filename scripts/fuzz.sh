@@ -83,8 +83,8 @@ fuzz_target() {
       "$corpus" "$seeds/$target" >"$log.run" 2>&1 || status=$?
     # The executions: the final stats, or after a crash the last status line ("#1234 ...").
     local ran
-    ran=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log.run" | tail -1 | grep -o '[0-9]*$' || true)
-    [[ -z $ran ]] && ran=$(grep -oE '^#[0-9]+' "$log.run" | tail -1 | tr -d '#' || true)
+    ran=$(grep -ao 'stat::number_of_executed_units: [0-9]*' "$log.run" | tail -1 | grep -o '[0-9]*$' || true)
+    [[ -z $ran ]] && ran=$(grep -aoE '^#[0-9]+' "$log.run" | tail -1 | tr -d '#' || true)
     executions=$((executions + ${ran:-0}))
     cat "$log.run" >>"$log" && rm "$log.run"
     echo "--- end of run (exit $status) ---" >>"$log"
@@ -126,7 +126,7 @@ for target in "${targets[@]}"; do
   elif ((findings > 0)); then
     failed=1
     for artifact in "$build_dir/artifacts/$target"/*; do echo "  $artifact"; done
-    grep -m3 -E 'ERROR: |SUMMARY: |fuzz_[a-z_]+: ' "$build_dir/logs/$target.log" | sed 's/^/  /' || true
+    grep -a -m3 -E 'ERROR: |SUMMARY: |fuzz_[a-z_]+: ' "$build_dir/logs/$target.log" | sed 's/^/  /' || true
   fi
 done
 echo "fuzz: build $((built - started)) s, seeds and runs $(($(date +%s) - built)) s, logs in $build_dir/logs"

@@ -1,4 +1,4 @@
-#include "io/dicom_element_lengths.h"
+#include "io/dicom_file_walk.h"
 
 #include <algorithm>
 #include <cctype>
@@ -32,12 +32,12 @@ class ElementWalk {
   ElementWalk(const fs::path& reported, const fs::path& file, std::string bytes, std::uint64_t fileSize)
       : reported_(reported), file_(file), bytes_(std::move(bytes)), fileSize_(fileSize) {}
 
-  bool run() {
+  std::optional<DicomFileFacts> run() {
     std::size_t at = 0;
     if (bytes_.size() >= 132 && bytes_.compare(128, 4, "DICM") == 0) at = 132;
-    if (at + 4 > bytes_.size()) return false;
+    if (at + 4 > bytes_.size()) return std::nullopt;
     const std::uint16_t firstGroup = read16(at, false);
-    if (at == 0 && firstGroup != 0x0002 && firstGroup != 0x0008) return false;
+    if (at == 0 && firstGroup != 0x0002 && firstGroup != 0x0008) return std::nullopt;
     // The file meta group is explicit VR little endian; without it GDCM guesses implicit VR.
     Syntax syntax{firstGroup == 0x0002 || at == 132, false};
     std::string transferSyntax;
@@ -49,7 +49,9 @@ class ElementWalk {
       if (inMeta && read16(at, false) != 0x0002) {
         inMeta = false;
         syntax = syntaxOf(transferSyntax);
-        if (transferSyntax.rfind("1.2.840.10008.1.2.1.99", 0) == 0) return true;  // deflated
+        if (transferSyntax.rfind("1.2.840.10008.1.2.1.99", 0) == 0)  // the data set is zlib data
+          failFile("its data set is deflated (transfer syntax " + transferSyntax +
+                   "), which is not read; store it uncompressed");
       }
       const Syntax current = inMeta ? Syntax{} : syntax;
       const std::uint16_t group = read16(at, current.bigEndian);
@@ -79,6 +81,7 @@ class ElementWalk {
         } else {
           length = read16(at + 6, current.bigEndian);
         }
+        if (vr == "SQ" && inMeta) fail(group, element, "is a sequence in the file meta group");
         if (vr == "SQ" && length != 0xffffffffu && length <= fileSize_ - at - header) {
           open.push_back(at + header + length);  // walked into
           length = 0;
@@ -97,14 +100,35 @@ class ElementWalk {
         fail(group, element,
              "claims " + std::to_string(length) + " bytes where the file has " + std::to_string(left) +
                  " left");
-      if (group == 0x0002 && element == 0x0010)
-        transferSyntax = bytes_.substr(at + header, std::min<std::uint64_t>(length, 64));
+      if (group == 0x0002 && element == 0x0010) transferSyntax = value(at + header, length);
+      if (open.empty()) noteTopLevel(group, element, at + header, length);
       at += header + length;
     }
-    return true;
+    requireWholeElements(at, inMeta);
+    return facts_;
   }
 
  private:
+  // The walk stopped less than a header before the end: GDCM asserts on a file that ends inside its
+  // meta group (it reads on for the first data set element) or inside an element header.
+  void requireWholeElements(std::uint64_t at, bool inMeta) const {
+    if (bytes_.size() < fileSize_) return;  // only the first kMaxWalkedBytes were walked
+    if (inMeta) failFile("the file ends inside its file meta group");
+    if (at < fileSize_)
+      failFile("the file ends " + std::to_string(fileSize_ - at) + " bytes into an element header");
+  }
+  void noteTopLevel(std::uint16_t group, std::uint16_t element, std::uint64_t valueAt,
+                    std::uint64_t length) {
+    if (group == 0x0020 && element == 0x000e) facts_.seriesUid = value(valueAt, length);
+    if (group == 0x7fe0 && element == 0x0010) facts_.hasPixelData = true;
+  }
+  // A short text value (a UID), without its padding; cut at 64 bytes, a UID's most.
+  std::string value(std::uint64_t at, std::uint64_t length) const {
+    if (at >= bytes_.size()) return "";
+    std::string text = bytes_.substr(at, std::min<std::uint64_t>(length, 64));
+    while (!text.empty() && (text.back() == '\0' || text.back() == ' ')) text.pop_back();
+    return text;
+  }
   static bool knownVr(const std::string& vr) {
     static constexpr const char* kVrs[] = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL",
                                            "IS", "LO", "LT", "OB", "OD", "OF", "OL", "OV", "OW",
@@ -120,8 +144,7 @@ class ElementWalk {
       if (vr == candidate) return true;
     return false;
   }
-  static Syntax syntaxOf(std::string uid) {
-    while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' ')) uid.pop_back();
+  static Syntax syntaxOf(const std::string& uid) {
     if (uid == "1.2.840.10008.1.2") return {false, false};
     if (uid == "1.2.840.10008.1.2.2") return {true, true};
     return {true, false};
@@ -140,23 +163,27 @@ class ElementWalk {
   [[noreturn]] void fail(std::uint16_t group, std::uint16_t element, const std::string& problem) const {
     char tag[16];
     std::snprintf(tag, sizeof tag, "(%04x,%04x)", group, element);
+    failFile(std::string("element ") + tag + " " + problem);
+  }
+  [[noreturn]] void failFile(const std::string& problem) const {
     const std::string where = reported_ == file_ ? "" : "slice " + file_.filename().string() + ": ";
-    throw InputError(reported_, where + "element " + tag + " " + problem + " (a damaged DICOM file)");
+    throw InputError(reported_, where + problem + " (a damaged DICOM file)");
   }
 
   const fs::path& reported_;
   const fs::path& file_;
   std::string bytes_;       // the file's first kMaxWalkedBytes
   std::uint64_t fileSize_;  // what the lengths are checked against
+  DicomFileFacts facts_;
 };
 
 }  // namespace
 
-bool checkDicomElementLengths(const fs::path& reported, const fs::path& file) {
+std::optional<DicomFileFacts> walkDicomFile(const fs::path& reported, const fs::path& file) {
   std::error_code error;
   const std::uint64_t size = fs::file_size(file, error);
   std::ifstream in(file, std::ios::binary);
-  if (error || !in) return false;
+  if (error || !in) return std::nullopt;
   std::string bytes(std::min(size, kMaxWalkedBytes), '\0');
   in.read(bytes.data(), std::streamsize(bytes.size()));
   bytes.resize(std::size_t(in.gcount()));
