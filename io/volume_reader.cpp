@@ -156,15 +156,12 @@ void readAllThroughItk(itk::ImageIOBase& io, char* out) {
 // progress and without a way to stop, so those whose data io/ can decode itself are read here in
 // slabs of slices, reporting progress (0.05 to 0.6) between slabs. Every other file, and one whose
 // data turns out bad, is read by ITK: its values and its errors stay ITK's.
-void readVoxels(const std::filesystem::path& file, itk::ImageIOBase& io, const VolumeGeometry& geometry,
-                char* out, const ReadOptions& options) {
-  const auto format = volumeFormatOf(file);
-  const StoredDataSize size{std::uint64_t(io.GetImageSizeInBytes()), unsigned(io.GetComponentSize())};
-  const auto layout = format ? voxelDataLayout(file, *format, size) : std::nullopt;
+void readVoxels(itk::ImageIOBase& io, const std::optional<VoxelDataLayout>& layout,
+                const VolumeGeometry& geometry, char* out, const ReadOptions& options) {
   if (layout) {
     const std::uint64_t slices = std::uint64_t(geometry.dims.z);
     try {
-      readVoxelSlabs(*layout, {size.voxelBytes / slices, slices}, out,
+      readVoxelSlabs(*layout, {std::uint64_t(io.GetImageSizeInBytes()) / slices, slices}, out,
                      [&](double fraction) { report(options, 0.05 + 0.55 * fraction); });
       return;
     } catch (const VoxelStreamError&) {
@@ -174,35 +171,72 @@ void readVoxels(const std::filesystem::path& file, itk::ImageIOBase& io, const V
   readAllThroughItk(io, out);
 }
 
-// Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will
-// allocate on top of the raw data, for the memory check made before anything is allocated.
-StoredVolume readStoredVolume(const std::filesystem::path& file, double extraBytesPerVoxel,
-                              const ReadOptions& options) {
+// A volume file with its header read and checked, and no voxels read yet.
+struct OpenedVolume {
+  itk::ImageIOBase::Pointer io;
+  VolumeGeometry geometry;
+  itk::IOComponentEnum componentType = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
+  std::string description;  // "MetaImage float32"
+  // Where the voxel bytes lie, when io/ decodes them itself (voxel_data_layout.h).
+  std::optional<VoxelDataLayout> layout;
+
+  std::uint64_t storedBytes() const { return std::uint64_t(io->GetImageSizeInBytes()); }
+};
+
+// ITK's and the header checks' errors as InputErrors naming the file.
+template <class Read>
+auto namingFile(const std::filesystem::path& file, Read read) {
   try {
-    std::string formatLabel;
-    const itk::ImageIOBase::Pointer io = openHeader(file, formatLabel);
-    StoredVolume stored;
-    stored.geometry = storedGeometry(file, *io, formatLabel);
-    stored.componentType = io->GetComponentType();
-    stored.description = formatLabel + " " + componentTypeName(stored.componentType);
-    withComponentType(stored.componentType, [](auto) { return 0; });  // rejects unusual types
-    if (const auto format = volumeFormatOf(file))
-      requireCompleteData(file, *format, io->GetImageSizeInBytes());
-    const glm::dvec3 dims(stored.geometry.dims);
-    const double voxels = dims.x * dims.y * dims.z;
-    const double rawBytes = double(io->GetImageSizeInBytes());
-    requireMemory(file, dims, rawBytes + voxels * extraBytesPerVoxel);
-    report(options, 0.05);
-    stored.data = std::make_unique_for_overwrite<double[]>(
-        (io->GetImageSizeInBytes() + sizeof(double) - 1) / sizeof(double));
-    readVoxels(file, *io, stored.geometry, reinterpret_cast<char*>(stored.data.get()), options);
-    report(options, 0.6);
-    return stored;
+    return read();
   } catch (const itk::ExceptionObject& error) {
     throw InputError(file, "cannot be read: " + oneLine(error));
   } catch (const std::invalid_argument& error) {
     throw InputError(file, error.what());
   }
+}
+
+OpenedVolume openVolume(const std::filesystem::path& file) {
+  OpenedVolume opened;
+  std::string formatLabel;
+  opened.io = openHeader(file, formatLabel);
+  opened.geometry = storedGeometry(file, *opened.io, formatLabel);
+  opened.componentType = opened.io->GetComponentType();
+  opened.description = formatLabel + " " + componentTypeName(opened.componentType);
+  withComponentType(opened.componentType, [](auto) { return 0; });  // rejects unusual types
+  if (const auto format = volumeFormatOf(file)) {
+    requireCompleteData(file, *format, opened.storedBytes());
+    opened.layout =
+        voxelDataLayout(file, *format, {opened.storedBytes(), unsigned(opened.io->GetComponentSize())});
+  }
+  return opened;
+}
+
+// Checks the machine can hold `bytesPerVoxel` per voxel plus `extraBytes`, before allocating.
+void requireMemoryFor(const std::filesystem::path& file, const OpenedVolume& opened,
+                      double bytesPerVoxel, double extraBytes) {
+  const glm::dvec3 dims(opened.geometry.dims);
+  requireMemory(file, dims, dims.x * dims.y * dims.z * bytesPerVoxel + extraBytes);
+}
+
+// Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will
+// allocate on top of the raw data, for the memory check made before anything is allocated.
+StoredVolume readStoredVolume(const std::filesystem::path& file, double extraBytesPerVoxel,
+                              const ReadOptions& options) {
+  return namingFile(file, [&] {
+    const OpenedVolume opened = openVolume(file);
+    requireMemoryFor(file, opened, extraBytesPerVoxel, double(opened.storedBytes()));
+    report(options, 0.05);
+    StoredVolume stored;
+    stored.geometry = opened.geometry;
+    stored.componentType = opened.componentType;
+    stored.description = opened.description;
+    stored.data = std::make_unique_for_overwrite<double[]>((opened.storedBytes() + sizeof(double) - 1) /
+                                                           sizeof(double));
+    readVoxels(*opened.io, opened.layout, stored.geometry, reinterpret_cast<char*>(stored.data.get()),
+               options);
+    report(options, 0.6);
+    return stored;
+  });
 }
 
 Reorientation planFor(const std::filesystem::path& file, const VolumeGeometry& geometry) {
@@ -234,20 +268,62 @@ Volume volumeOn(const VolumeGeometry& geometry, std::vector<Voxel> voxels = {}) 
   return volume;
 }
 
+void warnNonFinite(const std::filesystem::path& file, std::size_t nonFinite,
+                   const ReadOptions& options) {
+  if (nonFinite > 0)
+    warn(options, file.string() + ": " + std::to_string(nonFinite) +
+                      " voxels are NaN or infinite; treated as -1024 HU");
+}
+
+// The voxels read slab by slab straight into the volume (converted and reoriented per slab): the
+// file's stored voxels are never all in memory, so a load peaks at the volume plus one slab.
+// Returns the non-finite count, or nothing if the data turned out bad (ITK then reads the file).
+std::optional<std::size_t> streamIntoVolume(const OpenedVolume& opened, const Reorientation& plan,
+                                            Volume& volume, const ReadOptions& options) {
+  const glm::ivec3 dims = opened.geometry.dims;
+  const std::uint64_t sliceBytes = opened.storedBytes() / std::uint64_t(dims.z);
+  std::size_t nonFinite = 0;
+  try {
+    streamVoxelSlabs(
+        *opened.layout, {sliceBytes, std::uint64_t(dims.z)},
+        [&](const VoxelSlab& slab) {
+          nonFinite += withComponentType(opened.componentType, [&](auto type) {
+            using T = typename decltype(type)::type;
+            return reorientSlab(reinterpret_cast<const T*>(slab.bytes), dims, int(slab.firstSlice),
+                                int(slab.sliceCount), plan, volume.voxels.data(), HuToVoxels{});
+          });
+        },
+        [&](double fraction) { report(options, 0.05 + 0.9 * fraction); });
+  } catch (const VoxelStreamError&) {
+    return std::nullopt;
+  }
+  return nonFinite;
+}
+
 Volume volumeFromFile(const std::filesystem::path& file, const ReadOptions& options,
                       std::string& description) {
-  const StoredVolume stored = readStoredVolume(file, sizeof(Voxel), options);
-  const Reorientation plan = planFor(file, stored.geometry);
+  const OpenedVolume opened = namingFile(file, [&] { return openVolume(file); });
+  const Reorientation plan = planFor(file, opened.geometry);
   warnIfOblique(file, plan, options);
+  if (opened.layout) {
+    // The volume and one slab (1 % of the stored data, see voxel_slab_reader.h).
+    requireMemoryFor(file, opened, sizeof(Voxel), 0.02 * double(opened.storedBytes()));
+    report(options, 0.05);
+    Volume volume = volumeOn(reorientedGeometry(opened.geometry, plan));
+    if (const auto nonFinite = streamIntoVolume(opened, plan, volume, options)) {
+      warnNonFinite(file, *nonFinite, options);
+      description = opened.description;
+      return volume;
+    }
+  }
+  const StoredVolume stored = readStoredVolume(file, sizeof(Voxel), options);
   Volume volume = volumeOn(reorientedGeometry(stored.geometry, plan));
   const std::size_t nonFinite = withComponentType(stored.componentType, [&](auto type) {
     using T = typename decltype(type)::type;
     return reorientCopy(reinterpret_cast<const T*>(stored.data.get()), stored.geometry.dims, plan,
                         volume.voxels.data(), HuToVoxels{});
   });
-  if (nonFinite > 0)
-    warn(options, file.string() + ": " + std::to_string(nonFinite) +
-                      " voxels are NaN or infinite; treated as -1024 HU");
+  warnNonFinite(file, nonFinite, options);
   description = stored.description;
   return volume;
 }
@@ -266,9 +342,7 @@ Volume volumeFromDicom(const std::filesystem::path& folder, const ReadOptions& o
   } else {
     volume = volumeOn(geometry, std::move(stack.voxels));
   }
-  if (stack.nonFinite > 0)
-    warn(options, folder.string() + ": " + std::to_string(stack.nonFinite) +
-                      " voxels are NaN or infinite; treated as -1024 HU");
+  warnNonFinite(folder, stack.nonFinite, options);
   description = stack.description;
   study = stack.study;
   return volume;

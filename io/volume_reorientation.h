@@ -36,36 +36,57 @@ Reorientation planReorientation(const glm::dmat3& direction);
 // the new voxel (0, 0, 0), direction = the residual rotation (exactly identity if within 1e-6).
 VolumeGeometry reorientedGeometry(const VolumeGeometry& stored, const Reorientation& plan);
 
-// Copies a stored voxel array (i fastest) into reoriented order. For each output row,
-// convertRow(const Source* first, std::ptrdiff_t step, int count, Target* out) reads `count`
-// source values `step` apart and returns how many it had to reject (e.g. NaN); the sum is returned.
+// Copies the stored slices [firstSlice, firstSlice + sliceCount) (stored k) of a stored voxel
+// array (i fastest), given as `slab` holding just those slices, into their places in the
+// reoriented array `target` (the whole volume). A volume can so be read slab by slab without ever
+// holding all of its stored voxels. For each output row (or the part of it the slab holds),
+// convertRow(const Source* first, std::ptrdiff_t step, int count, Target* out) reads `count` source
+// values `step` apart and returns how many it had to reject (e.g. NaN); the sum is returned.
 template <class Source, class Target, class ConvertRow>
-std::size_t reorientCopy(const Source* source, glm::ivec3 storedDims, const Reorientation& plan,
-                         Target* target, ConvertRow convertRow) {
+std::size_t reorientSlab(const Source* slab, glm::ivec3 storedDims, int firstSlice, int sliceCount,
+                         const Reorientation& plan, Target* target, ConvertRow convertRow) {
   const std::array<std::ptrdiff_t, 3> storedStride{1, std::ptrdiff_t(storedDims.x),
                                                    std::ptrdiff_t(storedDims.x) * storedDims.y};
-  // Source offset of new voxel (0,0,0), and the source step along each new axis.
-  std::ptrdiff_t start = 0;
+  // Source offset (from the slab's first voxel) of new voxel (0,0,0), the source step along each
+  // new axis, and the new voxels the slab holds: [lo, hi) along each new axis.
+  std::ptrdiff_t start = -std::ptrdiff_t(firstSlice) * storedStride[2];
   std::array<std::ptrdiff_t, 3> step{};
-  glm::ivec3 dims;
+  glm::ivec3 dims, lo(0), hi;
   for (int axis = 0; axis < 3; ++axis) {
     const int from = plan.sourceAxis[axis];
     dims[axis] = storedDims[from];
     step[axis] = plan.flipped[axis] ? -storedStride[from] : storedStride[from];
     if (plan.flipped[axis]) start += (storedDims[from] - 1) * storedStride[from];
+    lo[axis] = 0;
+    hi[axis] = dims[axis];
+    if (from == 2) {
+      const int last = firstSlice + sliceCount;  // stored slices [firstSlice, last)
+      lo[axis] = plan.flipped[axis] ? dims[axis] - last : firstSlice;
+      hi[axis] = plan.flipped[axis] ? dims[axis] - firstSlice : last;
+    }
   }
-  const std::ptrdiff_t rows = std::ptrdiff_t(dims.y) * dims.z;
+  const std::ptrdiff_t rowsJ = hi.y - lo.y, rows = rowsJ * (hi.z - lo.z);
   return tbb::parallel_reduce(
       tbb::blocked_range<std::ptrdiff_t>(0, rows, 64), std::size_t{0},
       [&](const tbb::blocked_range<std::ptrdiff_t>& range, std::size_t rejected) {
         for (std::ptrdiff_t row = range.begin(); row != range.end(); ++row) {
-          const std::ptrdiff_t j = row % dims.y, k = row / dims.y;
-          const Source* first = source + start + j * step[1] + k * step[2];
-          rejected += convertRow(first, step[0], dims.x, target + row * dims.x);
+          const std::ptrdiff_t j = lo.y + row % rowsJ, k = lo.z + row / rowsJ;
+          // The offset is summed first: partial sums may point outside the slab.
+          const std::ptrdiff_t offset = start + lo.x * step[0] + j * step[1] + k * step[2];
+          const Source* first = slab + offset;
+          Target* out = target + (k * dims.y + j) * std::ptrdiff_t(dims.x) + lo.x;
+          rejected += convertRow(first, step[0], hi.x - lo.x, out);
         }
         return rejected;
       },
       [](std::size_t a, std::size_t b) { return a + b; });
+}
+
+// The same for the whole stored array at once.
+template <class Source, class Target, class ConvertRow>
+std::size_t reorientCopy(const Source* source, glm::ivec3 storedDims, const Reorientation& plan,
+                         Target* target, ConvertRow convertRow) {
+  return reorientSlab(source, storedDims, 0, storedDims.z, plan, target, convertRow);
 }
 
 }  // namespace angio

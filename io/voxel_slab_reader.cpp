@@ -96,20 +96,51 @@ class DecodedBytes {
   std::vector<Bytef> input_;
 };
 
+// About 1 % of the volume per slab (whole slices).
+std::uint64_t slicesPerSlab(const SlabbedVoxels& voxels) {
+  return std::max<std::uint64_t>(1, (voxels.slices + kSlabsPerVolume - 1) / kSlabsPerVolume);
+}
+
+// Reads the slabs in order, each into the buffer `into(first, count)` gives, calling done(first,
+// count) after it and betweenSlabs between slabs.
+template <class Into, class Done>
+void readSlabs(const VoxelDataLayout& layout, const SlabbedVoxels& voxels, Into into, Done done,
+               const std::function<void(double)>& betweenSlabs) {
+  DecodedBytes bytes(layout);
+  bytes.skip(layout.skipBytes);
+  const std::uint64_t slabSlices = slicesPerSlab(voxels);
+  for (std::uint64_t first = 0; first < voxels.slices; first += slabSlices) {
+    const std::uint64_t count = std::min(slabSlices, voxels.slices - first);
+    bytes.read(into(first, count), count * voxels.sliceBytes);
+    done(first, count);
+    const std::uint64_t read = first + count;
+    if (read < voxels.slices && betweenSlabs) betweenSlabs(double(read) / double(voxels.slices));
+  }
+}
+
 }  // namespace
 
 void readVoxelSlabs(const VoxelDataLayout& layout, const SlabbedVoxels& voxels, char* out,
                     const std::function<void(double)>& betweenSlabs) {
-  DecodedBytes bytes(layout);
-  bytes.skip(layout.skipBytes);
-  const std::uint64_t slabSlices =
-      std::max<std::uint64_t>(1, (voxels.slices + kSlabsPerVolume - 1) / kSlabsPerVolume);
-  for (std::uint64_t first = 0; first < voxels.slices; first += slabSlices) {
-    const std::uint64_t count = std::min(slabSlices, voxels.slices - first);
-    bytes.read(out + first * voxels.sliceBytes, count * voxels.sliceBytes);
-    const std::uint64_t done = first + count;
-    if (done < voxels.slices && betweenSlabs) betweenSlabs(double(done) / double(voxels.slices));
-  }
+  readSlabs(
+      layout, voxels,
+      [&](std::uint64_t first, std::uint64_t) { return out + first * voxels.sliceBytes; },
+      [](std::uint64_t, std::uint64_t) {}, betweenSlabs);
+}
+
+void streamVoxelSlabs(const VoxelDataLayout& layout, const SlabbedVoxels& voxels,
+                      const std::function<void(const VoxelSlab&)>& visit,
+                      const std::function<void(double)>& betweenSlabs) {
+  // double storage: aligned for every component type.
+  const std::uint64_t slabBytes = slicesPerSlab(voxels) * voxels.sliceBytes;
+  const auto buffer = std::make_unique_for_overwrite<double[]>((slabBytes + 7) / 8);
+  char* bytes = reinterpret_cast<char*>(buffer.get());
+  readSlabs(
+      layout, voxels, [&](std::uint64_t, std::uint64_t) { return bytes; },
+      [&](std::uint64_t first, std::uint64_t count) {
+        visit({bytes, first, count});
+      },
+      betweenSlabs);
 }
 
 }  // namespace angio

@@ -26,4 +26,18 @@ struct SlabbedVoxels {
 void readVoxelSlabs(const VoxelDataLayout& layout, const SlabbedVoxels& voxels, char* out,
                     const std::function<void(double)>& betweenSlabs);
 
+// One slab of whole slices, in a buffer the reader reuses for the next one.
+struct VoxelSlab {
+  const char* bytes = nullptr;  // sliceBytes * sliceCount bytes, aligned for any component type
+  std::uint64_t firstSlice = 0;
+  std::uint64_t sliceCount = 0;
+};
+
+// The same read without the whole volume's bytes in memory: visit(slab) is called for each slab in
+// order (the caller converts it into its own array), then betweenSlabs as above. Holds one slab,
+// about 1 % of the volume.
+void streamVoxelSlabs(const VoxelDataLayout& layout, const SlabbedVoxels& voxels,
+                      const std::function<void(const VoxelSlab&)>& visit,
+                      const std::function<void(double)>& betweenSlabs);
+
 }  // namespace angio
