@@ -1,6 +1,7 @@
 #include "io/dicom_series.h"
 
 #include <algorithm>
+#include <functional>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -27,15 +28,11 @@ struct Series {
   std::vector<std::string> files;
 };
 
-// One slice read in full: where it sits and its pixels, already encoded.
+// One slice's header: where it sits (from checkDicomSlice, before any pixel is read).
 struct Slice {
   std::string file;
-  glm::dvec3 position{0.0};          // ImagePositionPatient: centre of the first voxel (mm, LPS)
-  glm::dvec3 row{0.0}, column{0.0};  // ImageOrientationPatient
-  glm::dvec2 pixelSpacing{1.0};      // mm along row, column
-  int rows = 0, columns = 0;
+  DicomSliceTags tags;
   double along = 0.0;  // position along the slice normal
-  std::vector<Voxel> voxels;
 };
 
 // A UID as the user reads it in a message (it comes from the file: printable characters only).
@@ -101,10 +98,6 @@ itk::GDCMImageIO::Pointer readSliceHeader(const std::filesystem::path& folder, c
   auto io = itk::GDCMImageIO::New();
   io->SetFileName(file);
   io->ReadImageInformation();
-  std::string value;
-  if (!io->GetValueFromTag("0020|0032", value) || !io->GetValueFromTag("0020|0037", value))
-    throw InputError(folder,
-                     "slice " + fileName(file) + " has no ImagePositionPatient/ImageOrientationPatient");
   if (io->GetNumberOfComponents() != 1)
     throw InputError(folder, "slice " + fileName(file) + " is not greyscale; need CT slices");
   if (io->GetDimensions(2) != 1)
@@ -123,34 +116,24 @@ StudyInfo studyOf(itk::GDCMImageIO& io) {
           tag("0008|103e"), tag("0008|0060")};
 }
 
-// Reads a slice's header and pixels (rescale slope/intercept applied by GDCM) as encoded voxels;
-// counts NaN/Inf pixel values (float pixel data) into `nonFinite`.
-Slice readSlice(const std::filesystem::path& folder, const std::string& file,
-                std::vector<double>& scratch, std::size_t& nonFinite) {
+// Reads a slice's pixels (rescale slope/intercept applied by GDCM) as encoded voxels into `out`
+// (columns x rows of them); returns the NaN/Inf pixel values (float pixel data) it met.
+std::size_t readSlicePixels(const std::filesystem::path& folder, const std::string& file,
+                            glm::ivec2 size, std::vector<double>& scratch, Voxel* out) {
   const itk::GDCMImageIO::Pointer io = readSliceHeader(folder, file);
-  Slice slice;
-  slice.file = file;
-  slice.columns = int(io->GetDimensions(0));
-  slice.rows = int(io->GetDimensions(1));
-  slice.pixelSpacing = {io->GetSpacing(0), io->GetSpacing(1)};
-  for (int axis = 0; axis < 3; ++axis) {
-    slice.position[axis] = io->GetOrigin(axis);
-    slice.row[axis] = io->GetDirection(0)[axis];
-    slice.column[axis] = io->GetDirection(1)[axis];
-  }
+  if (int(io->GetDimensions(0)) != size.x || int(io->GetDimensions(1)) != size.y)
+    throw InputError(folder, "slice " + fileName(file) + " changed while it was read");
   scratch.resize((io->GetImageSizeInBytes() + sizeof(double) - 1) / sizeof(double));
   io->Read(scratch.data());
-  slice.voxels.resize(std::size_t(slice.columns) * slice.rows);
-  nonFinite += withComponentType(io->GetComponentType(), [&](auto type) {
+  const int voxels = size.x * size.y;
+  return withComponentType(io->GetComponentType(), [&](auto type) {
     using T = typename decltype(type)::type;
-    return HuToVoxels{}(reinterpret_cast<const T*>(scratch.data()), 1, int(slice.voxels.size()),
-                        slice.voxels.data());
+    return HuToVoxels{}(reinterpret_cast<const T*>(scratch.data()), 1, voxels, out);
   });
-  return slice;
 }
 
 glm::dvec3 sliceNormal(const std::filesystem::path& folder, const Slice& slice) {
-  const glm::dvec3 normal = glm::cross(slice.row, slice.column);
+  const glm::dvec3 normal = glm::cross(slice.tags.row, slice.tags.column);
   const double length = glm::length(normal);
   if (!(length > 0.5))  // the cosines should be orthonormal; tolerate rounding only
     throw InputError(folder,
@@ -162,12 +145,12 @@ void requireSameOrientationAndSize(const std::filesystem::path& folder,
                                    const std::vector<Slice>& slices) {
   const Slice& first = slices.front();
   for (const Slice& slice : slices) {
-    const double difference =
-        std::max(glm::length(slice.row - first.row), glm::length(slice.column - first.column));
+    const double difference = std::max(glm::length(slice.tags.row - first.tags.row),
+                                       glm::length(slice.tags.column - first.tags.column));
     if (difference > 1e-3)
       throw InputError(folder, "mixed slice orientations in one series (" + fileName(first.file) +
                                    " vs " + fileName(slice.file) + ")");
-    if (slice.rows != first.rows || slice.columns != first.columns)
+    if (slice.tags.rows != first.tags.rows || slice.tags.columns != first.tags.columns)
       throw InputError(folder, "slices of different sizes in one series (" + fileName(first.file) +
                                    " vs " + fileName(slice.file) + ")");
   }
@@ -184,10 +167,10 @@ int dominantAxis(glm::dvec3 normal) {
 // half a pixel, as resampling the shear onto a straight grid is not done here.
 void requireUnsheared(const std::filesystem::path& folder, const std::vector<Slice>& slices,
                       glm::dvec3 normal) {
-  const glm::dvec3 offset = slices.back().position - slices.front().position;
+  const glm::dvec3 offset = slices.back().tags.position - slices.front().tags.position;
   const double along = glm::dot(offset, normal);
   const double sideways = glm::length(offset - along * normal);
-  const double pixel = std::min(slices.front().pixelSpacing.x, slices.front().pixelSpacing.y);
+  const double pixel = std::min(slices.front().tags.pixelSpacing.x, slices.front().tags.pixelSpacing.y);
   if (sideways <= 0.5 * pixel) return;
   const double tiltDeg = glm::degrees(std::atan2(sideways, std::abs(along)));
   throw InputError(folder, "slices are sheared (gantry tilt of " + millimetres(tiltDeg) +
@@ -211,7 +194,7 @@ double uniformSpacing(const std::filesystem::path& folder, const std::vector<Sli
     std::string list;
     const std::size_t shown = std::min<std::size_t>(missing.size(), 10);
     for (std::size_t n = 0; n < shown; ++n) {
-      const glm::dvec3 point = slices.front().position + normal * (missing[n] - along.front());
+      const glm::dvec3 point = slices.front().tags.position + normal * (missing[n] - along.front());
       list += (n ? ", " : "") + millimetres(point[axis]);
     }
     if (shown < missing.size()) list += ", ... (" + std::to_string(missing.size()) + " in all)";
@@ -252,49 +235,57 @@ std::vector<double> missingSlicePositions(const std::vector<double>& sorted) {
   return missing;
 }
 
-DicomStack readDicomSeries(const std::filesystem::path& folder, const ReadOptions& options,
-                           double extraBytesPerVoxel) {
+DicomSeries scanDicomSeries(const std::filesystem::path& folder, const ReadOptions& options) {
   try {
     const Series series = chooseSeries(folder, options);
     if (series.files.size() < 2)
       throw InputError(folder, "the DICOM series has a single slice; need a 3-D volume");
-    {  // Before reading pixels: the slices, the stack assembled from them and the caller's share.
-      const auto first = readSliceHeader(folder, series.files.front());
-      const glm::dvec3 dims(first->GetDimensions(0), first->GetDimensions(1), series.files.size());
-      requireMemory(folder, dims, dims.x * dims.y * dims.z * (2 * sizeof(Voxel) + extraBytesPerVoxel));
-    }
-    DicomStack stack;
-    stack.study = studyOf(*readSliceHeader(folder, series.files.front()));
+    // Every slice's header first: a series that cannot be stacked is refused before any pixel
+    // is read, and the pixels then go straight to their place.
     std::vector<Slice> slices;
-    std::vector<double> scratch;
     for (const std::string& file : series.files) {
-      slices.push_back(readSlice(folder, file, scratch, stack.nonFinite));
-      if (options.progress) options.progress(0.85 * double(slices.size()) / double(series.files.size()));
+      slices.push_back({file, checkDicomSlice(folder, file, true)});
+      if (options.progress) options.progress(0.1 * double(slices.size()) / double(series.files.size()));
     }
     requireSameOrientationAndSize(folder, slices);
     const glm::dvec3 normal = sliceNormal(folder, slices.front());
-    for (Slice& slice : slices) slice.along = glm::dot(slice.position, normal);
+    for (Slice& slice : slices) slice.along = glm::dot(slice.tags.position, normal);
     std::sort(slices.begin(), slices.end(),
               [](const Slice& a, const Slice& b) { return a.along < b.along; });
-
     requireUnsheared(folder, slices, normal);
-    VolumeGeometry& geometry = stack.geometry;
-    geometry.dims = {slices[0].columns, slices[0].rows, int(slices.size())};
-    geometry.spacing = {slices[0].pixelSpacing.x, slices[0].pixelSpacing.y,
+
+    DicomSeries result;
+    const DicomSliceTags& first = slices.front().tags;
+    VolumeGeometry& geometry = result.geometry;
+    geometry.dims = {first.columns, first.rows, int(slices.size())};
+    geometry.spacing = {first.pixelSpacing.x, first.pixelSpacing.y,
                         uniformSpacing(folder, slices, normal)};
-    geometry.origin = slices.front().position;
-    geometry.direction =
-        glm::dmat3(glm::normalize(slices[0].row), glm::normalize(slices[0].column), normal);
-    const std::size_t sliceVoxels = std::size_t(geometry.dims.x) * geometry.dims.y;
-    stack.voxels.resize(sliceVoxels * slices.size());
-    for (std::size_t k = 0; k < slices.size(); ++k) {
-      std::copy(slices[k].voxels.begin(), slices[k].voxels.end(),
-                stack.voxels.begin() + k * sliceVoxels);
-      std::vector<Voxel>().swap(slices[k].voxels);  // give the memory back as we go
-    }
-    stack.description =
+    geometry.origin = first.position;
+    geometry.direction = glm::dmat3(glm::normalize(first.row), glm::normalize(first.column), normal);
+    for (const Slice& slice : slices) result.files.push_back(slice.file);
+    result.study = studyOf(*readSliceHeader(folder, result.files.front()));
+    result.description =
         "DICOM series " + shownUid(series.uid) + " (" + std::to_string(slices.size()) + " slices)";
-    return stack;
+    return result;
+  } catch (const itk::ExceptionObject& error) {
+    throw InputError(folder, "cannot read the DICOM series: " + oneLine(error));
+  }
+}
+
+std::size_t readDicomSlices(const std::filesystem::path& folder, const DicomSeries& series,
+                            const std::function<void(int, const Voxel*)>& slice,
+                            const ReadOptions& options) {
+  try {
+    const glm::ivec3 dims = series.geometry.dims;
+    std::vector<Voxel> voxels(std::size_t(dims.x) * dims.y);
+    std::vector<double> scratch;
+    std::size_t nonFinite = 0;
+    for (int k = 0; k < dims.z; ++k) {
+      nonFinite += readSlicePixels(folder, series.files[k], dims, scratch, voxels.data());
+      slice(k, voxels.data());
+      if (options.progress) options.progress(0.1 + 0.85 * double(k + 1) / double(dims.z));
+    }
+    return nonFinite;
   } catch (const itk::ExceptionObject& error) {
     throw InputError(folder, "cannot read the DICOM series: " + oneLine(error));
   }

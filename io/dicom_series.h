@@ -5,6 +5,7 @@
 // InstanceNumber; rescale slope/intercept is applied; gaps, duplicate positions and mixed
 // orientations or sizes are InputErrors naming the folder.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,17 +16,24 @@
 
 namespace angio {
 
-struct DicomStack {
-  VolumeGeometry geometry;    // axes: row direction, column direction, slice normal
-  std::vector<Voxel> voxels;  // encoded densities, i fastest, slices in position order
-  std::string description;    // "DICOM series <uid> (<n> slices)"
-  std::size_t nonFinite = 0;  // NaN/Inf pixels (float pixel data), stored as -1024 HU
-  StudyInfo study;            // from the first slice's tags
+// A series chosen and checked from its slices' headers, before any pixel is read.
+struct DicomSeries {
+  VolumeGeometry geometry;         // axes: row direction, column direction, slice normal
+  std::vector<std::string> files;  // the slices in position order
+  std::string description;         // "DICOM series <uid> (<n> slices)"
+  StudyInfo study;                 // from the first slice's tags
 };
 
-// `extraBytesPerVoxel`: what the caller will allocate on top (for the memory check up front).
-DicomStack readDicomSeries(const std::filesystem::path& folder, const ReadOptions& options,
-                           double extraBytesPerVoxel);
+// Chooses the series and reads every slice's header: orientation, size, positions (no gaps, no
+// shear) are checked here, so a series that cannot be stacked is refused before its pixels.
+DicomSeries scanDicomSeries(const std::filesystem::path& folder, const ReadOptions& options);
+
+// Reads the slices' pixels in position order, each as encoded voxels (i fastest, columns x rows),
+// handing slice k to slice(k, voxels) (valid during the call): one slice in memory at a time.
+// Returns how many pixel values were NaN/Inf (float pixel data; stored as -1024 HU).
+std::size_t readDicomSlices(const std::filesystem::path& folder, const DicomSeries& series,
+                            const std::function<void(int, const Voxel*)>& slice,
+                            const ReadOptions& options);
 
 // Positions (mm, along the normal) of the slices missing from a sorted stack; empty if none.
 // Throws std::invalid_argument describing the problem if the positions are not a uniform grid

@@ -330,21 +330,22 @@ Volume volumeFromFile(const std::filesystem::path& file, const ReadOptions& opti
 
 Volume volumeFromDicom(const std::filesystem::path& folder, const ReadOptions& options,
                        std::string& description, StudyInfo& study) {
-  // Reorientation may need a second voxel array; count it in the memory check.
-  DicomStack stack = readDicomSeries(folder, options, sizeof(Voxel));
-  const Reorientation plan = planFor(folder, stack.geometry);
+  const DicomSeries series = scanDicomSeries(folder, options);
+  const Reorientation plan = planFor(folder, series.geometry);
   warnIfOblique(folder, plan, options);
-  const VolumeGeometry geometry = reorientedGeometry(stack.geometry, plan);
-  Volume volume;
-  if (plan.movesVoxels()) {
-    volume = volumeOn(geometry);
-    reorientCopy(stack.voxels.data(), stack.geometry.dims, plan, volume.voxels.data(), CopyRow{});
-  } else {
-    volume = volumeOn(geometry, std::move(stack.voxels));
-  }
-  warnNonFinite(folder, stack.nonFinite, options);
-  description = stack.description;
-  study = stack.study;
+  const glm::dvec3 dims(series.geometry.dims);
+  requireMemory(folder, dims, dims.x * dims.y * dims.z * sizeof(Voxel));
+  // Each slice goes straight to its place in the reoriented volume: no stack of slices.
+  Volume volume = volumeOn(reorientedGeometry(series.geometry, plan));
+  const std::size_t nonFinite = readDicomSlices(
+      folder, series,
+      [&](int k, const Voxel* slice) {
+        reorientSlab(slice, series.geometry.dims, k, 1, plan, volume.voxels.data(), CopyRow{});
+      },
+      options);
+  warnNonFinite(folder, nonFinite, options);
+  description = series.description;
+  study = series.study;
   return volume;
 }
 
