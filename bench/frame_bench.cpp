@@ -163,9 +163,29 @@ FrameFunction sceneFrames(FrameRenderer& frames, std::shared_ptr<const PreparedS
   };
 }
 
+// Where the samples of a level's frames go: the "all" row's angles rendered again, untimed, with
+// the profile counted; the row's CPU time over their evaluated samples is the cost per sample.
+LevelProfile profileLevel(FrameRenderer& frames, const std::shared_ptr<const PreparedScene>& scene,
+                          const RenderParams& base, const FrameTimingRow& timed) {
+  LevelProfile profile{timed.level, {}, timed.frames, 0};
+  frames.techniques.profile = true;
+  for (int n = 0; n < timed.frames; ++n) {
+    RenderParams p = base;
+    p.angleDeg = 360.0 * n / timed.frames;
+    FastRenderStats stats;
+    frames.render(scene, p, {}, &stats);
+    profile.total += stats.profile;
+  }
+  frames.techniques.profile = false;
+  const double evaluatedPerFrame = double(profile.total.evaluated) / std::max(timed.frames, 1);
+  if (evaluatedPerFrame > 0) profile.nsPerEvaluatedSample = timed.medianCpuMs * 1e6 / evaluatedPerFrame;
+  return profile;
+}
+
 // Interruption latency (the progressive GUI restarts at fast on every change): high-quality frames
-// at `count` angles, each cancelled 10-200 ms after it started; cancel flag set -> the render
-// returned. Frames recycle memory, as in the GUI after its first high-quality frame (the very
+// at `count` angles, each cancelled 10-90 % into the time an uncancelled one takes; cancel flag
+// set -> the render returned. A frame that finished before its cancel was not interrupted and is
+// left out. Frames recycle memory, as in the GUI after its first high-quality frame (the very
 // first one spends uninterruptible time in page faults for its image).
 std::vector<double> interruptLatencies(FrameRenderer& frames,
                                        const std::shared_ptr<const PreparedScene>& scene, Axis axis,
@@ -175,6 +195,9 @@ std::vector<double> interruptLatencies(FrameRenderer& frames,
   warmUp.axis = axis;
   warmUp.sampling = qualitySampling(Quality::high);
   Image previous = frames.render(scene, warmUp);
+  const Clock::time_point start = Clock::now();
+  previous = frames.render(scene, warmUp, {.recycle = &previous});
+  const double frameMs = msSince(start);
   for (int n = 0; n < count; ++n) {
     RenderParams p = warmUp;
     p.angleDeg = 360.0 * n / count + 7.0;
@@ -184,11 +207,13 @@ std::vector<double> interruptLatencies(FrameRenderer& frames,
       previous = frames.render(scene, p, {.cancel = &cancel, .recycle = &previous});
       returnedAt = Clock::now();
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(10 + (n * 37) % 190));
+    const double fraction = 0.1 + 0.8 * ((n * 37) % 100) / 100.0;
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(frameMs * fraction));
     const Clock::time_point cancelledAt = Clock::now();
     cancel = true;
     worker.join();
-    latencies.push_back(std::chrono::duration<double, std::milli>(returnedAt - cancelledAt).count());
+    if (returnedAt > cancelledAt)
+      latencies.push_back(std::chrono::duration<double, std::milli>(returnedAt - cancelledAt).count());
   }
   return latencies;
 }
@@ -222,8 +247,10 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
   report.preprocessMs -= report.classifyMs;
   const std::vector<double> latencies =
       interruptLatencies(frames, scene, settings.axis, std::max(settings.angles, 12));
-  report.interruptMedianMs = median(latencies);
-  report.interruptMaxMs = *std::max_element(latencies.begin(), latencies.end());
+  if (!latencies.empty()) {
+    report.interruptMedianMs = median(latencies);
+    report.interruptMaxMs = *std::max_element(latencies.begin(), latencies.end());
+  }
   report.interrupts = int(latencies.size());
   report.accelerationMiB = frames.structureMiB();
   RenderRecipe labelled = recipe;
@@ -254,6 +281,7 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
     report.rows.push_back(
         timeFrames(level.name, "all", settings.angles, p, sceneFrames(frames, scene, previous)));
     std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
+    if (settings.profile) report.profiles.push_back(profileLevel(frames, scene, p, report.rows.back()));
     RenderParams clipped = p;
     clipped.clipping = benchClipping(volume);
     report.rows.push_back(timeFrames(level.name, "clipped", settings.angles, clipped,
@@ -340,6 +368,7 @@ std::string formatTable(const BenchReport& r) {
                   t.medianSamples, t.frames);
     out << line;
   }
+  if (!r.profiles.empty()) out << formatProfiles(r.profiles);
   return out.str();
 }
 
@@ -374,6 +403,23 @@ std::string toJson(const BenchReport& r) {
                    {"interrupt_max_ms", r.interruptMaxMs},
                    {"threads", r.threads},
                    {"frames", rows}};
+  for (const LevelProfile& l : r.profiles) {
+    const RayProfile& p = l.total;
+    j["profiles"].push_back({{"level", l.level},
+                             {"frames", l.frames},
+                             {"domain_samples", p.domainSamples},
+                             {"skipped_by_groups", p.skippedByGroups},
+                             {"skipped_by_tiles", p.skippedByTiles},
+                             {"skipped_by_cells", p.skippedByCells},
+                             {"evaluated", p.evaluated},
+                             {"saved_by_termination", p.savedByTermination()},
+                             {"visible", p.visible},
+                             {"faint", p.faint},
+                             {"rays", p.rays},
+                             {"terminated_rays", p.terminatedRays},
+                             {"terminated_depth", p.terminatedDepth},
+                             {"ns_per_evaluated_sample", l.nsPerEvaluatedSample}});
+  }
   return j.dump(2);
 }
 

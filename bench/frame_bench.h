@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/frame_profile.h"
 #include "core/blocked_volume.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
@@ -35,6 +36,9 @@ struct BenchSettings {
   // labels, the cost of per-label classification alone), and the re-classification after a label
   // change is timed.
   std::vector<LabelStyle> labels;
+  // Also count where each level's samples go (bench/frame_profile.h), in untimed frames at the
+  // same angles as its "all" row.
+  bool profile = false;
 };
 
 struct FrameTimingRow {
@@ -61,6 +65,7 @@ struct BenchReport {
   int interrupts = 0;
   int threads = 0;
   std::vector<FrameTimingRow> rows;
+  std::vector<LevelProfile> profiles;  // with BenchSettings::profile, one per level
 };
 
 BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,

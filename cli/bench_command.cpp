@@ -111,6 +111,7 @@ int runBench(const BenchOptionsCli& options) {
   settings.threads = options.threads;
   settings.withReference = options.reference;
   settings.withContributions = options.contributions;
+  settings.profile = options.profile;
   settings.levels = options.levels;
   if (!options.labels.empty()) settings.labels = hiddenLabels(options.hide);
   BenchReport report = runFrameBench(volume, tf, settings);

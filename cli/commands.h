@@ -107,6 +107,7 @@ struct BenchOptionsCli {
   int threads = 0;
   bool reference = false;
   bool contributions = true;
+  bool profile = false;             // also where each level's samples go (bench/frame_profile.h)
   std::vector<std::string> levels;  // empty = all
   std::string centerlines;          // adds VesselGlyph rows (the phantom's own when no VOLUME)
   std::string labels;               // a label volume for VOLUME: adds label rows

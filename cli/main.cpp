@@ -190,6 +190,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_option("--threads", o.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_flag("--reference", o.reference, "Also time the reference raycaster (slow)");
   cmd->add_flag("!--no-contributions", o.contributions, "Skip the technique-off rows");
+  cmd->add_flag("--profile", o.profile,
+                "Also count where each level's samples go (skipped, evaluated, visible, faint, "
+                "ERT) and the CPU ns per evaluated sample");
   cmd->add_option("--json", o.json, "Also write the results as JSON");
   cmd->add_option("--levels", o.levels, "Only these levels (fast, medium, medium-trilinear, high)")
       ->check(CLI::IsMember({"fast", "medium", "medium-trilinear", "high"}));

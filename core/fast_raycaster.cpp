@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -208,6 +209,7 @@ struct Lane {
   long endAt = std::numeric_limits<long>::max();  // the first sample after the clipping's interval
   bool shows = true;  // some sample lies in the domain and the clipping's interval (MIP: not black)
   bool done = false;  // terminated early, or nothing more shown
+  long firstEvaluated = -1;  // profiling: the lane's first reconstructed sample
 };
 
 // What the rays of one column of a bundle carry from one tile group to the next.
@@ -216,7 +218,8 @@ struct BundleRay {
   RaySamples positions;  // the first row's; the in-plane part is every row's
   Sampler sampler;
   std::array<Lane, kMaxBundleRows> lanes;
-  int live = 1;  // lanes not done
+  int live = 1;                   // lanes not done
+  RayProfile* profile = nullptr;  // the worker's counts when profiling (Mode::profile)
   // The view clipping's samples of every lane: [clipBegin, clipEnd), and the first endAt of a
   // live lane (after it that lane is finished).
   long clipBegin = std::numeric_limits<long>::min();
@@ -255,12 +258,30 @@ struct BundleRay {
 
 // What the inner loop is compiled for: MIP or DVR, with or without VesselGlyph regions, with or
 // without labels that render differently from unlabelled voxels.
-template <bool Mip, bool Regions, bool Labels>
+template <bool Mip, bool Regions, bool Labels, bool Profile = false>
 struct Compiled {
   static constexpr bool mip = Mip;
   static constexpr bool regions = Regions;
   static constexpr bool labels = Labels;
+  static constexpr bool profile = Profile;  // count where the samples go (core/ray_profile.h)
 };
+
+// Profiling counts per ray, so rows that share one lane (identical rays) count once each.
+int raysPerLane(const RowBundle& bundle) { return bundle.rows / bundle.lanes; }
+
+void countSample(const RowBundle& bundle, long k, float opacity, Lane& lane, RayProfile& profile) {
+  const int rays = raysPerLane(bundle);
+  if (lane.firstEvaluated < 0) lane.firstEvaluated = k;
+  profile.evaluated += rays;
+  if (opacity > 0.f) profile.visible += rays;
+  if (opacity > 0.f && opacity < RayProfile::kFaintOpacity) profile.faint += rays;
+}
+
+void countTermination(const RowBundle& bundle, long k, const Lane& lane, RayProfile& profile) {
+  const int rays = raysPerLane(bundle);
+  profile.terminatedRays += rays;
+  profile.terminatedDepth += std::uint64_t(k - lane.firstEvaluated + 1) * rays;
+}
 
 // One sample k of one lane, after the bundle's sampler moved to it.
 template <class Mode, class Sampler>
@@ -291,13 +312,17 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
     // (Without regions the sampler's cell already passed this test for every lane.)
     if (Mode::regions && f.skipCells && !sampler.mayBeVisible(*f.tfOf(region, label))) return;
     const glm::vec4 rgba = (*table)[tableIndex(sampler.density(bundle.fracA[l]))];
+    if constexpr (Mode::profile) countSample(bundle, k, rgba.a, lane, *b.profile);
     if (rgba.a <= 0.f) return;
     const float shade = f.params.shading.enabled
                             ? shadingFactor(f.params.shading, sampler.gradient(bundle.fracA[l]),
                                             glm::vec3(f.view.viewDir))
                             : 1.f;
     lane.ray.add(rgba, shade);
-    if (lane.ray.opacity >= f.params.sampling.ert) b.finish(lane);
+    if (lane.ray.opacity >= f.params.sampling.ert) {
+      if constexpr (Mode::profile) countTermination(bundle, k, lane, *b.profile);
+      b.finish(lane);
+    }
   }
 }
 
@@ -320,6 +345,10 @@ long sampleSpan(const Frame& f, const RowBundle& bundle, long first, long stop, 
       }
     } else {
       if (skip && !sampler.mayBeVisible(*f.anyRegionTf)) {
+        if constexpr (Mode::profile)
+          b.profile->skippedByCells +=
+              std::uint64_t(std::min<long>(sampler.samplesLeftInCell() + 1, stop - k)) * b.live *
+              raysPerLane(bundle);
         k += sampler.samplesLeftInCell();
         continue;
       }
@@ -360,6 +389,7 @@ template <class Sampler>
 struct RowScratch {
   RowTiles tiles;
   std::vector<std::optional<BundleRay<Sampler>>> rays;
+  RayProfile profile;  // Mode::profile: this worker's counts
 };
 
 // May the tile (or group) change a pixel of the bundle's column: something visible there (DVR), or
@@ -380,8 +410,12 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
     return false;
   for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
     const TileRun& run = f.templates.runs[r];
-    if (f.skipTiles && !mayShow<Mode>(row.visible[run.tile], row.maxDensity[run.tile], b, bundle.lanes))
+    if (f.skipTiles &&
+        !mayShow<Mode>(row.visible[run.tile], row.maxDensity[run.tile], b, bundle.lanes)) {
+      if constexpr (Mode::profile)
+        b.profile->skippedByTiles += std::uint64_t(run.count) * b.live * raysPerLane(bundle);
       continue;
+    }
     if (run.firstSample >= b.clipEnd) {  // beyond every lane's clip interval
       b.finishEnded(run.firstSample, bundle.lanes);
       return true;
@@ -459,6 +493,26 @@ void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampl
   }
 }
 
+// Profiling: the samples of one rank's group visits, in the domain and, where the group is
+// skipped for the whole row, skipped by groups (rays already terminated aside: ERT saved those).
+template <class Sampler>
+void countRank(const Frame& f, const RowBundle& bundle, std::size_t rank, RowScratch<Sampler>& scratch) {
+  const RayTemplates& templates = f.templates;
+  const bool skipped = f.skipGroups && !scratch.tiles.groupVisible[templates.rankGroup[rank]];
+  for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
+    const GroupVisit visit = templates.visits[v];
+    const GroupRun& group = templates.groups[visit.groupRun];
+    std::uint64_t samples = 0;
+    for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) samples += templates.runs[r].count;
+    scratch.profile.domainSamples += samples * bundle.rows;
+    const auto& state = scratch.rays[visit.column];
+    if (skipped) {
+      const int live = state ? state->live : bundle.lanes;
+      scratch.profile.skippedByGroups += samples * live * raysPerLane(bundle);
+    }
+  }
+}
+
 // Renders one bundle of rows group by group in front-to-back order (RayTemplates::visits), each
 // column keeping its state in between; returns false if cancelled part-way (checked every 4 groups).
 template <class Mode, class Sampler>
@@ -479,12 +533,20 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
   for (std::size_t rank = 0; rank + 1 < templates.rankBegin.size(); ++rank) {
     if (rank % 4 == 3 && cancelRequested(f.options)) return false;
     const std::int32_t group = templates.rankGroup[rank];
+    if constexpr (Mode::profile) countRank(f, bundle, rank, scratch);
     if (!Mode::mip && f.skipGroups && !scratch.tiles.groupVisible[group]) continue;
     for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
-      if (!state) state.emplace(startColumn<Sampler>(f, bundle, int(visit.column)));
-      else if (state->live == 0) continue;
+      if (!state) {
+        state.emplace(startColumn<Sampler>(f, bundle, int(visit.column)));
+        if constexpr (Mode::profile) {
+          state->profile = &scratch.profile;
+          scratch.profile.rays += bundle.rows;
+        }
+      } else if (state->live == 0) {
+        continue;
+      }
       visitGroup<Mode>(f, bundle, scratch.tiles, templates.groups[visit.groupRun], *state, samples);
     }
   }
@@ -492,19 +554,28 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
   return true;
 }
 
+// What the workers count: the samples in tiles not skipped, and (profiling) where they went.
+struct WorkerCounts {
+  std::uint64_t samples = 0;
+  RayProfile profile;
+};
+
 // Renders bundles [first, end); returns false if cancelled.
 template <class Mode, class Sampler>
 bool renderRows(const Frame& f, const RowBundle* first, const RowBundle* end, Image& image,
-                std::uint64_t& samples) {
+                WorkerCounts& counts) {
   RowScratch<Sampler> scratch;
-  for (const RowBundle* bundle = first; bundle != end; ++bundle) {
-    if (!renderBundle<Mode>(f, *bundle, scratch, image, samples)) return false;
-    if (f.options.rowsDone) f.options.rowsDone->fetch_add(bundle->rows, std::memory_order_relaxed);
+  bool finished = true;
+  for (const RowBundle* bundle = first; bundle != end && finished; ++bundle) {
+    finished = renderBundle<Mode>(f, *bundle, scratch, image, counts.samples);
+    if (finished && f.options.rowsDone)
+      f.options.rowsDone->fetch_add(bundle->rows, std::memory_order_relaxed);
   }
-  return true;
+  counts.profile += scratch.profile;
+  return finished;
 }
 
-using RowFunction = bool (*)(const Frame&, const RowBundle*, const RowBundle*, Image&, std::uint64_t&);
+using RowFunction = bool (*)(const Frame&, const RowBundle*, const RowBundle*, Image&, WorkerCounts&);
 
 template <class Mode>
 RowFunction rowFunctionFor(Filter filter) {
@@ -523,10 +594,16 @@ RowFunction rowFunctionFor(Filter filter, bool labels) {
                 : rowFunctionFor<Compiled<Mip, Regions, false>>(filter);
 }
 
+// Whether a frame is profiled: asked for, and plain DVR (the one mode that counts).
+bool profiled(const RenderParams& params, bool regions, bool labels, const FastRenderOptions& options) {
+  return options.profile && params.compositing == Compositing::dvr && !regions && !labels;
+}
+
 // The row renderer compiled for the frame's filter, compositing, regions and labels.
-RowFunction rowFunctionFor(const RenderParams& params, bool regions, bool labels) {
+RowFunction rowFunctionFor(const RenderParams& params, bool regions, bool labels, bool profile) {
   const bool mip = params.compositing == Compositing::mip;
   const Filter filter = params.sampling.filter;
+  if (profile) return rowFunctionFor<Compiled<false, false, false, true>>(filter);
   if (regions)
     return mip ? rowFunctionFor<true, true>(filter, labels)
                : rowFunctionFor<false, true>(filter, labels);
@@ -594,24 +671,28 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   const double templateMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (cancelRequested(options)) {
-    if (stats) *stats = {0, templateMs, true};
+    if (stats) *stats = {0, templateMs, true, false, {}};
     return makeImage(f.view.width, f.view.height);
   }
 
   Image image = frameImage(f.view, options.recycle);
-  const RowFunction renderRowsFn = rowFunctionFor(params, tables.regions != nullptr, labels);
-  std::atomic<std::uint64_t> samples{0};
+  const bool profile = profiled(params, tables.regions != nullptr, labels, options);
+  const RowFunction renderRowsFn = rowFunctionFor(params, tables.regions != nullptr, labels, profile);
+  std::mutex countsMutex;
+  WorkerCounts total;
   std::atomic<bool> cancelled{false};
   const std::vector<RowBundle> bundles = rowBundles(f);
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, bundles.size()),
       [&](const tbb::blocked_range<std::size_t>& range) {
-        std::uint64_t local = 0;
+        WorkerCounts local;
         if (!renderRowsFn(f, bundles.data() + range.begin(), bundles.data() + range.end(), image, local))
           cancelled = true;
-        samples += local;
+        const std::lock_guard<std::mutex> lock(countsMutex);
+        total.samples += local.samples;
+        total.profile += local.profile;
       });
-  if (stats) *stats = {samples.load(), templateMs, cancelled.load()};
+  if (stats) *stats = {total.samples, templateMs, cancelled.load(), profile, total.profile};
   return image;
 }
 

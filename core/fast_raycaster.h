@@ -18,6 +18,7 @@
 
 #include "core/compositing.h"
 #include "core/image.h"
+#include "core/ray_profile.h"
 #include "core/render_params.h"
 #include "core/slice_tiles.h"
 #include "core/tile_classification.h"
@@ -43,12 +44,17 @@ struct FastRenderOptions {
   Image* recycle = nullptr;
   // Optional: incremented as each image row is finished (the GUI's progress bar), from 0.
   std::atomic<int>* rowsDone = nullptr;
+  // Count where the samples go (FastRenderStats::profile), for plain DVR frames; a separately
+  // compiled path, so frames without it pay nothing.
+  bool profile = false;
 };
 
 struct FastRenderStats {
   std::uint64_t samples = 0;  // samples in tiles not skipped (clipped regions included)
   double templateMs = 0;      // building the ray templates for this view
   bool cancelled = false;
+  bool profiled = false;  // FastRenderOptions::profile was set and the frame is plain DVR
+  RayProfile profile;
 };
 
 // `classification` must be of tiles built for params.axis and made from `tables`' TFs (throws

@@ -228,25 +228,28 @@ TEST(ProgressiveRenderer, NewRequestInterruptsHighAndRestartsAtFast) {
   const ProgressiveStatus status = renderer.status();
   const std::vector<ProgressiveFrame> frames = log.copy();
   std::vector<Quality> firstLevels;
-  double mediumMs = 0;
   for (const ProgressiveFrame& frame : frames)
-    if (frame.request == first) {
-      firstLevels.push_back(frame.level);
-      if (frame.level == Quality::medium) mediumMs = frame.renderMs;
-    }
-  // The interrupt cuts the high render short rather than waiting for it: this high level has 25x
-  // the medium level's rays at half its samples each, trilinear and without ERT, so the whole
-  // render takes more than a dozen medium renders; stopping within two of them is well inside it. (Relative to the medium frame timed on
-  // the same machine in the same moment, so load and sanitizers scale both; the 10 ms target itself
-  // is a performance figure, measured by `angioray bench`.)
-  EXPECT_GE(status.lastInterruptMs, 0);
-  EXPECT_LE(status.lastInterruptMs, 2 * mediumMs + 5);
+    if (frame.request == first) firstLevels.push_back(frame.level);
   EXPECT_EQ(firstLevels, (std::vector<Quality>{Quality::fast, Quality::medium}));  // high dropped
   ASSERT_GE(frames.size(), 3u);
   EXPECT_EQ(frames[2].request, second);
   EXPECT_EQ(frames[2].level, Quality::fast);
   EXPECT_EQ(frames[2].params.angleDeg, 90);
-  std::printf("interrupt %.2f ms, request -> fast frame %.1f ms\n", status.lastInterruptMs, toFastMs);
+
+  // The interrupt cuts the high render short rather than waiting for it: the same high render,
+  // timed to its end on the same machine in the same moment (so load and sanitizers scale both),
+  // takes more than twice as long as the interruption did. Waiting for it would have taken all of
+  // it but the 20 ms it had run. (The latency target itself is a performance figure, measured by
+  // `angioray bench`.)
+  const std::uint64_t whole = renderer.request(slow);
+  ASSERT_TRUE(renderer.waitForLevel(whole, Quality::high, 120s));
+  double highMs = 0;
+  for (const ProgressiveFrame& frame : log.copy())
+    if (frame.request == whole && frame.level == Quality::high) highMs = frame.renderMs;
+  EXPECT_GE(status.lastInterruptMs, 0);
+  EXPECT_LT(status.lastInterruptMs, highMs / 2);
+  std::printf("interrupt %.2f ms of a %.1f ms high render, request -> fast frame %.1f ms\n",
+              status.lastInterruptMs, highMs, toFastMs);
 }
 
 TEST(ProgressiveRenderer, IdenticalRequestKeepsTheRenderRunning) {
