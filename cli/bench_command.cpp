@@ -31,6 +31,7 @@ Phantom benchVolume(const BenchOptionsCli& options) {
     return {readVolume(options.volume, {.labelPath = options.labels}).volume, {}};
   PhantomOptions phantom;
   phantom.dims = parseSize(options.size);
+  phantom.style = parseStyle(options.style);
   ProgressLine progress("generating phantom " + options.size);
   return generatePhantom(phantom, std::ref(progress));
 }

@@ -67,6 +67,7 @@ int runCpr(const CprOptions& options);
 struct PhantomOptionsCli {
   std::string out;
   std::string size = "512x512x1200";
+  std::string style = "realistic";  // PhantomStyle by name
   std::uint64_t seed = 1;
   std::string centerlines;
   std::string labels;  // also write the ground-truth label volume (bone 1, table 2)
@@ -101,6 +102,7 @@ int runTrace(const TraceOptionsCli& options);
 struct BenchOptionsCli {
   std::string volume;
   std::string size = "512x512x1200";
+  std::string style = "realistic";  // of the phantom when no VOLUME
   std::string tf = "cta-vessels";
   std::string axis = "k";
   int angles = 36;
@@ -125,6 +127,7 @@ int runBench(const BenchOptionsCli& options);
 struct DemoOptions {
   std::string outDir = "angioray-out";
   std::string size = "512x512x1200";
+  std::string style = "realistic";
 };
 int runDemo(const DemoOptions& options);
 
@@ -133,6 +136,7 @@ int runDemo(const DemoOptions& options);
 struct GuiOptions {
   std::string volume;
   std::string phantomSize = "256x256x600";
+  std::string phantomStyle = "realistic";
   std::string tf = "cta-vessels-bone";
   std::string axis = "k";
   double angleDeg = 0;

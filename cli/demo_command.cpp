@@ -20,6 +20,7 @@ namespace angio {
 int runDemo(const DemoOptions& options) {
   PhantomOptions phantomOptions;
   phantomOptions.dims = parseSize(options.size);
+  phantomOptions.style = parseStyle(options.style);
   std::error_code error;
   std::filesystem::create_directories(options.outDir, error);  // before the phantom is generated
   if (error || !std::filesystem::is_directory(options.outDir))

@@ -36,6 +36,7 @@ LoadedDataset loadDataset(const GuiOptions& options) {
   if (options.volume.empty()) {
     PhantomOptions phantom;
     phantom.dims = parseSize(options.phantomSize);
+    phantom.style = parseStyle(options.phantomStyle);
     ProgressLine progress("generating phantom " + options.phantomSize);
     dataset.volume = generatePhantom(phantom, std::ref(progress)).volume;
     dataset.name = "phantom " + options.phantomSize;

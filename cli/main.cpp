@@ -128,10 +128,20 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
       ->capture_default_str();
 }
 
+// The phantom's style: realistic (organs, trabecular bone, correlated noise) or simple (as before).
+void addStyleOption(CLI::App* cmd, std::string& style, const std::string& flag) {
+  cmd->add_option(flag, style,
+                  "Phantom style: realistic (organs, trabecular bone, small vessels, correlated "
+                  "noise) or simple (clean tissue, white noise)")
+      ->check(CLI::IsMember({"realistic", "simple"}))
+      ->capture_default_str();
+}
+
 void addPhantom(CLI::App& app, angio::PhantomOptionsCli& o) {
   auto* cmd = app.add_subcommand("phantom", "Generate the peripheral run-off CTA phantom");
   cmd->add_option("OUT", o.out, "Output volume (.mha, .nrrd, .nii.gz)")->required();
   cmd->add_option("--size", o.size, "Voxels as IxJxK")->capture_default_str();
+  addStyleOption(cmd, o.style, "--style");
   cmd->add_option("--seed", o.seed, "Noise seed")->capture_default_str();
   cmd->add_option("--centerlines", o.centerlines, "Also write ground-truth centerlines (.csv)");
   cmd->add_option("--labels", o.labels,
@@ -180,6 +190,7 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   auto* cmd = app.add_subcommand("bench", "Time the raycasters over many angles (median, min, max)");
   cmd->add_option("VOLUME", o.volume, "Volume (default: the generated phantom)");
   cmd->add_option("--size", o.size, "Phantom voxels as IxJxK when no VOLUME")->capture_default_str();
+  addStyleOption(cmd, o.style, "--style");
   cmd->add_option("--tf", o.tf, "TF preset or file")->capture_default_str();
   cmd->add_option("--axis", o.axis, "Rotation axis")
       ->check(CLI::IsMember({"i", "j", "k"}))
@@ -216,6 +227,7 @@ void addDemo(CLI::App& app, angio::DemoOptions& o) {
       "demo", "Generate the phantom and render it at the three quality levels (the default job)");
   cmd->add_option("--out-dir", o.outDir, "Where the PNGs go")->capture_default_str();
   cmd->add_option("--size", o.size, "Phantom voxels as IxJxK")->capture_default_str();
+  addStyleOption(cmd, o.style, "--style");
 }
 
 void addGui(CLI::App& app, angio::GuiOptions& o) {
@@ -225,6 +237,7 @@ void addGui(CLI::App& app, angio::GuiOptions& o) {
   cmd->add_option("--phantom-size", o.phantomSize,
                   "Phantom voxels as IxJxK when no VOLUME (modest by default, for a quick start)")
       ->capture_default_str();
+  addStyleOption(cmd, o.phantomStyle, "--phantom-style");
   cmd->add_option("--tf", o.tf, "TF preset id or name, or a TF JSON file")->capture_default_str();
   cmd->add_option("--axis", o.axis, "Rotation axis")
       ->check(CLI::IsMember({"i", "j", "k"}))

@@ -19,6 +19,7 @@ int runPhantom(const PhantomOptionsCli& options) {
   PhantomOptions phantomOptions;
   phantomOptions.dims = parseSize(options.size);
   phantomOptions.seed = options.seed;
+  phantomOptions.style = parseStyle(options.style);
   phantomOptions.groundTruthLabels = !options.labels.empty();
   // Every output is checked before minutes of generating.
   requireVolumeTarget(options.out);

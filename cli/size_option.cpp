@@ -16,4 +16,9 @@ glm::ivec3 parseSize(const std::string& text) {
   return size;
 }
 
+PhantomStyle parseStyle(const std::string& name) {
+  if (const auto style = parsePhantomStyle(name)) return *style;
+  throw std::runtime_error("phantom style '" + name + "' is not realistic or simple");
+}
+
 }  // namespace angio

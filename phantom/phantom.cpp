@@ -114,22 +114,25 @@ void forEachPixel(const SliceGrid& grid, const PixelRect& rect, double z, const 
 
 // Union of filled parts: the nearest surface wins, with its density.
 struct FilledLayer {
-  std::vector<float> sd, hu;
+  std::vector<float> sd, hu, texture;
   PixelRect dirty;
 
   void resize(std::size_t pixels) {
     sd.assign(pixels, kFar);
     hu.assign(pixels, 0.f);
+    texture.assign(pixels, 0.f);
   }
   void add(const SliceGrid& grid, double z, const Placed<FilledPart>& placed) {
     const PixelRect rect = pixelsWithin(grid, placed.bounds);
     if (rect.empty()) return;
     dirty.unite(rect);
     const float partHu = float(placed.part.hu);
+    const float partTexture = float(placed.part.textureHu);
     forEachPixel(grid, rect, z, placed.part.solid, [&](std::size_t n, float d) {
       if (d < sd[n]) {
         sd[n] = d;
         hu[n] = partHu;
+        texture[n] = partTexture;
       }
     });
   }
@@ -144,7 +147,7 @@ struct FilledLayer {
 // Union of shelled parts (bones): the outer surfaces (cortex) and the cores (surfaces moved in by
 // the shell) are unions of their own, so where bones overlap a core paints over the other's cortex.
 struct ShelledLayer {
-  std::vector<float> outerSd, shellHu, coreSd, coreHu;
+  std::vector<float> outerSd, shellHu, coreSd, coreHu, coreTexture;
   std::vector<std::uint8_t> outerLabel;  // the label of the part whose outer surface is nearest
   PixelRect dirty;
 
@@ -153,6 +156,7 @@ struct ShelledLayer {
     coreSd.assign(pixels, kFar);
     shellHu.assign(pixels, 0.f);
     coreHu.assign(pixels, 0.f);
+    coreTexture.assign(pixels, 0.f);
     outerLabel.assign(pixels, 0);
   }
   void add(const SliceGrid& grid, double z, const Placed<ShelledPart>& placed) {
@@ -170,6 +174,7 @@ struct ShelledLayer {
       if (core < coreSd[n]) {
         coreSd[n] = core;
         coreHu[n] = float(part.coreHu);
+        coreTexture[n] = float(part.coreTextureHu);
       }
     });
   }
@@ -187,6 +192,8 @@ struct ShelledLayer {
 struct SliceLayers {
   FilledLayer soft, lumen, plaques;
   ShelledLayer shelled;
+  std::vector<float> hu, noise, noiseRows;  // the slice's densities; its noise and scratch
+  std::vector<std::uint8_t> labels;
   bool sized = false;
 
   void ensureSize(std::size_t pixels) {
@@ -195,6 +202,8 @@ struct SliceLayers {
     lumen.resize(pixels);
     plaques.resize(pixels);
     shelled.resize(pixels);
+    hu.resize(pixels);
+    labels.resize(pixels);
     sized = true;
   }
 };
@@ -221,6 +230,76 @@ float gaussianNoise(std::uint64_t seedKey, std::uint64_t voxelIndex) {
   return float((sum / 65535.0 - 2.0) * 1.7320508075688772);
 }
 
+// Standard normal with true Gaussian tails (Box-Muller on the hash's two halves): the realistic
+// style's noise, whose tails reach the vessel presets' ramp as a scanner's do.
+float boxMullerNoise(std::uint64_t seedKey, std::uint64_t voxelIndex) {
+  const std::uint64_t h = mix64(seedKey ^ (voxelIndex * 0x9e3779b97f4a7c15ull));
+  const float u1 = (float(h >> 40) + 0.5f) * 0x1.0p-24f;  // (0, 1)
+  const float u2 = float(h & 0xffffff) * 0x1.0p-24f;
+  return std::sqrt(-2.f * std::log(u1)) * std::cos(6.2831853f * u2);
+}
+
+// Smooth random texture of about unit standard deviation: value noise (Gaussian values on a lattice,
+// trilinearly interpolated) in two octaves, 3 mm and 1.2 mm, the scale of the mottled pattern
+// unresolved trabeculae and organ perfusion give at CT resolution. Depends only on the position.
+float latticeValue(std::uint64_t seedKey, glm::ivec3 cell) {
+  const std::uint64_t index = (std::uint64_t(std::uint32_t(cell.x)) * 0x100000001b3ull) ^
+                              (std::uint64_t(std::uint32_t(cell.y)) << 21) ^
+                              (std::uint64_t(std::uint32_t(cell.z)) << 42);
+  return gaussianNoise(seedKey, index);
+}
+
+float valueNoise(std::uint64_t seedKey, glm::dvec3 p) {
+  const glm::dvec3 base = glm::floor(p);
+  const glm::ivec3 cell(base);
+  const glm::vec3 t(p - base);
+  float sum = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::ivec3 offset(corner & 1, (corner >> 1) & 1, corner >> 2);
+    const glm::vec3 w = glm::mix(1.f - t, t, glm::vec3(offset));
+    sum += w.x * w.y * w.z * latticeValue(seedKey, cell + offset);
+  }
+  return sum;
+}
+
+// Two octaves of interpolated unit Gaussians have a standard deviation of sqrt(2 (2/3)^3) = 0.77.
+float texture(std::uint64_t seedKey, glm::dvec3 pMm) {
+  return (valueNoise(seedKey, pMm / 3.0) + valueNoise(seedKey + 1, pMm / 1.2)) / 0.77f;
+}
+
+// In-plane correlated noise of unit standard deviation: white noise (hashed from a grid one pixel
+// wider than the slice, so every value depends only on its index) blurred by the separable kernel
+// (w, 1, w). Its lag-1 autocorrelation 2w / (1 + 2w^2) is 0.55 for w = 0.34, as measured on clinical
+// CT reconstructed with standard kernels (0.5-0.6); blurring white noise gives the low-pass noise
+// power spectrum of such kernels.
+constexpr float kNoiseKernelSide = 0.34f;
+
+void correlatedNoise(std::uint64_t seedKey, int k, glm::ivec2 dims, std::vector<float>& noise,
+                     std::vector<float>& rows) {
+  const int w = dims.x + 2, h = dims.y + 2;
+  rows.resize(std::size_t(w) * h);
+  noise.resize(std::size_t(dims.x) * dims.y);
+  const std::uint64_t sliceStart = std::uint64_t(k) * w * h;
+  for (std::size_t n = 0; n < rows.size(); ++n) rows[n] = boxMullerNoise(seedKey, sliceStart + n);
+  const float a = kNoiseKernelSide, norm = 1.f / (1.f + 2.f * a * a);  // unit variance after both passes
+  for (int j = 0; j < h; ++j) {  // along i, in place (one value behind)
+    float* row = rows.data() + std::size_t(j) * w;
+    float previous = row[0];
+    for (int i = 1; i + 1 < w; ++i) {
+      const float current = row[i];
+      row[i - 1] = a * previous + current + a * row[i + 1];
+      previous = current;
+    }
+  }
+  for (int j = 0; j < dims.y; ++j) {  // along j, into the slice (columns 0 .. dims.x - 1 hold i)
+    const float* up = rows.data() + std::size_t(j) * w;
+    const float* mid = up + w;
+    const float* down = mid + w;
+    float* out = noise.data() + std::size_t(j) * dims.x;
+    for (int i = 0; i < dims.x; ++i) out[i] = norm * (a * up[i] + mid[i] + a * down[i]);
+  }
+}
+
 // ---- The phantom
 
 // A voxel's density from the body's layers and its signed distance to the body's outline.
@@ -229,11 +308,34 @@ struct TissueSample {
   float bodySd = kFar;
 };
 
+// Per style: the body's layers and the noise.
+struct Look {
+  bool textures = false;
+  bool correlatedNoise = false;
+  double noiseSigmaHu = kNoiseSigmaHu;       // in the legs (and everywhere for the simple style)
+  double torsoNoiseSigmaHu = kNoiseSigmaHu;  // through the pelvis and abdomen
+};
+
+// Noise grows with the attenuation along the scanner's rays (tube current modulation only partly
+// evens it out): about 17 HU through the legs and 24 HU through the pelvis and abdomen of an adult
+// at CTA doses, blended between the thighs and the hips.
+double noiseSigmaAt(const Look& look, double zMm) {
+  const double t = std::clamp((zMm - 820.0) / 80.0, 0.0, 1.0);
+  return glm::mix(look.noiseSigmaHu, look.torsoNoiseSigmaHu, t);
+}
+
+Look lookOf(PhantomStyle style) {
+  // Arterial-phase CTA: 15-25 HU in soft tissue.
+  if (style == PhantomStyle::realistic) return {true, true, 17, 24};
+  return {false, false, kNoiseSigmaHu, kNoiseSigmaHu};
+}
+
 struct PhantomRasteriser {
   Volume& volume;
   std::uint64_t seedKey;
   double blendMm;  // width of the partial-volume ramp at every surface
   bool groundTruthLabels;
+  Look look;
   TableSlice table;
   std::vector<FootPart> feet;
   std::vector<Placed<FilledPart>> soft, lumen, plaques;
@@ -276,6 +378,7 @@ struct PhantomRasteriser {
 
   // Skin, fat, muscle (and in the torso, muscle wall then viscera) by depth below the outline,
   // over the background density.
+  template <bool kRealistic>
   TissueSample tissue(const std::vector<BodySection>& sections,
                       const std::vector<const FootPart*>& feetHere, glm::dvec3 p,
                       float background) const {
@@ -291,10 +394,13 @@ struct PhantomRasteriser {
     const float d = float(sd);
     float hu = background;
     if (d > 0.5f * float(blendMm)) return {hu, d};
+    // Compile-time densities: the simple style's arithmetic (and its bytes) as they always were.
+    constexpr double kViscera = kRealistic ? kRealisticVisceraHu : kVisceraHu;
+    constexpr double kMuscle = kRealistic ? kRealisticMuscleHu : kMuscleHu;
     hu = glm::mix(hu, float(kSkinHu), coverage(d));
     hu = glm::mix(hu, float(kFatHu), coverage(d + float(kSkinMm)));
-    hu = glm::mix(hu, float(kMuscleHu), coverage(d + float(kSkinMm + fat)));
-    if (wall > 0) hu = glm::mix(hu, float(kVisceraHu), coverage(d + float(kSkinMm + fat + wall)));
+    hu = glm::mix(hu, float(kMuscle), coverage(d + float(kSkinMm + fat)));
+    if (wall > 0) hu = glm::mix(hu, float(kViscera), coverage(d + float(kSkinMm + fat + wall)));
     return {hu, d};
   }
 
@@ -313,9 +419,22 @@ struct PhantomRasteriser {
     return pixelsWithin(grid, bounds.grown(blendMm));
   }
 
+  // The density plus its texture at p (mm), if it has one.
+  float textured(float hu, float textureHu, glm::dvec3 p) const {
+    return textureHu > 0 ? hu + textureHu * texture(seedKey, p) : hu;
+  }
+
   void paintFilled(const FilledLayer& layer, std::size_t n, int i, int j, float& hu) const {
     if (!layer.dirty.contains(i, j) || layer.sd[n] >= 0.5f * float(blendMm)) return;
     hu = glm::mix(hu, layer.hu[n], coverage(layer.sd[n]));
+  }
+
+  // paintFilled with the parts' textures; a separate function, so that the simple style's code (and
+  // with it how the compiler contracts its arithmetic) stays as it was: the same bytes.
+  void paintTexturedFilled(const FilledLayer& layer, std::size_t n, int i, int j, glm::dvec3 p,
+                           float& hu) const {
+    if (!layer.dirty.contains(i, j) || layer.sd[n] >= 0.5f * float(blendMm)) return;
+    hu = glm::mix(hu, textured(layer.hu[n], layer.texture[n], p), coverage(layer.sd[n]));
   }
 
   static bool insideFilled(const FilledLayer& layer, std::size_t n, int i, int j) {
@@ -337,6 +456,49 @@ struct PhantomRasteriser {
     hu = glm::mix(hu, layer.coreHu[n], coverage(layer.coreSd[n]));
   }
 
+  void paintTexturedShelled(const ShelledLayer& layer, std::size_t n, int i, int j, glm::dvec3 p,
+                            float& hu) const {
+    if (!layer.dirty.contains(i, j) || layer.outerSd[n] >= 0.5f * float(blendMm)) return;
+    hu = glm::mix(hu, layer.shellHu[n], coverage(layer.outerSd[n]));
+    const float core = coverage(layer.coreSd[n]);
+    if (core > 0) hu = glm::mix(hu, textured(layer.coreHu[n], layer.coreTexture[n], p), core);
+  }
+
+  // The parts over the body's layers at pixel n (point p), in painting order.
+  void paintParts(const SliceLayers& layers, std::size_t n, int i, int j, glm::dvec3 p,
+                  float& hu) const {
+    if (!look.textures) {
+      paintFilled(layers.soft, n, i, j, hu);
+      paintShelled(layers.shelled, n, i, j, hu);
+      paintFilled(layers.lumen, n, i, j, hu);
+      paintFilled(layers.plaques, n, i, j, hu);
+      return;
+    }
+    paintTexturedFilled(layers.soft, n, i, j, p, hu);
+    paintTexturedShelled(layers.shelled, n, i, j, p, hu);
+    paintTexturedFilled(layers.lumen, n, i, j, p, hu);
+    paintTexturedFilled(layers.plaques, n, i, j, p, hu);
+  }
+
+  // The slice's densities plus noise, with their labels, into the volume.
+  void writeSlice(int k, SliceLayers& layers) const {
+    const glm::ivec2 dims(volume.dims);
+    const std::size_t pixels = std::size_t(dims.x) * dims.y;
+    const std::size_t sliceStart = std::size_t(k) * pixels;
+    Voxel* out = volume.voxels.data() + sliceStart;
+    if (look.correlatedNoise) {
+      const float sigma = float(noiseSigmaAt(look, sliceZ(k)));
+      correlatedNoise(seedKey, k, dims, layers.noise, layers.noiseRows);
+      for (std::size_t n = 0; n < pixels; ++n)
+        out[n] = encodeVoxel(layers.hu[n] + sigma * layers.noise[n], layers.labels[n]);
+      return;
+    }
+    for (std::size_t n = 0; n < pixels; ++n) {  // the simple style's white noise
+      const float hu = layers.hu[n] + float(kNoiseSigmaHu) * gaussianNoise(seedKey, sliceStart + n);
+      out[n] = encodeVoxel(hu, layers.labels[n]);
+    }
+  }
+
   void rasteriseSlice(int k, SliceLayers& layers) const {
     const SliceGrid g = grid();
     const double z = sliceZ(k);
@@ -354,24 +516,22 @@ struct PhantomRasteriser {
     }
     const PixelRect body = bodyRect(g, sections, feetHere);
 
-    const std::size_t sliceStart = std::size_t(k) * g.dims.x * g.dims.y;
-    Voxel* out = volume.voxels.data() + sliceStart;
     for (int j = 0; j < g.dims.y; ++j) {
       for (int i = 0; i < g.dims.x; ++i) {
         const std::size_t n = std::size_t(j) * g.dims.x + i;
         TissueSample sample{table.hu[n]};
         if (body.contains(i, j)) {
-          sample = tissue(sections, feetHere, glm::dvec3(g.x(i), g.y(j), z), table.hu[n]);
-          paintFilled(layers.soft, n, i, j, sample.hu);
-          paintShelled(layers.shelled, n, i, j, sample.hu);
-          paintFilled(layers.lumen, n, i, j, sample.hu);
-          paintFilled(layers.plaques, n, i, j, sample.hu);
+          const glm::dvec3 p(g.x(i), g.y(j), z);
+          sample = look.textures ? tissue<true>(sections, feetHere, p, table.hu[n])
+                                 : tissue<false>(sections, feetHere, p, table.hu[n]);
+          paintParts(layers, n, i, j, p, sample.hu);
         }
-        const float hu = sample.hu + float(kNoiseSigmaHu) * gaussianNoise(seedKey, sliceStart + n);
-        out[n] =
-            encodeVoxel(hu, groundTruthLabels ? groundTruthLabel(layers, n, i, j, sample.bodySd) : 0);
+        layers.hu[n] = sample.hu;
+        layers.labels[n] =
+            std::uint8_t(groundTruthLabels ? groundTruthLabel(layers, n, i, j, sample.bodySd) : 0);
       }
     }
+    writeSlice(k, layers);
     layers.soft.clear(g);
     layers.shelled.clear(g);
     layers.lumen.clear(g);
@@ -400,6 +560,12 @@ std::vector<CenterlinePath> toPhysical(std::vector<CenterlinePath> paths) {
 
 }  // namespace
 
+std::optional<PhantomStyle> parsePhantomStyle(const std::string& name) {
+  if (name == "realistic") return PhantomStyle::realistic;
+  if (name == "simple") return PhantomStyle::simple;
+  return std::nullopt;
+}
+
 Phantom generatePhantom(const PhantomOptions& options, const std::function<void(double)>& progress) {
   const glm::ivec3 dims = options.dims;
   if (dims.x < 1 || dims.y < 1 || dims.z < 1) {
@@ -407,7 +573,7 @@ Phantom generatePhantom(const PhantomOptions& options, const std::function<void(
   }
   Phantom phantom;
   phantom.volume = makePhantomVolume(dims);
-  const Anatomy anatomy = buildAnatomy();
+  const Anatomy anatomy = buildAnatomy(options.style);
   const glm::dvec3 spacing = phantom.volume.spacing;
   // Surfaces ramp over two voxels, about a CT scanner's point-spread: a one-voxel ramp is so sharp
   // that trilinear iso-surfaces terrace into visible rings on smooth bones.
@@ -418,6 +584,7 @@ Phantom generatePhantom(const PhantomOptions& options, const std::function<void(
                                mix64(options.seed + 0x632be59bd9b4e019ull),
                                blendMm,
                                options.groundTruthLabels,
+                               lookOf(options.style),
                                {},
                                anatomy.feet,
                                place(anatomy.softParts, margin),

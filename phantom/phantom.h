@@ -5,9 +5,15 @@
 // (aorta -> common/external iliac -> femoral -> popliteal -> anterior/posterior tibial) whose
 // radius tapers, with a tortuous and a near-horizontal segment, calcified plaques and a stenosis.
 // Under the body lies the scanner table: a curved carbon-fibre shell with a foam pad on it.
+// The realistic style (the default) adds what makes real CT expensive to render: enhancing organs
+// at arterial-phase densities (kidney cortex and medulla, liver, spleen, pancreas, bowel loops),
+// psoas muscles, visceral fat, textured cancellous bone, fatty marrow, hundreds of small
+// contrast-filled branches and in-plane correlated noise; the simple style is the phantom as it was
+// before (clean tissue, white noise), kept for the golden images and the tests built on it.
 // Same options, same bytes, whatever the thread count.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +24,8 @@
 
 namespace angio {
 
+enum class PhantomStyle { realistic, simple };
+
 struct PhantomOptions {
   glm::ivec3 dims{512, 512, 1200};
   std::uint64_t seed = 1;
@@ -26,7 +34,13 @@ struct PhantomOptions {
   // where lumen or plaque is painted over bone. Off, the label bits are 0. The label bits cost no
   // memory, where a separate label volume would add half the volume's size.
   bool groundTruthLabels = false;
+  PhantomStyle style = PhantomStyle::realistic;
+
+  friend bool operator==(const PhantomOptions&, const PhantomOptions&) = default;
 };
+
+// "realistic" or "simple"; nullopt for anything else.
+std::optional<PhantomStyle> parsePhantomStyle(const std::string& name);
 
 struct Phantom {
   Volume volume;

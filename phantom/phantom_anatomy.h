@@ -23,20 +23,24 @@ using Solid = std::variant<Capsule, Ellipsoid, EllipticCylinder>;
 double signedDistance(const Solid& solid, glm::dvec3 p);
 Bounds boundsOf(const Solid& solid);
 
-// A region of one density (discs, organs, a piece of vessel lumen, a plaque).
+// A region of one density (discs, organs, a piece of vessel lumen, a plaque); textureHu > 0 adds a
+// smooth random texture of about that standard deviation (organ heterogeneity).
 struct FilledPart {
   Solid solid;
   double hu = 0;
+  double textureHu = 0;
 };
 
-// A solid with a shell of shellMm around a core: a bone (cortex around cancellous bone or marrow)
-// or a kidney (enhancing cortex around the medulla).
+// A solid with a shell of shellMm around a core: a bone (cortex around cancellous bone or marrow),
+// a kidney (enhancing cortex around the medulla) or a bowel loop (enhancing wall around its
+// contents). coreTextureHu > 0 textures the core (trabecular bone, marrow, bowel contents).
 struct ShelledPart {
   Solid solid;
   double shellMm = 0;
   double shellHu = 0;
   double coreHu = 0;
-  int label = 0;  // ground truth of the whole solid: kBoneLabel for bones, 0 for kidneys
+  int label = 0;  // ground truth of the whole solid: kBoneLabel for bones, 0 for kidneys and bowel
+  double coreTextureHu = 0;
 };
 
 // A cross-section of the body in one axial slice: an ellipse with skin, a subcutaneous fat layer of
@@ -83,7 +87,7 @@ struct Anatomy {
   std::vector<CenterlinePath> paths;  // ground-truth centerlines in the anatomy frame
 };
 
-Anatomy buildAnatomy();
+Anatomy buildAnatomy(PhantomStyle style);
 
 // The body's axial cross-sections at height z (torso and/or legs; empty below the legs).
 std::vector<BodySection> bodySectionsAt(double zMm);
@@ -95,5 +99,11 @@ inline constexpr double kFatHu = -100;
 inline constexpr double kMuscleHu = 50;
 inline constexpr double kVisceraHu = 30;
 inline constexpr double kSkinMm = 2;
+
+// The realistic style fills the abdominal cavity around its organs and bowel with visceral fat
+// (mixed with mesentery) instead of uniform soft tissue.
+inline constexpr double kRealisticVisceraHu = -80;
+// Skeletal muscle enhances a little in the arterial phase.
+inline constexpr double kRealisticMuscleHu = 60;
 
 }  // namespace angio::phantom

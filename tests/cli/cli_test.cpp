@@ -61,8 +61,9 @@ TEST_F(Cli, BadOptionValuesAreRejected) {
 
 TEST_F(Cli, PhantomThenInfoThenRenderEveryQuality) {
   const fs::path volume = dir / "phantom.mha", centerlines = dir / "phantom.csv";
-  const CliRun phantom = runAngioray("phantom " + volume.string() + " --size 64x64x150 --centerlines " +
-                                     centerlines.string());
+  const CliRun phantom =
+      runAngioray("phantom " + volume.string() + " --size 64x64x150 --style simple --centerlines " +
+                  centerlines.string());
   ASSERT_EQ(phantom.exitCode, 0) << phantom.output;
   EXPECT_TRUE(fs::exists(volume));
   EXPECT_GT(fs::file_size(centerlines), 100u);
@@ -86,7 +87,7 @@ TEST_F(Cli, PhantomThenInfoThenRenderEveryQuality) {
 
 TEST_F(Cli, UnknownTransferFunctionNamesIt) {
   const fs::path volume = dir / "v.nrrd";
-  ASSERT_EQ(runAngioray("phantom " + volume.string() + " --size 32x32x64").exitCode, 0);
+  ASSERT_EQ(runAngioray("phantom " + volume.string() + " --size 32x32x64 --style simple").exitCode, 0);
   const CliRun run =
       runAngioray("render " + volume.string() + " --tf no-such-tf --out " + (dir / "x.png").string());
   EXPECT_NE(run.exitCode, 0);

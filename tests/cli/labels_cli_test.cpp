@@ -62,8 +62,9 @@ TEST_F(LabelsCli, SegmentWritesLabelsThatRenderLikeTheGroundTruthsAndSlicerSegme
 }
 
 TEST_F(LabelsCli, BadLabelInputIsOneLineNamingTheFile) {
-  const auto otherGrid = runAngioray("phantom " + file("small.nrrd") + " --size 48x48x100 --labels " +
-                                     file("small-labels.nrrd"));
+  const auto otherGrid =
+      runAngioray("phantom " + file("small.nrrd") + " --size 48x48x100 --style simple --labels " +
+                  file("small-labels.nrrd"));
   ASSERT_EQ(otherGrid.exitCode, 0) << otherGrid.output;
   for (const auto& [labels, problem] :
        {std::pair{file("small-labels.nrrd"), std::string("not on the volume's grid")},

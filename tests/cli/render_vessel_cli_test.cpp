@@ -69,8 +69,9 @@ class RenderVesselCli : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = fs::temp_directory_path() / ("angioray-render-vessel-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    const ProgramRun run = runAngioray("phantom " + volume().string() +
-                                       " --size 128x128x300 --centerlines " + centerlines().string());
+    const ProgramRun run =
+        runAngioray("phantom " + volume().string() +
+                    " --size 128x128x300 --style simple --centerlines " + centerlines().string());
     ASSERT_EQ(run.exitCode, 0) << run.output;
     writeTf(dir_ / "opaque.json", "opaque white", 1.0);
     writeTf(dir_ / "clear.json", "transparent", 0.0);

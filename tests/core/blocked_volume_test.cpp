@@ -389,7 +389,7 @@ TEST(BlockedVolume, ReportAddsUp) {
 // Timing and memory on the benchmark phantom; not a unit test (it times, and takes a while).
 // Run: core_tests --gtest_also_run_disabled_tests --gtest_filter='*PhantomBlockingReport*'
 TEST(BlockedVolume, DISABLED_PhantomBlockingReport) {
-  const Volume volume = generatePhantom({}).volume;
+  const Volume volume = generatePhantom({.style = PhantomStyle::simple}).volume;
   std::vector<double> buildMs, classifyMs;
   BlockingReport report;
   for (int run = 0; run < 5; ++run) {

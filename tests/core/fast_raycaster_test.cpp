@@ -82,6 +82,7 @@ std::vector<Case> coverage(int anglesPerCombination) {
 
 TEST(FastRaycaster, MatchesReferenceOnPhantom) {
   PhantomOptions options;
+  options.style = PhantomStyle::simple;
   options.dims = {48, 48, 112};
   const Phantom phantom = generatePhantom(options);
   expectSameImages(phantom.volume, loadPresetOrFile("cta-vessels-bone"), coverage(2));
@@ -108,6 +109,7 @@ TEST(FastRaycaster, MatchesReferenceOnRealAorta) {
 // rather than skipping tiles by the wrong visibility.
 TEST(FastRaycaster, RefusesAClassificationOfAnotherAxisOrOtherTfs) {
   PhantomOptions options;
+  options.style = PhantomStyle::simple;
   options.dims = {32, 32, 48};
   const Phantom phantom = generatePhantom(options);
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));

@@ -13,7 +13,8 @@ namespace angio {
 namespace {
 
 struct Scene {
-  Volume volume = generatePhantom({{48, 48, 96}, 3}).volume;
+  Volume volume =
+      generatePhantom({.dims = {48, 48, 96}, .seed = 3, .style = PhantomStyle::simple}).volume;
   TfTable table =
       buildTable({"bone and vessels",
                   {{-1024, {0, 0, 0}, 0}, {150, {1, 0.3f, 0.2f}, 0}, {400, {1, 1, 0.9f}, 0.5}}});

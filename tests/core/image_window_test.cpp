@@ -77,7 +77,8 @@ std::vector<Case> cases(glm::dvec3 E) {
 }
 
 TEST(ImageWindow, BothRaycastersRenderExactlyTheWholeImagesPixels) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
   const glm::dvec3 E = domainExtent(volume);
   for (const Case& c : cases(E)) {
@@ -110,7 +111,8 @@ TEST(ImageWindow, BothRaycastersRenderExactlyTheWholeImagesPixels) {
 }
 
 TEST(ImageWindow, RegionsOfTheWindowGiveTheWholeImagesPixels) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const auto [focus, context] = test_support::vesselRegionTables();
   RenderParams p;
   p.angleDeg = 140;
@@ -132,7 +134,8 @@ TEST(ImageWindow, RegionsOfTheWindowGiveTheWholeImagesPixels) {
 }
 
 TEST(ImageWindow, APickInTheWindowFindsTheWholeImagesPoint) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
   RenderParams p;
   p.angleDeg = 70;

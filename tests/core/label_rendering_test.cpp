@@ -48,7 +48,8 @@ LabelStyle ownTf(int label, glm::vec3 color, double opacity) {
 // The phantom with label 1 on its dense voxels (bone cortex and plaques, > 600 HU) and label 3 on
 // a box through the pelvis and the arteries, so labels cut through bone, vessels and air.
 Volume labelledPhantom() {
-  Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   for (int k = 0; k < volume.dims.z; ++k)
     for (int j = 0; j < volume.dims.y; ++j)
       for (int i = 0; i < volume.dims.x; ++i) {

@@ -75,7 +75,8 @@ TEST(RegionRendering, EachRegionUsesItsOwnTf) {
 }
 
 TEST(RegionRendering, FastMatchesReferenceWithRegions) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const auto [focusTable, contextTable] = test_support::vesselRegionTables();
   // The outside clipped; or the context clipped between a rendered focus and outside, so the
   // fast raycaster's leaps over clipped stretches start and end inside rays.

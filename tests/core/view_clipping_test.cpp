@@ -245,7 +245,8 @@ std::vector<std::pair<std::string, ViewClipping>> clippings(glm::dvec3 E) {
 }
 
 TEST(ClippedRendering, FastMatchesReferenceForEveryFilterAndMode) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
   int n = 0;
   for (const auto& [name, clipping] : clippings(domainExtent(volume)))
@@ -267,7 +268,8 @@ TEST(ClippedRendering, FastMatchesReferenceForEveryFilterAndMode) {
 }
 
 TEST(ClippedRendering, FastMatchesReferenceWithVesselGlyphRegionsAndACrop) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const auto [focus, contextTable] = test_support::vesselRegionTables();
   for (Quality quality : {Quality::medium, Quality::high})
     for (double angle : {25.0, 160.0}) {
@@ -300,7 +302,8 @@ TEST(ClippedRendering, APickFindsTheFirstSampleBehindTheCut) {
 }
 
 TEST(ClippedRendering, FastImageIsTheSameBytesWithOneThread) {
-  const Volume volume = generatePhantom({{48, 48, 112}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
   RenderParams p;
   p.angleDeg = 33;

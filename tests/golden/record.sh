@@ -1,21 +1,16 @@
-#!/usr/bin/env bash
-# Records the golden corpus: render sidecars (and CPR command lines) that cover every kind of image
-# angioray makes, with the dataset paths replaced by placeholders. Run once, on the commit whose
-# images are the reference; the hashes are then written by the golden test in record mode:
-#   tests/golden/record.sh build/angioray
-#   ANGIORAY_GOLDEN_RECORD=1 build/render_tests --gtest_filter='GoldenCorpus.*'
-set -euo pipefail
-bin=$(realpath "$1")
-here=$(cd "$(dirname "$0")" && pwd)
-shared=$(realpath "$here/../../../shared/data")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$here/sidecars"
-rm -f "$here"/sidecars/*.json
+#!/ usr / bin / env bash
+#Records the golden corpus : render sidecars(and CPR command lines) that cover every kind of image
+#angioray makes, with the dataset paths replaced by placeholders.Run once, on the commit whose
+#images are the reference; the hashes are then written by the golden test in record mode:
+#tests / golden / record.sh build / angioray
+#ANGIORAY_GOLDEN_RECORD = 1 build / render_tests-- gtest_filter = 'GoldenCorpus.*'
+set - euo pipefail bin = $(realpath "$1") here = $(cd "$(dirname " $0 ")" && pwd) shared =
+    $(realpath "$here/../../../shared/data") work =
+        $(mktemp - d) trap 'rm -rf "$work"' EXIT mkdir - p "$here/sidecars" rm - f "$here" / sidecars/*.json
 
 phantom=$work/phantom.nrrd
 phantom_cl=$work/phantom.csv
-"$bin" phantom "$phantom" --size 96x96x200 --centerlines "$phantom_cl" >/dev/null
+"$bin" phantom "$phantom" --size 96x96x200 --style simple --centerlines "$phantom_cl" >/dev/null
 aorta=$shared/aorta.mha
 aorta_cl=$shared/aorta-centerlines.csv
 aorta_tf=$(realpath "$here/../data/aorta-vmtk-tf.json")

@@ -29,7 +29,8 @@ using angio::test_support::runAngioray;
 using GuiRun = angio::test_support::ProgramRun;
 
 // Tall enough for the whole side panel; the phantom started on differs from the opened volume.
-const std::string kGui = "gui --headless --phantom-size 96x96x200 --size 1000x1400 --timeout 120";
+const std::string kGui =
+    "gui --headless --phantom-size 96x96x200 --phantom-style simple --size 1000x1400 --timeout 120";
 
 Json readJson(const fs::path& path) {
   std::ifstream in(path);
@@ -61,7 +62,7 @@ class GuiData : public ::testing::Test {
     fs::remove_all(shared_);
     fs::create_directories(shared_);
     volume_ = shared_ / "small.mha";
-    const GuiRun run = runAngioray("phantom " + volume_.string() + " --size 64x64x128");
+    const GuiRun run = runAngioray("phantom " + volume_.string() + " --size 64x64x128 --style simple");
     ASSERT_EQ(run.exitCode, 0) << run.output;
   }
   static void TearDownTestSuite() { fs::remove_all(shared_); }

@@ -221,7 +221,7 @@ TEST_F(GuiHybrid, CheckboxShowsTheCprInTheFootprintAndTheExportIsWhatRenderParam
 }
 
 TEST_F(GuiHybrid, AnotherDatasetDropsTheCenterlinesVesselGlyphCprAndTheEditedTfAndSaysSo) {
-  const auto other = runAngioray("phantom " + file("other.nrrd") + " --size 64x64x128");
+  const auto other = runAngioray("phantom " + file("other.nrrd") + " --size 64x64x128 --style simple");
   ASSERT_EQ(other.exitCode, 0) << other.output;
   const Json layout = startLayout();
   const std::string steps = R"([

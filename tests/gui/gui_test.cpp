@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 // Tall enough for the whole side panel (export section included) without scrolling.
-const std::string kSmall = " --phantom-size 96x96x200 --size 1000x1400 --timeout 120";
+const std::string kSmall =
+    " --phantom-size 96x96x200 --phantom-style simple --size 1000x1400 --timeout 120";
 
 using angio::test_support::runAngioray;
 using GuiRun = angio::test_support::ProgramRun;
@@ -416,10 +417,10 @@ TEST_F(Gui, WindowUnderXvfbRotatesWithARealMouseDrag) {
   if (!installed("xdotool")) GTEST_SKIP() << "xdotool not installed (apt package xdotool)";
   const fs::path session = dir / "session.sh";
   // XDG_CONFIG_HOME: the window writes its last session there when it closes.
-  std::ofstream(session)
-      << "XDG_CONFIG_HOME=" + file("config") + " " + std::string(ANGIORAY_BINARY) +
-             " gui --phantom-size 96x96x200 --size 800x600 --quit-after 60 --state-out " +
-             file("window.json") + " --screenshot " + file("window.png") + R"( &
+  std::ofstream(session) << "XDG_CONFIG_HOME=" + file("config") + " " + std::string(ANGIORAY_BINARY) +
+                                " gui --phantom-size 96x96x200 --phantom-style simple --size 800x600 "
+                                "--quit-after 60 --state-out " +
+                                file("window.json") + " --screenshot " + file("window.png") + R"( &
 app=$!
 window=$(xdotool search --sync --onlyvisible --name '^angioray$' | head -1)
 sleep 1.5

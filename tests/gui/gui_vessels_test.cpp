@@ -89,8 +89,9 @@ class GuiVessels : public ::testing::Test {
     suite_->dir = fs::temp_directory_path() / ("angioray-gui-vessels-" + std::to_string(getpid()));
     fs::remove_all(suite_->dir);
     fs::create_directories(suite_->dir);
-    const auto made = runAngioray("phantom " + at("phantom.nrrd") +
-                                  " --size 256x256x600 --centerlines " + at("phantom.csv"));
+    const auto made =
+        runAngioray("phantom " + at("phantom.nrrd") +
+                    " --size 256x256x600 --style simple --centerlines " + at("phantom.csv"));
     ASSERT_EQ(made.exitCode, 0) << made.output;
     suite_->truth = readTruth(suite_->dir / "phantom.csv");
     ASSERT_GE(suite_->truth.size(), 1u);

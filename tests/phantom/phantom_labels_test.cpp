@@ -14,6 +14,7 @@ constexpr glm::ivec3 kDims{128, 128, 300};
 
 Phantom labelledPhantom(glm::ivec3 dims) {
   PhantomOptions options;
+  options.style = PhantomStyle::simple;
   options.dims = dims;
   options.groundTruthLabels = true;
   return generatePhantom(options);
@@ -91,8 +92,8 @@ TEST_F(PhantomLabels, TableRunsUnderTheBodyTheWholeLength) {
 
 TEST(PhantomGroundTruth, LabelsDoNotChangeTheDensities) {
   const glm::ivec3 dims{64, 64, 120};
-  const Phantom plain = generatePhantom({dims, 5});
-  PhantomOptions options{dims, 5};
+  const Phantom plain = generatePhantom({.dims = dims, .seed = 5, .style = PhantomStyle::simple});
+  PhantomOptions options{.dims = dims, .seed = 5, .style = PhantomStyle::simple};
   options.groundTruthLabels = true;
   const Phantom labelled = generatePhantom(options);
   std::size_t withLabel = 0, densityDiffers = 0;

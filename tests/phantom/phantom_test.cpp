@@ -21,7 +21,8 @@ constexpr glm::ivec3 kSmallDims{96, 96, 240};
 constexpr glm::ivec3 kMediumDims{128, 128, 300};
 
 const Phantom& mediumPhantom() {
-  static const Phantom phantom = generatePhantom({kMediumDims, 1});
+  static const Phantom phantom =
+      generatePhantom({.dims = kMediumDims, .seed = 1, .style = PhantomStyle::simple});
   return phantom;
 }
 
@@ -52,7 +53,8 @@ double maxHuNear(const Volume& volume, glm::dvec3 physical, double radiusMm) {
 }
 
 TEST(Phantom, HasTheRequestedDimsAndTheFixedPhysicalSize) {
-  const Phantom phantom = generatePhantom({kSmallDims, 1});
+  const Phantom phantom =
+      generatePhantom({.dims = kSmallDims, .seed = 1, .style = PhantomStyle::simple});
   const Volume& volume = phantom.volume;
   EXPECT_EQ(volume.dims, kSmallDims);
   EXPECT_EQ(volume.voxels.size(), std::size_t(96) * 96 * 240);
@@ -70,15 +72,16 @@ TEST(Phantom, DefaultSpacingIsPointEightByOneMillimetre) {
   const PhantomOptions defaults;
   EXPECT_EQ(defaults.dims, glm::ivec3(512, 512, 1200));
   // The physical size does not depend on dims: check it through a small volume's extent.
-  const Phantom phantom = generatePhantom({{64, 64, 100}, 1});
+  const Phantom phantom =
+      generatePhantom({.dims = {64, 64, 100}, .seed = 1, .style = PhantomStyle::simple});
   const glm::dvec3 size = phantom.volume.spacing * glm::dvec3(phantom.volume.dims);
   EXPECT_NEAR(size.x / 512, 0.8, 1e-12);
   EXPECT_NEAR(size.z / 1200, 1.0, 1e-12);
 }
 
 TEST(Phantom, SameOptionsGiveTheSameBytes) {
-  const Phantom a = generatePhantom({kSmallDims, 7});
-  const Phantom b = generatePhantom({kSmallDims, 7});
+  const Phantom a = generatePhantom({.dims = kSmallDims, .seed = 7, .style = PhantomStyle::simple});
+  const Phantom b = generatePhantom({.dims = kSmallDims, .seed = 7, .style = PhantomStyle::simple});
   EXPECT_TRUE(a.volume.voxels == b.volume.voxels);
 }
 
@@ -86,18 +89,19 @@ TEST(Phantom, ThreadCountDoesNotChangeTheBytes) {
   std::vector<Voxel> single, dual;
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-    single = generatePhantom({kSmallDims, 3}).volume.voxels;
+    single =
+        generatePhantom({.dims = kSmallDims, .seed = 3, .style = PhantomStyle::simple}).volume.voxels;
   }
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-    dual = generatePhantom({kSmallDims, 3}).volume.voxels;
+    dual = generatePhantom({.dims = kSmallDims, .seed = 3, .style = PhantomStyle::simple}).volume.voxels;
   }
   EXPECT_TRUE(single == dual);
 }
 
 TEST(Phantom, AnotherSeedChangesTheNoiseNotTheAnatomy) {
-  const Phantom a = generatePhantom({kSmallDims, 1});
-  const Phantom b = generatePhantom({kSmallDims, 2});
+  const Phantom a = generatePhantom({.dims = kSmallDims, .seed = 1, .style = PhantomStyle::simple});
+  const Phantom b = generatePhantom({.dims = kSmallDims, .seed = 2, .style = PhantomStyle::simple});
   std::size_t differing = 0;
   double sumAbsDifference = 0;
   for (std::size_t n = 0; n < a.volume.voxels.size(); ++n) {
@@ -206,7 +210,8 @@ TEST(Phantom, CtaVesselsPresetShowsOneToTwoPercentOfVoxels) {
   const TfTable table = buildTable(loadPresetOrFile("cta-vessels"));
   ASSERT_FALSE(table.anyVisible(densityOfHu(0), densityOfHu(130)));
   ASSERT_TRUE(table.anyVisible(densityOfHu(400), densityOfHu(400)));
-  const Volume volume = generatePhantom({{256, 256, 600}, 1}).volume;
+  const Volume volume =
+      generatePhantom({.dims = {256, 256, 600}, .seed = 1, .style = PhantomStyle::simple}).volume;
   std::size_t visible = 0;
   for (Voxel v : volume.voxels) visible += table.rgba[densityOf(v)].a > 0.f;
   const double fraction = double(visible) / volume.voxels.size();
@@ -216,7 +221,8 @@ TEST(Phantom, CtaVesselsPresetShowsOneToTwoPercentOfVoxels) {
 
 TEST(Phantom, FemursAreCorticalBoneInTheThighs) {
   // Mid-shaft of each femur: 720 mm above the soles, ~111 mm from the midline, cortex 1500 HU.
-  const Phantom phantom = generatePhantom({kSmallDims, 1});
+  const Phantom phantom =
+      generatePhantom({.dims = kSmallDims, .seed = 1, .style = PhantomStyle::simple});
   const double z = 720 - 1200;  // physical z: the top of the box is at 0
   for (double side : {1.0, -1.0}) {
     EXPECT_GT(maxHuNear(phantom.volume, {111 * side, 36, z}, 12), 1000) << side;
@@ -226,7 +232,8 @@ TEST(Phantom, FemursAreCorticalBoneInTheThighs) {
 }
 
 TEST(Phantom, AirSurroundsTheBody) {
-  const Phantom phantom = generatePhantom({kSmallDims, 1});
+  const Phantom phantom =
+      generatePhantom({.dims = kSmallDims, .seed = 1, .style = PhantomStyle::simple});
   const Volume& volume = phantom.volume;
   const glm::ivec3 last = volume.dims - 1;
   for (int k = 0; k < volume.dims.z; k += 10) {
@@ -246,7 +253,8 @@ TEST(Phantom, AirSurroundsTheBody) {
 
 TEST(Phantom, ReportsProgressUpToOne) {
   std::vector<double> reports;
-  generatePhantom({{32, 32, 100}, 1}, [&](double f) { reports.push_back(f); });
+  generatePhantom({.dims = {32, 32, 100}, .seed = 1, .style = PhantomStyle::simple},
+                  [&](double f) { reports.push_back(f); });
   ASSERT_GE(reports.size(), 2u);
   EXPECT_TRUE(std::is_sorted(reports.begin(), reports.end()));
   EXPECT_GT(reports.front(), 0.0);
@@ -254,7 +262,8 @@ TEST(Phantom, ReportsProgressUpToOne) {
 }
 
 TEST(Phantom, RejectsNonPositiveDims) {
-  EXPECT_THROW(generatePhantom({{0, 10, 10}, 1}), std::invalid_argument);
+  EXPECT_THROW(generatePhantom({.dims = {0, 10, 10}, .seed = 1, .style = PhantomStyle::simple}),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ namespace fs = std::filesystem;
 const Phantom& smallPhantomWithPaths() {
   static const Phantom phantom = [] {
     PhantomOptions options;
+    options.style = PhantomStyle::simple;
     options.dims = {32, 32, 64};
     return generatePhantom(options);
   }();

@@ -29,6 +29,7 @@ struct PhantomCase {
 
 PhantomCase phantomCase(glm::ivec3 dims) {
   PhantomOptions options;
+  options.style = PhantomStyle::simple;
   options.dims = dims;
   options.groundTruthLabels = true;
   PhantomCase c{generatePhantom(options), {}};

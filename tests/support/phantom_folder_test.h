@@ -31,9 +31,9 @@ class PhantomFolderTest : public ::testing::Test {
            std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    const auto run =
-        runAngioray("phantom " + file("phantom.nrrd") + " --size 96x96x200 --centerlines " +
-                    file("phantom.csv") + (withLabels() ? " --labels " + file("truth.nrrd") : ""));
+    const auto run = runAngioray(
+        "phantom " + file("phantom.nrrd") + " --size 96x96x200 --style simple --centerlines " +
+        file("phantom.csv") + (withLabels() ? " --labels " + file("truth.nrrd") : ""));
     ASSERT_EQ(run.exitCode, 0) << run.output;
   }
   void TearDown() override { std::filesystem::remove_all(dir); }

@@ -15,6 +15,7 @@ struct PhantomInVolumeFrame {
 
 inline PhantomInVolumeFrame phantomInVolumeFrame(glm::ivec3 dims) {
   PhantomOptions options;
+  options.style = PhantomStyle::simple;
   options.dims = dims;
   Phantom phantom = generatePhantom(options);
   Centerlines centerlines = toVolumeFrame(phantom.centerlines, phantom.volume);

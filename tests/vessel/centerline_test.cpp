@@ -255,7 +255,8 @@ TEST(CenterlineValidation, PointsOutsideTheVolumeAreCountedPerPath) {
 TEST(CenterlinePhantom, PathsInTheVolumeFrameLieInsideTheLumen) {
   // 128 x 128 x 300 (3.2 x 3.2 x 4 mm voxels): as in the phantom's own test, partial volume lifts
   // >= 95% of the nearest voxels of each path into the lumen range.
-  const Phantom phantom = generatePhantom({{128, 128, 300}, 1});
+  const Phantom phantom =
+      generatePhantom({.dims = {128, 128, 300}, .seed = 1, .style = PhantomStyle::simple});
   const Centerlines physical = phantom.centerlines;
   EXPECT_FALSE(hasError(validateCenterlines(physical)));
   EXPECT_TRUE(checkInsideVolume(physical, phantom.volume).empty());

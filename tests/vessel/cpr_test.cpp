@@ -333,6 +333,7 @@ struct SmallPhantom {
 const SmallPhantom& smallPhantom() {
   static const SmallPhantom phantom = [] {
     PhantomOptions options;
+    options.style = PhantomStyle::simple;
     options.dims = {128, 128, 300};
     Phantom generated = generatePhantom(options);
     SmallPhantom small;

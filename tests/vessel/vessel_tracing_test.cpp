@@ -24,6 +24,7 @@ class PhantomTracing : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     PhantomOptions options;
+    options.style = PhantomStyle::simple;
     phantom_ = new Phantom(generatePhantom(options));
     truth_ = new Centerlines(toVolumeFrame(phantom_->centerlines, phantom_->volume));
   }
