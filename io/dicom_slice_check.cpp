@@ -15,6 +15,7 @@
 #include <gdcmMediaStorage.h>
 #include <gdcmReader.h>
 
+#include "io/dicom_file_walk.h"
 #include "io/input_error.h"
 
 namespace angio {
@@ -274,6 +275,10 @@ void checkPixelDataLength(const fs::path& slice, std::uint64_t offset, const gdc
 
 DicomSliceTags checkDicomSlice(const fs::path& reported, const fs::path& slice, bool requirePlacement) {
   const SliceProblem problem{reported, slice};
+  // Our walk first: GDCM's reader must only ever see well-formed elements (io/dicom_element_check.h).
+  const std::optional<DicomFileFacts> facts = walkDicomFile(reported, slice);
+  if (!facts) problem.fail("is not a DICOM file");
+  if (!facts->imageProblem.empty()) problem.fail(facts->imageProblem);
   gdcm::Reader reader;
   reader.SetFileName(slice.c_str());
   if (!reader.ReadUpToTag(kPixelData, {kPixelData})) problem.fail("is not a readable DICOM file");
