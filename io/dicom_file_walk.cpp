@@ -150,6 +150,12 @@ class ElementWalk {
     if (const std::string problem = dicomElementProblem(element, value); !problem.empty())
       fail(element.group, element.element, problem);
     if (!element.topLevel) return;
+    // GDCM keeps the first of two equal tags and sorts the rest: what the walk saw would not be
+    // what GDCM reads.
+    const std::uint32_t tag = std::uint32_t(element.group) << 16 | element.element;
+    if (lastTopLevelTag_ && tag <= *lastTopLevelTag_)
+      fail(element.group, element.element, "is out of order (tags must ascend)");
+    lastTopLevelTag_ = tag;
     if (element.group == 0x0028 && element.element == 0x0103) pixelRepresentationKnown_ = true;
     if (facts_.imageProblem.empty()) facts_.imageProblem = dicomImageProblem(element, value);
   }
@@ -219,7 +225,8 @@ class ElementWalk {
   std::string bytes_;       // the file's first kMaxWalkedBytes
   std::uint64_t fileSize_;  // what the lengths are checked against
   DicomFileFacts facts_;
-  bool pixelRepresentationKnown_ = false;  // (0028,0103) was met at the top level
+  bool pixelRepresentationKnown_ = false;         // (0028,0103) was met at the top level
+  std::optional<std::uint32_t> lastTopLevelTag_;  // the tag before, (group << 16 | element)
 };
 
 }  // namespace

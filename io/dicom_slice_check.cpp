@@ -15,6 +15,7 @@
 #include <gdcmMediaStorage.h>
 #include <gdcmReader.h>
 
+#include "io/dicom_element_check.h"
 #include "io/dicom_file_walk.h"
 #include "io/input_error.h"
 
@@ -75,7 +76,7 @@ std::optional<std::vector<double>> decimals(const gdcm::DataSet& data, const gdc
     char* parsedEnd = nullptr;
     const double value = std::strtod(text.c_str(), &parsedEnd);
     if (text.empty() || *parsedEnd != '\0' || !std::isfinite(value))
-      problem.fail(std::string("has an invalid ") + name + " ('" + bytes->substr(0, 64) + "')");
+      problem.fail(std::string("has an invalid ") + name + " ('" + shownDicomValue(*bytes) + "')");
     values.push_back(value);
     start = end + 1;
   }
@@ -142,11 +143,11 @@ void checkReadableImage(const gdcm::File& file, const SliceProblem& problem) {
   if (!sopClass) sopClass = valueBytes(data, gdcm::Tag(0x0008, 0x0016));
   const std::string uid = trimmed(sopClass.value_or(""));
   if (!gdcm::MediaStorage::IsImage(gdcm::MediaStorage::GetMSType(uid.c_str())))
-    problem.fail("is not an image (SOP class '" + uid.substr(0, 64) + "')");
+    problem.fail("is not an image (SOP class '" + shownDicomValue(uid) + "')");
   if (const auto photometric = valueBytes(data, gdcm::Tag(0x0028, 0x0004))) {
     const std::string name = trimmed(*photometric);
     if (name != "MONOCHROME1" && name != "MONOCHROME2")
-      problem.fail("has PhotometricInterpretation (0028,0004) '" + name.substr(0, 16) +
+      problem.fail("has PhotometricInterpretation (0028,0004) '" + shownDicomValue(name.substr(0, 16)) +
                    "'; need greyscale CT (MONOCHROME1 or MONOCHROME2)");
   }
   if (data.FindDataElement(gdcm::Tag(0x0088, 0x0200)))

@@ -175,6 +175,23 @@ TEST_F(DicomElementCheckTest, RecognitionCodesMustBeAcrNemas) {
   EXPECT_EQ(refusal(), "");
 }
 
+// GDCM keeps the first of two equal tags and sorts the others: the walk would check other values.
+TEST_F(DicomElementCheckTest, ElementsOutOfOrderAreRefused) {
+  expectRefused(
+      true,
+      [](DicomTestSlice& s) {
+        s.append({0x0010, 0x0010, "PN", "DOE^JOHN"});
+      },
+      "element (0010,0010) is out of order (tags must ascend)");
+}
+
+// A value's control characters are escaped, so the message stays one line (a fuzz finding).
+TEST_F(DicomElementCheckTest, ValuesInMessagesAreShownOnOneLine) {
+  expectRefused(
+      true, [](DicomTestSlice& s) { s.set(0x0028, 0x0004, "CS", "MONOCHRO\rE1"); },
+      "has PhotometricInterpretation (0028,0004) 'MONOCHRO\\x0dE1'");
+}
+
 TEST_F(DicomElementCheckTest, ElementProblemsAreEmptyForWellFormedElements) {
   EXPECT_EQ(dicomElementProblem({0x0028, 0x0010, "US", 2}, dicomUnsignedShorts({512})), "");
   EXPECT_EQ(dicomElementProblem({0x0028, 0x0010, "", 2}, dicomUnsignedShorts({512})), "");

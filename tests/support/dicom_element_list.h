@@ -52,6 +52,11 @@ class DicomTestSlice {
                       const std::string& value) {
     return set(DicomTestElement{group, element, vr, value, false});
   }
+  // Adds the element last, out of tag order if it comes before the others.
+  DicomTestSlice& append(DicomTestElement element) {
+    elements_.push_back(std::move(element));
+    return *this;
+  }
   DicomTestSlice& remove(std::uint16_t group, std::uint16_t element) {
     std::erase_if(elements_,
                   [&](const DicomTestElement& e) { return e.group == group && e.element == element; });
