@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
+#include "io/dicom_element_check.h"
 #include "io/input_error.h"
 
 namespace angio {
@@ -50,58 +52,49 @@ class ElementWalk {
         inMeta = false;
         syntax = syntaxOf(transferSyntax);
         if (transferSyntax.rfind("1.2.840.10008.1.2.1.99", 0) == 0)  // the data set is zlib data
-          failFile("its data set is deflated (transfer syntax " + transferSyntax +
-                   "), which is not read; store it uncompressed");
+          refuse("its data set is deflated (transfer syntax " + transferSyntax +
+                 "), which is not read; store it uncompressed");
+        if (transferSyntax.empty()) failFile("its file meta group has no TransferSyntaxUID (0002,0010)");
+        if (const std::string problem = dicomTransferSyntaxProblem(transferSyntax); !problem.empty())
+          refuse("its data set " + problem);
       }
       const Syntax current = inMeta ? Syntax{} : syntax;
       const std::uint16_t group = read16(at, current.bigEndian);
-      const std::uint16_t element = read16(at + 2, current.bigEndian);
+      const std::uint16_t elementNumber = read16(at + 2, current.bigEndian);
       std::size_t header = 8;
-      std::uint64_t length = 0;
       if (group == 0xfffe) {  // item and delimiters: always tag + 4-byte length
-        if (open.empty() || (element != 0xe000 && element != 0xe00d && element != 0xe0dd))
-          fail(group, element, "is an item tag outside a sequence");
-        if (element == 0xe0dd) {
-          if (open.back() != kOpen) fail(group, element, "ends a sequence that has a length");
+        if (open.empty() ||
+            (elementNumber != 0xe000 && elementNumber != 0xe00d && elementNumber != 0xe0dd))
+          fail(group, elementNumber, "is an item tag outside a sequence");
+        if (elementNumber == 0xe0dd) {
+          if (open.back() != kOpen) fail(group, elementNumber, "ends a sequence that has a length");
           open.pop_back();
         }
         at += 8;  // an item's contents are walked as elements
         continue;
       }
-      if (current.explicitVr) {
-        const std::string vr = bytes_.substr(at + 4, 2);
-        if (!(std::isupper(static_cast<unsigned char>(vr[0])) &&
-              std::isupper(static_cast<unsigned char>(vr[1]))))
-          fail(group, element, "has no valid value representation");
-        if (!knownVr(vr)) fail(group, element, "has an unknown value representation");
-        if (longForm(vr)) {
-          if (at + 12 > bytes_.size()) fail(group, element, "is cut off");
-          length = read32(at + 8, current.bigEndian);
-          header = 12;
-        } else {
-          length = read16(at + 6, current.bigEndian);
-        }
-        if (vr == "SQ" && inMeta) fail(group, element, "is a sequence in the file meta group");
-        if (vr == "SQ" && length != 0xffffffffu && length <= fileSize_ - at - header) {
-          open.push_back(at + header + length);  // walked into
-          length = 0;
-        }
-      } else {
-        length = read32(at + 4, current.bigEndian);
+      const DicomElementHeader element = headerAt(at, current, inMeta, open.empty(), header);
+      checkElement(element, at + header);
+      std::uint64_t length = element.length;
+      const bool sequence =
+          current.explicitVr ? element.vr == "SQ" : dicomDictionarySequence(group, elementNumber);
+      if (sequence && length != 0xffffffffu && length <= fileSize_ - at - header) {
+        open.push_back(at + header + length);  // walked into
+        length = 0;
       }
       if (length == 0xffffffffu) {  // undefined: a sequence or encapsulated data, walked into
-        if (inMeta) fail(group, element, "has an undefined length in the file meta group");
+        if (inMeta) fail(group, elementNumber, "has an undefined length in the file meta group");
         open.push_back(kOpen);
         at += header;
         continue;
       }
       const std::uint64_t left = fileSize_ - at - header;
       if (length > left)
-        fail(group, element,
+        fail(group, elementNumber,
              "claims " + std::to_string(length) + " bytes where the file has " + std::to_string(left) +
                  " left");
-      if (group == 0x0002 && element == 0x0010) transferSyntax = value(at + header, length);
-      if (open.empty()) noteTopLevel(group, element, at + header, length);
+      if (group == 0x0002 && elementNumber == 0x0010) transferSyntax = value(at + header, length);
+      if (open.empty()) noteTopLevel(group, elementNumber, at + header, length);
       at += header + length;
     }
     requireWholeElements(at, inMeta);
@@ -109,6 +102,39 @@ class ElementWalk {
   }
 
  private:
+  // The header of the element at `at` (whose tag is read); `header` becomes its size in bytes.
+  DicomElementHeader headerAt(std::size_t at, Syntax syntax, bool inMeta, bool topLevel,
+                              std::size_t& header) const {
+    DicomElementHeader element{read16(at, syntax.bigEndian),
+                               read16(at + 2, syntax.bigEndian),
+                               "",
+                               0,
+                               syntax.bigEndian,
+                               topLevel,
+                               pixelRepresentationKnown_};
+    header = 8;
+    if (!syntax.explicitVr) {
+      element.length = read32(at + 4, syntax.bigEndian);
+      return element;
+    }
+    element.vr = bytes_.substr(at + 4, 2);
+    const auto fail = [&](const std::string& problem) {
+      this->fail(element.group, element.element, problem);
+    };
+    if (!(std::isupper(static_cast<unsigned char>(element.vr[0])) &&
+          std::isupper(static_cast<unsigned char>(element.vr[1]))))
+      fail("has no valid value representation");
+    if (!knownVr(element.vr)) fail("has an unknown value representation");
+    if (element.vr == "SQ" && inMeta) fail("is a sequence in the file meta group");
+    if (longForm(element.vr)) {
+      if (at + 12 > bytes_.size()) fail("is cut off");
+      header = 12;
+      element.length = read32(at + 8, syntax.bigEndian);
+    } else {
+      element.length = read16(at + 6, syntax.bigEndian);
+    }
+    return element;
+  }
   // The walk stopped less than a header before the end: GDCM asserts on a file that ends inside its
   // meta group (it reads on for the first data set element) or inside an element header.
   void requireWholeElements(std::uint64_t at, bool inMeta) const {
@@ -116,6 +142,27 @@ class ElementWalk {
     if (inMeta) failFile("the file ends inside its file meta group");
     if (at < fileSize_)
       failFile("the file ends " + std::to_string(fileSize_ - at) + " bytes into an element header");
+  }
+  // GDCM's expectations of one element (io/dicom_element_check.h): a malformed one is refused at
+  // once; one an image must not have (its SOP class, frames, ...) only if the file is an image.
+  void checkElement(const DicomElementHeader& element, std::uint64_t valueAt) {
+    const std::string_view value = valueBytes(valueAt, element.length);
+    if (const std::string problem = dicomElementProblem(element, value); !problem.empty())
+      fail(element.group, element.element, problem);
+    if (!element.topLevel) return;
+    // GDCM keeps the first of two equal tags and sorts the rest: what the walk saw would not be
+    // what GDCM reads.
+    const std::uint32_t tag = std::uint32_t(element.group) << 16 | element.element;
+    if (lastTopLevelTag_ && tag <= *lastTopLevelTag_)
+      fail(element.group, element.element, "is out of order (tags must ascend)");
+    lastTopLevelTag_ = tag;
+    if (element.group == 0x0028 && element.element == 0x0103) pixelRepresentationKnown_ = true;
+    if (facts_.imageProblem.empty()) facts_.imageProblem = dicomImageProblem(element, value);
+  }
+  // The value bytes the walk holds (none for an undefined length, cut at the end of what was read).
+  std::string_view valueBytes(std::uint64_t at, std::uint64_t length) const {
+    if (length == kDicomUndefinedLength || at >= bytes_.size()) return {};
+    return std::string_view(bytes_).substr(at, std::min<std::uint64_t>(length, bytes_.size() - at));
   }
   void noteTopLevel(std::uint16_t group, std::uint16_t element, std::uint64_t valueAt,
                     std::uint64_t length) {
@@ -166,8 +213,11 @@ class ElementWalk {
     failFile(std::string("element ") + tag + " " + problem);
   }
   [[noreturn]] void failFile(const std::string& problem) const {
+    refuse(problem + " (a damaged DICOM file)");
+  }
+  [[noreturn]] void refuse(const std::string& problem) const {
     const std::string where = reported_ == file_ ? "" : "slice " + file_.filename().string() + ": ";
-    throw InputError(reported_, where + problem + " (a damaged DICOM file)");
+    throw InputError(reported_, where + problem);
   }
 
   const fs::path& reported_;
@@ -175,6 +225,8 @@ class ElementWalk {
   std::string bytes_;       // the file's first kMaxWalkedBytes
   std::uint64_t fileSize_;  // what the lengths are checked against
   DicomFileFacts facts_;
+  bool pixelRepresentationKnown_ = false;         // (0028,0103) was met at the top level
+  std::optional<std::uint32_t> lastTopLevelTag_;  // the tag before, (group << 16 | element)
 };
 
 }  // namespace

@@ -15,6 +15,9 @@ namespace angio {
 struct DicomFileFacts {
   std::string seriesUid;      // SeriesInstanceUID (0020,000E), trailing padding removed
   bool hasPixelData = false;  // (7FE0,0010): the file is an image, not a report or a DICOMDIR
+  // Why GDCM's image reader must not read it though it is well formed (a multi-frame SOP class,
+  // NumberOfFrames > 1, waveforms, ...: io/dicom_element_check.h); empty if nothing was found.
+  std::string imageProblem;
 
   bool operator==(const DicomFileFacts&) const = default;
 };

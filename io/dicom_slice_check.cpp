@@ -15,6 +15,8 @@
 #include <gdcmMediaStorage.h>
 #include <gdcmReader.h>
 
+#include "io/dicom_element_check.h"
+#include "io/dicom_file_walk.h"
 #include "io/input_error.h"
 
 namespace angio {
@@ -74,7 +76,7 @@ std::optional<std::vector<double>> decimals(const gdcm::DataSet& data, const gdc
     char* parsedEnd = nullptr;
     const double value = std::strtod(text.c_str(), &parsedEnd);
     if (text.empty() || *parsedEnd != '\0' || !std::isfinite(value))
-      problem.fail(std::string("has an invalid ") + name + " ('" + bytes->substr(0, 64) + "')");
+      problem.fail(std::string("has an invalid ") + name + " ('" + shownDicomValue(*bytes) + "')");
     values.push_back(value);
     start = end + 1;
   }
@@ -141,11 +143,11 @@ void checkReadableImage(const gdcm::File& file, const SliceProblem& problem) {
   if (!sopClass) sopClass = valueBytes(data, gdcm::Tag(0x0008, 0x0016));
   const std::string uid = trimmed(sopClass.value_or(""));
   if (!gdcm::MediaStorage::IsImage(gdcm::MediaStorage::GetMSType(uid.c_str())))
-    problem.fail("is not an image (SOP class '" + uid.substr(0, 64) + "')");
+    problem.fail("is not an image (SOP class '" + shownDicomValue(uid) + "')");
   if (const auto photometric = valueBytes(data, gdcm::Tag(0x0028, 0x0004))) {
     const std::string name = trimmed(*photometric);
     if (name != "MONOCHROME1" && name != "MONOCHROME2")
-      problem.fail("has PhotometricInterpretation (0028,0004) '" + name.substr(0, 16) +
+      problem.fail("has PhotometricInterpretation (0028,0004) '" + shownDicomValue(name.substr(0, 16)) +
                    "'; need greyscale CT (MONOCHROME1 or MONOCHROME2)");
   }
   if (data.FindDataElement(gdcm::Tag(0x0088, 0x0200)))
@@ -274,6 +276,10 @@ void checkPixelDataLength(const fs::path& slice, std::uint64_t offset, const gdc
 
 DicomSliceTags checkDicomSlice(const fs::path& reported, const fs::path& slice, bool requirePlacement) {
   const SliceProblem problem{reported, slice};
+  // Our walk first: GDCM's reader must only ever see well-formed elements (io/dicom_element_check.h).
+  const std::optional<DicomFileFacts> facts = walkDicomFile(reported, slice);
+  if (!facts) problem.fail("is not a DICOM file");
+  if (!facts->imageProblem.empty()) problem.fail(facts->imageProblem);
   gdcm::Reader reader;
   reader.SetFileName(slice.c_str());
   if (!reader.ReadUpToTag(kPixelData, {kPixelData})) problem.fail("is not a readable DICOM file");
