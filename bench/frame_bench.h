@@ -50,6 +50,11 @@ struct FrameTimingRow {
   int frames = 0;
 };
 
+struct InterruptLatency {
+  double medianMs = 0, maxMs = 0;
+  int frames = 0;  // frames still running when cancelled (the others are left out)
+};
+
 struct BenchReport {
   std::string dataset;
   std::string transferFunction;
@@ -60,9 +65,10 @@ struct BenchReport {
   double classifyMs = 0;       // classifying them for the TF
   double labelClassifyMs = 0;  // median re-classification after a label change (with labels)
   BlockingReport blocking;     // the blocked volume (built and classified, not rendered from)
-  // A high-quality frame cancelled at a random moment: cancel flag set -> renderFast returned.
-  double interruptMedianMs = 0, interruptMaxMs = 0;
-  int interrupts = 0;
+  // High-quality frames cancelled part-way: cancel flag set -> the render returned. `recycled`:
+  // in frame memory a previous frame gave back, as the GUI renders once it has shown a high frame;
+  // `fresh`: in new memory, as the first high frame after a load.
+  InterruptLatency recycledInterrupt, freshInterrupt;
   int threads = 0;
   std::vector<FrameTimingRow> rows;
   std::vector<LevelProfile> profiles;  // with BenchSettings::profile, one per level

@@ -611,11 +611,14 @@ RowFunction rowFunctionFor(const RenderParams& params, bool regions, bool labels
              : rowFunctionFor<false, false>(filter, labels);
 }
 
-// The frame's image: every pixel is written by its row, so recycled memory needs no clearing.
+// The frame's image, its pixels unset: every pixel is written by its row, so neither recycled
+// nor fresh memory needs clearing (and fresh pages are touched by the rows, which can be cancelled).
 Image frameImage(const ViewGeometry& view, Image* recycle) {
-  if (!recycle) return makeImage(view.width, view.height);
-  Image image = std::move(*recycle);
-  *recycle = Image{};
+  Image image;
+  if (recycle) {
+    image = std::move(*recycle);
+    *recycle = Image{};
+  }
   image.width = view.width;
   image.height = view.height;
   image.pixels.resize(std::size_t(view.width) * view.height);

@@ -28,6 +28,10 @@ class TileClassification {
                      TileClassification* recycle = nullptr);
   TileClassification(const SliceTiles& tiles, const TfTable& table)
       : TileClassification(tiles, singleTable(table)) {}
+  // It keeps a pointer to the tiles: temporary tiles would dangle.
+  TileClassification(const SliceTiles&&, const RegionTables&, bool = false,
+                     TileClassification* = nullptr) = delete;
+  TileClassification(const SliceTiles&&, const TfTable&) = delete;
 
   const SliceTiles& tiles() const { return *tiles_; }
   Axis axis() const { return tiles_->axis; }

@@ -39,8 +39,8 @@ ExportFormat formatOf(const fs::path& path) {
                              "\" (use .png, .tif, .tiff or .exr)");
 }
 
-template <typename T>
-std::vector<std::uint8_t> asBytes(const std::vector<T>& values) {
+template <typename T, typename Allocator>
+std::vector<std::uint8_t> asBytes(const std::vector<T, Allocator>& values) {
   const auto* first = reinterpret_cast<const std::uint8_t*>(values.data());
   return std::vector<std::uint8_t>(first, first + values.size() * sizeof(T));
 }

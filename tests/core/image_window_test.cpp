@@ -119,17 +119,14 @@ TEST(ImageWindow, RegionsOfTheWindowGiveTheWholeImagesPixels) {
   p.sampling = qualitySampling(Quality::high);
   const ViewGeometry whole = makeViewGeometry(volume, p);
   const RayRegions wholeRegions = test_support::varyingRegions(whole, 5.f, 40, 7.3f, 60.f);
-  const Image wholeImage =
-      renderFast(volume,
-                 TileClassification(buildSliceTiles(volume, p.axis),
-                                    RegionTables{&wholeRegions, &focus, &context, nullptr}),
-                 RegionTables{&wholeRegions, &focus, &context, nullptr}, p);
+  const SliceTiles tiles = buildSliceTiles(volume, p.axis);
+  const RegionTables wholeTables{&wholeRegions, &focus, &context, nullptr};
+  const Image wholeImage = renderFast(volume, TileClassification(tiles, wholeTables), wholeTables, p);
   p.window = ImageWindow{-30, 25, -80, 140};
   const ViewGeometry view = makeViewGeometry(volume, p);
   const RayRegions regions = test_support::cropRegions(wholeRegions, whole.width, view);
   const RegionTables tables{&regions, &focus, &context, nullptr};
-  const Image image =
-      renderFast(volume, TileClassification(buildSliceTiles(volume, p.axis), tables), tables, p);
+  const Image image = renderFast(volume, TileClassification(tiles, tables), tables, p);
   EXPECT_TRUE(image.pixels == cropOf(wholeImage, view).pixels);
 }
 

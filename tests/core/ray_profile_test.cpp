@@ -44,7 +44,8 @@ class RayProfileTest : public ::testing::Test {
   static ProfiledFrame render(const TransferFunction& tf, const RenderParams& params,
                               FastRenderOptions options) {
     const TfTable table = buildTable(tf);
-    const TileClassification visible(buildSliceTiles(*volume_, params.axis), table);
+    const SliceTiles tiles = buildSliceTiles(*volume_, params.axis);
+    const TileClassification visible(tiles, table);  // keeps a pointer to the tiles
     ProfiledFrame frame;
     frame.image = renderFast(*volume_, visible, table, params, options, &frame.stats);
     return frame;

@@ -188,12 +188,12 @@ TEST(ReferenceRaycaster, SameBytesWhateverTheThreadCount) {
   const Volume volume = ballVolume(14.0, {0.8, 0.8, 1.0});
   const TfTable table = buildTable(stepTf(0.2));
   const RenderParams p = shadedParams(0.7, 0.3, 17);
-  std::vector<glm::vec4> oneThread;
+  Pixels oneThread;
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
     oneThread = renderReference(volume, table, p).pixels;
   }
-  const std::vector<glm::vec4> manyThreads = renderReference(volume, table, p).pixels;
+  const Pixels manyThreads = renderReference(volume, table, p).pixels;
   ASSERT_EQ(oneThread.size(), manyThreads.size());
   EXPECT_EQ(0, std::memcmp(oneThread.data(), manyThreads.data(), oneThread.size() * sizeof(glm::vec4)));
 }
