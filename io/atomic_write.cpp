@@ -1,7 +1,9 @@
 #include "io/atomic_write.h"
 
 #include <algorithm>
-#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <random>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -17,16 +19,24 @@ namespace angio {
 
 namespace {
 
+// "name.tmp-<pid>-<random>.ext", a name no file has yet: the extension is kept last (writers pick
+// the format by it), and for double extensions (.nii.gz) the whole suffix after the first dot of the
+// file name is kept. The random part comes from the system, so no counter state is shared.
 std::filesystem::path temporaryName(const std::filesystem::path& target) {
-  static std::atomic<unsigned> counter{0};
-  // "name.tmp-<pid>-<n>.ext": unique per process and call; the extension is kept last, and for
-  // double extensions (.nii.gz) the whole suffix after the first dot of the file name is kept.
   const std::string file = target.filename().string();
   const auto dot = file.find('.', 1);
   const std::string stem = dot == std::string::npos ? file : file.substr(0, dot);
   const std::string extension = dot == std::string::npos ? "" : file.substr(dot);
-  return target.parent_path() /
-         (stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + extension);
+  std::random_device random;
+  for (;;) {
+    const std::uint64_t draw = (std::uint64_t(random()) << 32) | random();
+    char suffix[17];
+    std::snprintf(suffix, sizeof suffix, "%016llx", static_cast<unsigned long long>(draw));
+    const std::filesystem::path name =
+        target.parent_path() / (stem + ".tmp-" + std::to_string(::getpid()) + "-" + suffix + extension);
+    std::error_code error;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(name, error))) return name;
+  }
 }
 
 }  // namespace
