@@ -31,9 +31,7 @@ LSAN_OPTIONS=suppressions="$root/tests/lsan.supp" \
   ctest --test-dir "$sanitized" --output-on-failure -j"$jobs" \
   -E '^(gui|cli)_tests|PhantomTracing|BoneRemoval.FindsThePhantomsBoneAndTableButNotItsLumen|FastRaycaster.MatchesReferenceOnRealAorta'
 
-# Every reader's fuzz target for a short run (scripts/fuzz-long.sh: an hour each), but the two DICOM
-# ones: GDCM still asserts on some malformed sequences and meta groups within seconds (their inputs
-# are in tests/data/fuzz-regressions/dicom_*/unfixed-*); run them with scripts/fuzz.sh by name.
+# Every reader's fuzz target for a short run (scripts/fuzz-long.sh: an hour each).
 "$root/scripts/fuzz.sh" "$sanitized" "${ANGIORAY_CI_FUZZ_SECONDS:-10}" tf centerline_csv centerline_vtp \
   centerline_markups render_sidecar session script metaimage_header nifti_header volume_mha volume_mhd \
-  volume_nrrd volume_nii
+  volume_nrrd volume_nii dicom_slice dicom_series
