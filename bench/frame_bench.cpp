@@ -39,7 +39,9 @@ std::vector<Level> levels() {
           {"high", qualitySampling(Quality::high)}};
 }
 
-// One frame: returns samples evaluated.
+// The n-th of `count` angles spread over the full turn, as every timed row renders them.
+double benchAngle(int n, int count) { return 360.0 * n / count; }
+
 // What the "clipped" rows render (core/clip_interval.h): the middle 80 % of the volume along
 // every axis, the half behind a plane facing the viewer through the centre.
 ViewClipping benchClipping(const Volume& volume) {
@@ -50,6 +52,7 @@ ViewClipping benchClipping(const Volume& volume) {
   return clipping;
 }
 
+// One frame: returns samples evaluated.
 using FrameFunction = std::function<double(const RenderParams&)>;
 
 FrameTimingRow timeFrames(const std::string& level, const std::string& variant, int angles,
@@ -57,7 +60,7 @@ FrameTimingRow timeFrames(const std::string& level, const std::string& variant, 
   std::vector<double> ms, cpuMs, samples;
   for (int n = 0; n < angles; ++n) {
     RenderParams p = base;
-    p.angleDeg = 360.0 * n / angles;
+    p.angleDeg = benchAngle(n, angles);
     const auto start = Clock::now();
     const double cpuStart = processCpuMs();
     samples.push_back(frame(p));
@@ -171,7 +174,7 @@ LevelProfile profileLevel(FrameRenderer& frames, const std::shared_ptr<const Pre
   frames.techniques.profile = true;
   for (int n = 0; n < timed.frames; ++n) {
     RenderParams p = base;
-    p.angleDeg = 360.0 * n / timed.frames;
+    p.angleDeg = benchAngle(n, timed.frames);
     FastRenderStats stats;
     frames.render(scene, p, {}, &stats);
     profile.total += stats.profile;
@@ -200,7 +203,7 @@ InterruptLatency interruptLatency(FrameRenderer& frames,
   std::vector<double> latencies;
   for (int n = 0; n < count; ++n) {
     RenderParams p = warmUp;
-    p.angleDeg = 360.0 * n / count + 7.0;
+    p.angleDeg = benchAngle(n, count) + 7.0;  // not the warm-up's angle
     std::atomic<bool> cancel{false};
     Clock::time_point returnedAt;
     if (!recycle) previous = Image{};  // the memory goes back before the next frame asks for its own
@@ -379,6 +382,14 @@ std::string formatTable(const BenchReport& r) {
   return out.str();
 }
 
+namespace {
+
+nlohmann::json toJson(const InterruptLatency& latency) {
+  return {{"median_ms", latency.medianMs}, {"max_ms", latency.maxMs}, {"frames", latency.frames}};
+}
+
+}  // namespace
+
 std::string toJson(const BenchReport& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const FrameTimingRow& t : r.rows)
@@ -406,14 +417,8 @@ std::string toJson(const BenchReport& r) {
                      {"dummy_blocks", r.blocking.backgroundBlocks},
                      {"visible_blocks", r.blocking.visibleBlocks},
                      {"classify_ms", r.blocking.classifyMs}}},
-                   {"interrupt_recycled",
-                    {{"median_ms", r.recycledInterrupt.medianMs},
-                     {"max_ms", r.recycledInterrupt.maxMs},
-                     {"frames", r.recycledInterrupt.frames}}},
-                   {"interrupt_fresh",
-                    {{"median_ms", r.freshInterrupt.medianMs},
-                     {"max_ms", r.freshInterrupt.maxMs},
-                     {"frames", r.freshInterrupt.frames}}},
+                   {"interrupt_recycled", toJson(r.recycledInterrupt)},
+                   {"interrupt_fresh", toJson(r.freshInterrupt)},
                    {"threads", r.threads},
                    {"frames", rows}};
   for (const LevelProfile& l : r.profiles) {
