@@ -1,15 +1,17 @@
 #include "io/image_export.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "io/atomic_write.h"
+#include "io/image_writer_plugin.h"
 #include "io/input_error.h"
 #include "io/lowercase.h"
+#include "io/plugin_module.h"
 
 #ifndef ANGIORAY_VERSION
 #define ANGIORAY_VERSION "unknown"
@@ -23,11 +25,21 @@ namespace {
 
 enum class ExportFormat { png8, tiff16, exrFloat };
 
-// What goes to OpenImageIO: channel count, pixel type and the interleaved pixel bytes.
+// What goes to the writer: channel count, pixel type and the interleaved values: converted for 8
+// and 16 bits, the image's own floats for EXR (a copy would add 16 bytes a pixel to the peak).
 struct EncodedPixels {
   int channels = 0;
-  OIIO::TypeDesc type;
-  std::vector<std::uint8_t> bytes;
+  FilePixelType type = FilePixelType::uint8;
+  std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>, const glm::vec4*> values;
+
+  const void* data() const {
+    return std::visit(
+        [](const auto& v) -> const void* {
+          if constexpr (std::is_pointer_v<std::decay_t<decltype(v)>>) return v;
+          else return v.data();
+        },
+        values);
+  }
 };
 
 ExportFormat formatOf(const fs::path& path) {
@@ -37,12 +49,6 @@ ExportFormat formatOf(const fs::path& path) {
   if (extension == ".exr") return ExportFormat::exrFloat;
   throw InputError(path, "unknown image format \"" + path.extension().string() +
                              "\" (use .png, .tif, .tiff or .exr)");
-}
-
-template <typename T, typename Allocator>
-std::vector<std::uint8_t> asBytes(const std::vector<T, Allocator>& values) {
-  const auto* first = reinterpret_cast<const std::uint8_t*>(values.data());
-  return std::vector<std::uint8_t>(first, first + values.size() * sizeof(T));
 }
 
 // 16-bit output, the 8-bit rule of the rendering model at 16 bits: round(65535 clamp(C)).
@@ -58,13 +64,13 @@ std::vector<std::uint16_t> toRgb16(const Image& image) {
 
 EncodedPixels encode(const Image& image, ExportFormat format) {
   switch (format) {
-    case ExportFormat::png8: return {3, OIIO::TypeDesc::UINT8, toRgb8(image)};
-    case ExportFormat::tiff16: return {3, OIIO::TypeDesc::UINT16, asBytes(toRgb16(image))};
+    case ExportFormat::png8: return {3, FilePixelType::uint8, toRgb8(image)};
+    case ExportFormat::tiff16: return {3, FilePixelType::uint16, toRgb16(image)};
     case ExportFormat::exrFloat: break;
   }
   // Linear C and A as rendered (C is already premultiplied by A, as EXR expects).
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
-  return {4, OIIO::TypeDesc::FLOAT, asBytes(image.pixels)};
+  return {4, FilePixelType::float32, image.pixels.data()};
 }
 
 std::string describe(const ImageMetadata& metadata) {
@@ -74,21 +80,19 @@ std::string describe(const ImageMetadata& metadata) {
   return description;
 }
 
-OIIO::ImageSpec makeSpec(const Image& image, const EncodedPixels& pixels,
-                         const ImageMetadata& metadata) {
-  OIIO::ImageSpec spec(image.width, image.height, pixels.channels, pixels.type);
-  spec.attribute("Software", std::string("angioray ") + ANGIORAY_VERSION);
-  if (!metadata.empty()) spec.attribute("ImageDescription", describe(metadata));
+ImageFileRequest makeRequest(const Image& image, const EncodedPixels& pixels,
+                             const ImageMetadata& metadata) {
+  ImageFileRequest request;
+  request.width = image.width;
+  request.height = image.height;
+  request.channels = pixels.channels;
+  request.type = pixels.type;
+  request.pixels = pixels.data();
+  request.attributes.emplace_back("Software", std::string("angioray ") + ANGIORAY_VERSION);
+  if (!metadata.empty()) request.attributes.emplace_back("ImageDescription", describe(metadata));
   // Formats without free-form metadata (TIFF) silently drop these; PNG and EXR keep them.
-  for (const auto& [key, value] : metadata) spec.attribute("angioray:" + key, value);
-  return spec;
-}
-
-// OIIO error texts may span lines; InputError messages are one line.
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
+  for (const auto& [key, value] : metadata) request.attributes.emplace_back("angioray:" + key, value);
+  return request;
 }
 
 void checkWritable(const Image& image, const fs::path& path) {
@@ -103,16 +107,15 @@ void checkWritable(const Image& image, const fs::path& path) {
     throw InputError(path, "directory " + directory.string() + " does not exist");
 }
 
-// Writes to `file` (the temporary name); errors name `target`, the file the user asked for.
-void writeWithOiio(const fs::path& file, const fs::path& target, const OIIO::ImageSpec& spec,
-                   const EncodedPixels& pixels) {
-  auto output = OIIO::ImageOutput::create(file.string());
-  if (!output) throw InputError(target, "cannot create an image writer: " + oneLine(OIIO::geterror()));
-  if (!output->open(file.string(), spec))
-    throw InputError(target, "cannot write: " + oneLine(output->geterror()));
-  const bool written = output->write_image(pixels.type, pixels.bytes.data());
-  const bool closed = output->close();
-  if (!written || !closed) throw InputError(target, "write failed: " + oneLine(output->geterror()));
+// Writes to `file` (the temporary name) through the image writer module (OpenImageIO, opened at
+// the first export); errors name `target`, the file the user asked for.
+void writeWithModule(const fs::path& file, const fs::path& target, ImageFileRequest request) {
+  static const auto writeImageFile =
+      pluginFunction<WriteImageFile>(kImageWriterModule, kWriteImageFileSymbol);
+  request.file = file.string();
+  std::string error;
+  writeImageFile(request, error);
+  if (!error.empty()) throw InputError(target, error);
 }
 
 }  // namespace
@@ -121,10 +124,9 @@ void exportImage(const Image& image, const fs::path& path, const ImageMetadata& 
   const ExportFormat format = formatOf(path);
   checkWritable(image, path);
   const EncodedPixels pixels = encode(image, format);
-  const OIIO::ImageSpec spec = makeSpec(image, pixels, metadata);
+  const ImageFileRequest request = makeRequest(image, pixels, metadata);
   try {
-    writeAtomically(path,
-                    [&](const fs::path& tempPath) { writeWithOiio(tempPath, path, spec, pixels); });
+    writeAtomically(path, [&](const fs::path& tempPath) { writeWithModule(tempPath, path, request); });
   } catch (const fs::filesystem_error& error) {
     // The rename over the target failed (e.g. the target is a directory).
     throw InputError(path, "cannot write: " + error.code().message());

@@ -6,14 +6,13 @@
 #include <memory>
 #include <stdexcept>
 
-#include <opencv2/core.hpp>
-#include <opencv2/videoio.hpp>
-
 #include "core/slice_tiles.h"
 #include "core/view_geometry.h"
 #include "render/export.h"
 #include "render/frame_renderer.h"
+#include "render/movie_writer_plugin.h"
 #include "io/input_error.h"
+#include "io/plugin_module.h"
 
 namespace angio {
 
@@ -26,23 +25,22 @@ namespace {
 // first image's size rounded up to even (H.264's 4:2:0 chroma needs even sides; x264 writes a
 // broken file for odd ones), images placed top-left on black. It is written under a temporary
 // name and renamed over PREFIX.mp4 on close(), so a series that fails half-way leaves a movie the
-// user had as it was.
+// user had as it was. The encoder is the movie writer module's (render/movie_writer_plugin.h).
 class MovieWriter {
  public:
   MovieWriter(const fs::path& folder, const std::string& prefix, double fps, int width, int height)
-      : size_(width + width % 2, height + height % 2) {
+      : width_(width + width % 2), height_(height + height % 2), writer_(createEncoder()) {
     struct Choice {
       const char* extension;
-      int fourcc;
+      const char* fourcc;
       const char* note;
     };
-    const Choice choices[] = {{".mp4", cv::VideoWriter::fourcc('a', 'v', 'c', '1'), "MP4 (H.264)"},
-                              {".mp4", cv::VideoWriter::fourcc('m', 'p', '4', 'v'), "MP4 (mp4v)"},
-                              {".avi", cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), "AVI (MJPG)"}};
+    const Choice choices[] = {
+        {".mp4", "avc1", "MP4 (H.264)"}, {".mp4", "mp4v", "MP4 (mp4v)"}, {".avi", "MJPG", "AVI (MJPG)"}};
     for (const Choice& choice : choices) {
       path_ = folder / (prefix + choice.extension);
       writing_ = folder / (prefix + ".partial" + choice.extension);  // the extension picks the container
-      if (writer_.open(writing_.string(), choice.fourcc, fps, size_)) {
+      if (writer_->open(writing_.string(), choice.fourcc, fps, width_, height_)) {
         note_ = choice.note;
         return;
       }
@@ -54,25 +52,28 @@ class MovieWriter {
     note_ = "no movie: OpenCV's VideoWriter opens none of H.264, mp4v and MJPG";
   }
 
-  bool open() const { return writer_.isOpened(); }
+  bool open() const { return writer_->isOpened(); }
   const fs::path& path() const { return path_; }
   const std::string& note() const { return note_; }
 
   void add(const Image& image) {
     const std::vector<std::uint8_t> rgb = toRgb8(image);
-    cv::Mat frame(size_, CV_8UC3, cv::Scalar(0, 0, 0));
-    for (int y = 0; y < std::min(image.height, size_.height); ++y)
-      for (int x = 0; x < std::min(image.width, size_.width); ++x) {
+    std::vector<std::uint8_t> frame(std::size_t(width_) * height_ * 3, 0);  // black
+    for (int y = 0; y < std::min(image.height, height_); ++y)
+      for (int x = 0; x < std::min(image.width, width_); ++x) {
         const std::uint8_t* p = &rgb[(std::size_t(y) * image.width + x) * 3];
-        frame.at<cv::Vec3b>(y, x) = cv::Vec3b(p[2], p[1], p[0]);  // OpenCV wants BGR
+        std::uint8_t* q = &frame[(std::size_t(y) * width_ + x) * 3];
+        q[0] = p[2];  // OpenCV wants BGR
+        q[1] = p[1];
+        q[2] = p[0];
       }
-    writer_.write(frame);
+    writer_->write(frame.data());
   }
 
   // The movie under its name; on failure the note says why and no movie is left.
   void close() {
-    if (!writer_.isOpened()) return;
-    writer_.release();
+    if (!writer_->isOpened()) return;
+    writer_->release();
     std::error_code error;
     fs::rename(writing_, path_, error);
     if (!error) return;
@@ -82,8 +83,8 @@ class MovieWriter {
   }
 
   ~MovieWriter() {  // not closed: the series failed; its part-written movie goes
-    if (!writer_.isOpened()) return;
-    writer_.release();
+    if (!writer_->isOpened()) return;
+    writer_->release();
     std::error_code ignored;
     fs::remove(writing_, ignored);
   }
@@ -91,8 +92,15 @@ class MovieWriter {
   MovieWriter& operator=(const MovieWriter&) = delete;
 
  private:
-  cv::Size size_;
-  cv::VideoWriter writer_;
+  static std::unique_ptr<MovieEncoder> createEncoder() {
+    static const auto create =
+        pluginFunction<CreateMovieEncoder>(kMovieWriterModule, kCreateMovieEncoderSymbol);
+    return std::unique_ptr<MovieEncoder>(create());
+  }
+
+  int width_;
+  int height_;
+  std::unique_ptr<MovieEncoder> writer_;
   fs::path path_;     // PREFIX.mp4 / .avi
   fs::path writing_;  // PREFIX.partial.mp4 / .avi until close()
   std::string note_;
