@@ -90,23 +90,38 @@ Centerlines loadCenterlines(const RenderRecipe& sidecar, const Volume& volume) {
   return centerlines;
 }
 
-// Loads the volume (and centerlines), renders, writes `out` and its sidecar (image = out).
-void renderToFile(const RenderRecipe& sidecar, const std::filesystem::path& out) {
-  requireWritableTarget(out);  // before loading and rendering
-  requireWritableTarget(sidecarPathFor(out));
+struct RenderedImage {
+  Image image;
+  double seconds = 0;
+};
+
+// Loads the volume (and centerlines) and renders. The volume goes when this returns, before the
+// image is written: the writer (its module, the 8-bit copy, the encoder) then adds to the image
+// alone instead of to the volume as well.
+RenderedImage renderFromFile(const RenderRecipe& sidecar, const std::filesystem::path& out) {
   const Volume volume = loadVolumeWithProgress(sidecar.dataset, sidecar.labels).volume;
   const Centerlines centerlines = loadCenterlines(sidecar, volume);
   checkImageSize(makeViewGeometry(volume, sidecar.params), out);
   const auto start = std::chrono::steady_clock::now();
-  Image image;
+  RenderedImage rendered;
   {
     ProgressLine progress("rendering");
-    image = renderRecipe(volume, centerlines, sidecar, {.progress = std::ref(progress)}, printWarning);
+    rendered.image =
+        renderRecipe(volume, centerlines, sidecar, {.progress = std::ref(progress)}, printWarning);
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeImageAndSidecar(image, out, sidecar);
-  std::printf("wrote %s (%dx%d, rendered in %.2f s) and %s\n", out.string().c_str(), image.width,
-              image.height, seconds, sidecarPathFor(out).string().c_str());
+  rendered.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return rendered;
+}
+
+// Loads the volume (and centerlines), renders, writes `out` and its sidecar (image = out).
+void renderToFile(const RenderRecipe& sidecar, const std::filesystem::path& out) {
+  requireWritableTarget(out);  // before loading and rendering
+  requireWritableTarget(sidecarPathFor(out));
+  const RenderedImage rendered = renderFromFile(sidecar, out);
+  writeImageAndSidecar(rendered.image, out, sidecar);
+  std::printf("wrote %s (%dx%d, rendered in %.2f s) and %s\n", out.string().c_str(),
+              rendered.image.width, rendered.image.height, rendered.seconds,
+              sidecarPathFor(out).string().c_str());
 }
 
 }  // namespace
