@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -110,8 +111,13 @@ void checkWritable(const Image& image, const fs::path& path) {
 // Writes to `file` (the temporary name) through the image writer module (OpenImageIO, opened at
 // the first export); errors name `target`, the file the user asked for.
 void writeWithModule(const fs::path& file, const fs::path& target, ImageFileRequest request) {
-  static const auto writeImageFile =
-      pluginFunction<WriteImageFile>(kImageWriterModule, kWriteImageFileSymbol);
+  // The module opens once (dlopen counts further opens); each export only looks the symbol up.
+  WriteImageFile writeImageFile = nullptr;
+  try {
+    writeImageFile = pluginFunction<WriteImageFile>(kImageWriterModule, kWriteImageFileSymbol);
+  } catch (const std::runtime_error& error) {  // a copied angioray without its module
+    throw InputError(target, error.what());
+  }
   request.file = file.string();
   std::string error;
   writeImageFile(request, error);

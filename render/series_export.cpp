@@ -93,7 +93,7 @@ class MovieWriter {
 
  private:
   static std::unique_ptr<MovieEncoder> createEncoder() {
-    static const auto create =
+    const auto create =
         pluginFunction<CreateMovieEncoder>(kMovieWriterModule, kCreateMovieEncoderSymbol);
     return std::unique_ptr<MovieEncoder>(create());
   }
