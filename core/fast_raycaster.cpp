@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cstring>
 #include <limits>
 #include <mutex>
 #include <optional>
@@ -26,7 +25,7 @@ namespace {
 struct Frame {
   const Volume& volume;
   const SliceTiles& tiles;
-  const std::vector<std::uint8_t>& visibleTiles;
+  const std::vector<std::uint64_t>& visibleMasks;  // the classification's, for the filter's reach
   const RenderParams& params;
   const FastRenderOptions& options;
   const RegionTables& regionTables;
@@ -61,65 +60,45 @@ struct Frame {
   }
 };
 
-// Per row: which tiles may hold a visible sample (DVR) or the largest density a sample can
-// take there (MIP), over the slices the row's samples read. Rows reading the same slices share it.
+// Per row: which tiles may hold a visible sample (DVR: a mask per tile group, bit groupBit(tile))
+// or the largest density a sample can take there (MIP), over the slices the row's samples read.
+// Rows reading the same slices share it.
 struct RowTiles {
   SliceSpan span{0, -1};
-  std::vector<std::uint8_t> visible;       // per tile (DVR)
-  std::vector<std::uint16_t> maxDensity;   // per tile (MIP)
-  std::vector<std::uint8_t> groupVisible;  // per tile group: any tile in it visible
+  std::vector<std::uint64_t> groupMask;   // per tile group (DVR)
+  std::vector<std::uint16_t> maxDensity;  // per tile (MIP)
   std::vector<std::uint16_t> groupMaxDensity;
 };
+
+void classifyRowMip(const Frame& f, RowTiles& row) {
+  const std::size_t perSlice = f.tiles.tilesPerSlice();
+  row.maxDensity.assign(perSlice, 0);
+  for (int s = row.span.first; s <= row.span.last; ++s) {
+    std::uint16_t* __restrict out = row.maxDensity.data();
+    const std::uint16_t* __restrict in = f.tileMaxDensity.data() + perSlice * s;
+    for (std::size_t t = 0; t < perSlice; ++t) out[t] = std::max(out[t], in[t]);
+  }
+  row.groupMaxDensity.assign(f.tiles.groupsPerSlice(), 0);
+  for (std::size_t t = 0; t < perSlice; ++t) {
+    std::uint16_t& group = row.groupMaxDensity[f.tiles.groupOf(int(t))];
+    group = std::max(group, row.maxDensity[t]);
+  }
+}
 
 void classifyRow(const Frame& f, double qa, RowTiles& row) {
   const SliceSpan span = slicesReadAt(f.tiles, qa, f.params.sampling.filter);
   if (span.first == row.span.first && span.last == row.span.last) return;
   row.span = span;
-  const std::size_t perSlice = f.tiles.tilesPerSlice();
-  const bool mip = f.params.compositing == Compositing::mip;
-  row.maxDensity.assign(perSlice, 0);
-  row.visible.assign(perSlice, 0);
-  const auto& sliceMax = f.tileMaxDensity;
-  const std::uint8_t bit = visibilityBit(f.params.sampling.filter);
-  for (int s = span.first; s <= span.last; ++s) {
-    const std::size_t base = perSlice * s;
-    if (mip) {
-      std::uint16_t* __restrict out = row.maxDensity.data();
-      const std::uint16_t* __restrict in = sliceMax.data() + base;
-      for (std::size_t t = 0; t < perSlice; ++t) out[t] = std::max(out[t], in[t]);
-    } else {
-      std::uint8_t* __restrict out = row.visible.data();
-      const std::uint8_t* __restrict in = f.visibleTiles.data() + base;
-      for (std::size_t t = 0; t < perSlice; ++t) out[t] |= in[t] & bit;
-    }
-  }
-  const std::size_t groups = std::size_t(f.tiles.groupsB()) * f.tiles.groupsC();
-  row.groupVisible.assign(groups, 0);
-  row.groupMaxDensity.assign(groups, 0);
-  // Tile rows in order, each tile into its group (kGroupTiles^2 tiles): no index table.
-  const int tilesB = f.tiles.tilesB, groupsB = f.tiles.groupsB();
-  if (!mip && tilesB % kGroupTiles == 0) {
-    // The common case: a group's tiles in a tile row are 4 consecutive bytes, tested as one word.
-    static_assert(kGroupTiles == sizeof(std::uint32_t));
-    for (int tc = 0; tc < f.tiles.tilesC; ++tc) {
-      const std::uint8_t* in = row.visible.data() + std::size_t(tc) * tilesB;
-      std::uint8_t* out = row.groupVisible.data() + std::size_t(tc / kGroupTiles) * groupsB;
-      for (int gb = 0; gb < groupsB; ++gb) {
-        std::uint32_t tiles;
-        std::memcpy(&tiles, in + gb * kGroupTiles, sizeof tiles);
-        out[gb] |= tiles != 0;
-      }
-    }
+  if (f.params.compositing == Compositing::mip) {
+    classifyRowMip(f, row);
     return;
   }
-  for (int tc = 0; tc < f.tiles.tilesC; ++tc) {
-    const std::size_t rowBase = std::size_t(tc) * tilesB;
-    const std::size_t groupBase = std::size_t(tc / kGroupTiles) * groupsB;
-    for (int tb = 0; tb < tilesB; ++tb) {
-      const std::size_t g = groupBase + tb / kGroupTiles;
-      if (mip) row.groupMaxDensity[g] = std::max(row.groupMaxDensity[g], row.maxDensity[rowBase + tb]);
-      else row.groupVisible[g] |= row.visible[rowBase + tb];
-    }
+  const std::size_t groups = f.tiles.groupsPerSlice();
+  row.groupMask.assign(groups, 0);
+  for (int s = span.first; s <= span.last; ++s) {
+    std::uint64_t* __restrict out = row.groupMask.data();
+    const std::uint64_t* __restrict in = f.visibleMasks.data() + groups * s;
+    for (std::size_t g = 0; g < groups; ++g) out[g] |= in[g];
   }
 }
 
@@ -392,28 +371,45 @@ struct RowScratch {
   RayProfile profile;  // Mode::profile: this worker's counts
 };
 
-// May the tile (or group) change a pixel of the bundle's column: something visible there (DVR), or
-// something denser than the smallest maximum so far (MIP)?
-template <class Mode, class Sampler>
-bool mayShow(std::uint8_t visible, std::uint16_t maxDensity, const BundleRay<Sampler>& b, int lanes) {
-  if constexpr (Mode::mip) return float(maxDensity) > b.mipFloor(lanes);
-  else return visible != 0;
+// MIP: may the tile (or group) change a pixel of the bundle's column, that is, hold something
+// denser than the smallest maximum so far?
+template <class Sampler>
+bool mayRaiseMaximum(std::uint16_t maxDensity, const BundleRay<Sampler>& b, int lanes) {
+  return float(maxDensity) > b.mipFloor(lanes);
+}
+
+// Profiling: the samples of tile runs [first, end) skipped for every live lane.
+template <class Sampler>
+void countSkippedRuns(const Frame& f, const RowBundle& bundle, std::uint32_t first, std::uint32_t end,
+                      BundleRay<Sampler>& b) {
+  for (std::uint32_t r = first; r < end; ++r)
+    b.profile->skippedByTiles += std::uint64_t(f.templates.runs[r].count) * b.live * raysPerLane(bundle);
 }
 
 // The samples of one column's passage through a tile group. Returns true if every lane is done.
-// (DVR: the caller has already skipped the groups no ray sees in this bundle.)
+// (DVR: the caller has already skipped the groups no ray sees in this bundle; here the column
+// skips the group if none of the tiles it crosses there is visible, one test of two masks.)
 template <class Mode, class Sampler>
 bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, const GroupRun& group,
                 BundleRay<Sampler>& b, std::uint64_t& samples) {
-  if (Mode::mip && f.skipGroups &&
-      !mayShow<Mode>(row.groupVisible[group.group], row.groupMaxDensity[group.group], b, bundle.lanes))
-    return false;
+  std::uint64_t shown = ~std::uint64_t{0};  // DVR: the crossed tiles that may be visible
+  if constexpr (Mode::mip) {
+    if (f.skipGroups && !mayRaiseMaximum(row.groupMaxDensity[group.group], b, bundle.lanes))
+      return false;
+  } else if (f.skipTiles) {
+    shown = group.crossed & row.groupMask[group.group];
+    if (shown == 0) {
+      if constexpr (Mode::profile) countSkippedRuns(f, bundle, group.firstRun, group.endRun, b);
+      return false;
+    }
+  }
   for (std::uint32_t r = group.firstRun; r < group.endRun; ++r) {
     const TileRun& run = f.templates.runs[r];
-    if (f.skipTiles &&
-        !mayShow<Mode>(row.visible[run.tile], row.maxDensity[run.tile], b, bundle.lanes)) {
-      if constexpr (Mode::profile)
-        b.profile->skippedByTiles += std::uint64_t(run.count) * b.live * raysPerLane(bundle);
+    const bool hidden = Mode::mip
+                            ? f.skipTiles && !mayRaiseMaximum(row.maxDensity[run.tile], b, bundle.lanes)
+                            : !(shown >> run.bit & 1);
+    if (hidden) {
+      if constexpr (Mode::profile) countSkippedRuns(f, bundle, r, r + 1, b);
       continue;
     }
     if (run.firstSample >= b.clipEnd) {  // beyond every lane's clip interval
@@ -498,7 +494,7 @@ void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampl
 template <class Sampler>
 void countRank(const Frame& f, const RowBundle& bundle, std::size_t rank, RowScratch<Sampler>& scratch) {
   const RayTemplates& templates = f.templates;
-  const bool skipped = f.skipGroups && !scratch.tiles.groupVisible[templates.rankGroup[rank]];
+  const bool skipped = f.skipGroups && !scratch.tiles.groupMask[templates.rankGroup[rank]];
   for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
     const GroupVisit visit = templates.visits[v];
     const GroupRun& group = templates.groups[visit.groupRun];
@@ -534,7 +530,7 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
     if (rank % 4 == 3 && cancelRequested(f.options)) return false;
     const std::int32_t group = templates.rankGroup[rank];
     if constexpr (Mode::profile) countRank(f, bundle, rank, scratch);
-    if (!Mode::mip && f.skipGroups && !scratch.tiles.groupVisible[group]) continue;
+    if (!Mode::mip && f.skipGroups && !scratch.tiles.groupMask[group]) continue;
     for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
@@ -646,7 +642,7 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   const bool labels = tables.labelsActive();
   Frame f{volume,
           tiles,
-          classification.visible(),
+          classification.visibleMasks(params.sampling.filter),
           params,
           options,
           tables,

@@ -36,14 +36,16 @@ std::vector<TileRun> columnRuns(const Volume& volume, const ViewGeometry& view, 
 // straight ray never comes back to a group it left).
 void appendColumn(const SliceTiles& tiles, const std::vector<TileRun>& runs, RayTemplates& templates) {
   templates.columnBegin.push_back(std::uint32_t(templates.groups.size()));
-  for (const TileRun& run : runs) {
+  for (TileRun run : runs) {
     const int group = tiles.groupOf(run.tile);
+    run.bit = std::uint8_t(tiles.groupBit(run.tile));
     const auto index = std::uint32_t(templates.runs.size());
     if (templates.groups.size() == templates.columnBegin.back() ||
         templates.groups.back().group != group)
       templates.groups.push_back({group, index, index});
     templates.runs.push_back(run);
     templates.groups.back().endRun = index + 1;
+    templates.groups.back().crossed |= std::uint64_t{1} << run.bit;
   }
 }
 

@@ -3,8 +3,8 @@
 // axis every image row has the same in-plane ray pattern, so the walk of each image column
 // through the slice tiles is computed once per view and reused by every row. A column's template
 // is a list of runs: consecutive samples k whose floor(q) lies in the same tile, grouped by the
-// tile group (kGroupTiles^2 tiles) they lie in, so a ray leaps over an empty group in one step
-// and only looks at the tiles of groups that may be visible.
+// tile group (kGroupTiles^2 tiles) they lie in, so a ray leaps over an empty group in one step,
+// and over a group where none of the tiles it crosses is visible with one test of a 64-bit mask.
 #include <atomic>
 #include <cstdint>
 #include <vector>
@@ -18,12 +18,14 @@ struct TileRun {
   std::int32_t tile = 0;  // tileC * tilesB + tileB
   std::int32_t count = 0;
   long firstSample = 0;  // k of the first sample of the run
+  std::uint8_t bit = 0;  // the tile's bit in its group's masks (SliceTiles::groupBit)
 };
 
 struct GroupRun {
   std::int32_t group = 0;      // groupC * groupsB + groupB
   std::uint32_t firstRun = 0;  // its tile runs: [firstRun, endRun)
   std::uint32_t endRun = 0;
+  std::uint64_t crossed = 0;  // the bits of the tiles its runs cross
 };
 
 // One column's passage through one tile group: templates.groups[groupRun] of column `column`.

@@ -54,68 +54,141 @@ std::pair<int, int> tileWindow(int tile, int n, int reach) {
   return {std::max(tile * kTileSize - reach, 0), std::min(tile * kTileSize + kTileSize + reach, n - 1)};
 }
 
-// Separable summary over one slice: first along b for every c line, then along c.
+// The scale of a group whose tiles span [lo, hi]: the least shift that puts hi - lo in a byte.
+PackedRanges::Scale scaleFor(const Range& span) {
+  if (span.lo > span.hi) return {};
+  std::uint8_t shift = 0;
+  while (((span.hi - span.lo) >> shift) > 255) ++shift;
+  return {span.lo, shift};
+}
+
+void allocate(PackedRanges& ranges, std::size_t tiles, std::size_t groups) {
+  ranges.minOffset.resize(tiles);
+  ranges.maxOffset.resize(tiles);
+  ranges.scale.resize(groups);
+}
+
+void allocate(const SliceTiles& tiles, TileRanges& ranges) {
+  const std::size_t count = std::size_t(tiles.tilesPerSlice()) * tiles.slices;
+  const std::size_t groups = std::size_t(tiles.groupsPerSlice()) * tiles.slices;
+  allocate(ranges.unlabelled, count, groups);
+  if (!tiles.labelled) return;
+  allocate(ranges.labelled, count, groups);
+  ranges.labelBits.resize(count);
+}
+
+// Packs one slice's exact tile ranges (rangeOf(exact[tileC * tilesB + tileB])) group by group.
+template <class Summary, class RangeOf>
+void packSlice(const SliceTiles& tiles, int slice, const std::vector<Summary>& exact, RangeOf&& rangeOf,
+               PackedRanges& out) {
+  for (int gc = 0; gc < tiles.groupsC(); ++gc)
+    for (int gb = 0; gb < tiles.groupsB(); ++gb) {
+      const int tcEnd = std::min((gc + 1) * kGroupTiles, tiles.tilesC);
+      const int tbEnd = std::min((gb + 1) * kGroupTiles, tiles.tilesB);
+      Range span;
+      for (int tc = gc * kGroupTiles; tc < tcEnd; ++tc)
+        for (int tb = gb * kGroupTiles; tb < tbEnd; ++tb)
+          span.add(rangeOf(exact[tc * tiles.tilesB + tb]));
+      PackedRanges::Scale scale = scaleFor(span);
+      if (span.lo <= span.hi) scale.top = std::uint8_t((span.hi - scale.base) >> scale.shift);
+      out.scale[tiles.ref(slice, gc * kGroupTiles, gb * kGroupTiles).group] = scale;
+      for (int tc = gc * kGroupTiles; tc < tcEnd; ++tc)
+        for (int tb = gb * kGroupTiles; tb < tbEnd; ++tb) {
+          const Range r = rangeOf(exact[tc * tiles.tilesB + tb]);
+          const std::size_t n = tiles.ref(slice, tc, tb).tile;
+          const bool empty = r.lo > r.hi;
+          out.minOffset[n] =
+              empty ? PackedRanges::kEmptyMin : std::uint8_t((r.lo - scale.base) >> scale.shift);
+          out.maxOffset[n] =
+              empty ? PackedRanges::kEmptyMax : std::uint8_t((r.hi - scale.base) >> scale.shift);
+        }
+    }
+}
+
+void pack(const SliceTiles& tiles, int slice, const std::vector<PlainSummary>& exact, TileRanges& out) {
+  packSlice(
+      tiles, slice, exact, [](const PlainSummary& s) { return s.densities; }, out.unlabelled);
+}
+
+void pack(const SliceTiles& tiles, int slice, const std::vector<LabelledSummary>& exact,
+          TileRanges& out) {
+  packSlice(
+      tiles, slice, exact, [](const LabelledSummary& s) { return s.densities; }, out.unlabelled);
+  packSlice(
+      tiles, slice, exact, [](const LabelledSummary& s) { return s.labelled; }, out.labelled);
+  const std::size_t first = std::size_t(slice) * tiles.tilesPerSlice();
+  for (std::size_t n = 0; n < exact.size(); ++n) out.labelBits[first + n] = exact[n].bits;
+}
+
 template <class Summary>
-void summariseSlice(const Volume& volume, const SliceTiles& tiles, int slice, int reach,
-                    std::vector<Summary>& lineSummaries, Summary* out) {
+Summary summaryOver(const std::vector<Summary>& columns, std::pair<int, int> window) {
+  Summary summary;
+  for (int b = window.first; b <= window.second; ++b) summary.add(columns[b]);
+  return summary;
+}
+
+// Where one slice's voxels are: line c along b is voxels[first + c strideC + b strideB].
+struct SliceLayout {
+  const Voxel* first = nullptr;
+  std::size_t strideB = 0, strideC = 0;
+  int nb = 0, nc = 0;
+};
+
+SliceLayout sliceLayout(const Volume& volume, const SliceTiles& tiles, int slice) {
   const glm::ivec3 dims = volume.dims;
-  const int nb = dims[tiles.axisB], nc = dims[tiles.axisC];
-  glm::ivec3 stride(1, dims.x, dims.x * dims.y);
-  const std::size_t sliceBase = std::size_t(slice) * stride[int(tiles.axis)];
-  const int strideB = stride[tiles.axisB], strideC = stride[tiles.axisC];
-  lineSummaries.assign(std::size_t(nc) * tiles.tilesB, Summary{});
-  for (int c = 0; c < nc; ++c) {
-    const Voxel* line = volume.voxels.data() + sliceBase + std::size_t(c) * strideC;
-    for (int tb = 0; tb < tiles.tilesB; ++tb) {
-      const auto [lo, hi] = tileWindow(tb, nb, reach);
-      Summary r;
-      for (int b = lo; b <= hi; ++b) r.add(line[std::size_t(b) * strideB]);
-      lineSummaries[std::size_t(c) * tiles.tilesB + tb] = r;
-    }
-  }
+  const std::size_t stride[3] = {1, std::size_t(dims.x), std::size_t(dims.x) * dims.y};
+  return {volume.voxels.data() + slice * stride[int(tiles.axis)], stride[tiles.axisB],
+          stride[tiles.axisC], dims[tiles.axisB], dims[tiles.axisC]};
+}
+
+// Adds line c's voxels to the column summaries (contiguous when rotating about k: vectorised).
+template <class Summary>
+void addLine(const SliceLayout& slice, int c, std::vector<Summary>& columns) {
+  const Voxel* line = slice.first + c * slice.strideC;
+  for (int b = 0; b < slice.nb; ++b) columns[b].add(line[b * slice.strideB]);
+}
+
+// Scratch of one worker: per b column (for one tile row), per tile (for one slice).
+template <class Summary>
+struct SliceScratch {
+  std::vector<Summary> cellColumns, wideColumns;
+  std::vector<Summary> cellTiles, wideTiles;
+};
+
+// One slice's tiles, separably: per tile row, every b column over the row's c window, then each
+// tile over its b window; the mean filter's window adds one line before and after. Then packed.
+template <class Summary>
+void summariseSlice(const Volume& volume, SliceTiles& tiles, int slice, SliceScratch<Summary>& scratch) {
+  const SliceLayout layout = sliceLayout(volume, tiles, slice);
+  auto &cells = scratch.cellColumns, &wide = scratch.wideColumns;
+  scratch.cellTiles.resize(tiles.tilesPerSlice());
+  scratch.wideTiles.resize(tiles.tilesPerSlice());
   for (int tc = 0; tc < tiles.tilesC; ++tc) {
-    const auto [lo, hi] = tileWindow(tc, nc, reach);
+    const auto [lo, hi] = tileWindow(tc, layout.nc, 0);
+    cells.assign(layout.nb, Summary{});
+    for (int c = lo; c <= hi; ++c) addLine(layout, c, cells);
+    wide = cells;
+    if (lo > 0) addLine(layout, lo - 1, wide);
+    if (hi < layout.nc - 1) addLine(layout, hi + 1, wide);
     for (int tb = 0; tb < tiles.tilesB; ++tb) {
-      Summary r;
-      for (int c = lo; c <= hi; ++c) r.add(lineSummaries[std::size_t(c) * tiles.tilesB + tb]);
-      out[std::size_t(tc) * tiles.tilesB + tb] = r;
+      const std::size_t n = std::size_t(tc) * tiles.tilesB + tb;
+      scratch.cellTiles[n] = summaryOver(cells, tileWindow(tb, layout.nb, 0));
+      scratch.wideTiles[n] = summaryOver(wide, tileWindow(tb, layout.nb, 1));
     }
   }
-}
-
-void store(const std::vector<PlainSummary>& summaries, TileRanges& ranges) {
-  ranges.minDensity.resize(summaries.size());
-  ranges.maxDensity.resize(summaries.size());
-  for (std::size_t n = 0; n < summaries.size(); ++n) {
-    ranges.minDensity[n] = summaries[n].densities.lo;
-    ranges.maxDensity[n] = summaries[n].densities.hi;
-  }
-}
-
-void store(const std::vector<LabelledSummary>& summaries, TileRanges& ranges) {
-  const std::size_t count = summaries.size();
-  for (auto* v : {&ranges.minDensity, &ranges.maxDensity, &ranges.labelledMin, &ranges.labelledMax,
-                  &ranges.labelBits})
-    v->resize(count);
-  for (std::size_t n = 0; n < count; ++n) {
-    const LabelledSummary& s = summaries[n];
-    ranges.minDensity[n] = s.densities.lo, ranges.maxDensity[n] = s.densities.hi;
-    ranges.labelledMin[n] = s.labelled.lo, ranges.labelledMax[n] = s.labelled.hi;
-    ranges.labelBits[n] = s.bits;
-  }
+  pack(tiles, slice, scratch.cellTiles, tiles.cells);
+  pack(tiles, slice, scratch.wideTiles, tiles.wide);
 }
 
 template <class Summary>
 void summariseTiles(const Volume& volume, SliceTiles& tiles) {
-  const std::size_t perSlice = tiles.tilesPerSlice();
-  std::vector<Summary> cells(perSlice * tiles.slices), wide(perSlice * tiles.slices);
-  tbb::parallel_for(0, tiles.slices, [&](int slice) {
-    std::vector<Summary> lineSummaries;
-    summariseSlice(volume, tiles, slice, 0, lineSummaries, cells.data() + perSlice * slice);
-    summariseSlice(volume, tiles, slice, 1, lineSummaries, wide.data() + perSlice * slice);
+  allocate(tiles, tiles.cells);
+  allocate(tiles, tiles.wide);
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles.slices), [&](const tbb::blocked_range<int>& range) {
+    SliceScratch<Summary> scratch;
+    for (int slice = range.begin(); slice != range.end(); ++slice)
+      summariseSlice(volume, tiles, slice, scratch);
   });
-  store(cells, tiles.cells);
-  store(wide, tiles.wide);
 }
 
 bool anyLabel(const Volume& volume) {
@@ -130,10 +203,8 @@ bool anyLabel(const Volume& volume) {
 }
 
 std::size_t bytesOf(const TileRanges& r) {
-  std::size_t bytes = 0;
-  for (const auto* v : {&r.minDensity, &r.maxDensity, &r.labelledMin, &r.labelledMax, &r.labelBits})
-    bytes += v->size() * sizeof(std::uint16_t);
-  return bytes;
+  return r.unlabelled.memoryBytes() + r.labelled.memoryBytes() +
+         r.labelBits.size() * sizeof(std::uint16_t);
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 namespace angio {
@@ -24,31 +23,39 @@ struct LabelMasks {
 };
 
 // The densities one reach of a tile reads as the labels say, and whether the region's TF
-// classifies some of its samples. Empty ranges are stored as [0xFFFF, 0], so the union of ranges
-// is a min and a max without branches.
+// classifies some of its samples. Empty ranges are [kDensityLevels, -1] (TileRanges), so the
+// union of ranges is a min and a max without branches.
 // Ints throughout: 16-bit fields written one by one and read back as a whole stall the loop.
 struct TileReading {
-  int lo = 0xFFFF, hi = 0;
+  int lo = kDensityLevels, hi = -1;
   int regionTfs = 0;  // nonzero: some sample uses the region's TF
   int ownTfs = 0;     // the present labels with their own TF
 };
 
+// A tile of a volume without labels: its range, classified with the region's TF.
+[[gnu::always_inline]] inline TileReading readPlainTile(const TileRanges& r, TileRef t) {
+  return {r.unlabelled.lowest(t), r.unlabelled.highest(t), 1, 0};
+}
+
 // Inlined into the loop over millions of tiles: a call per tile costs more than its work.
-[[gnu::always_inline]] inline TileReading readTile(const TileRanges& r, std::size_t n,
+[[gnu::always_inline]] inline TileReading readTile(const TileRanges& r, TileRef t,
                                                    const LabelMasks& masks) {
-  const std::uint16_t bits = r.labelBits[n];
+  const std::uint16_t bits = r.labelBits[t.tile];
   const std::uint16_t labelled = bits & ~1u;
   const std::uint16_t hidden = labelled & masks.hidden;
   const std::uint16_t shown = labelled & ~masks.hidden;  // read their own densities
   TileReading reading;
-  reading.lo = r.minDensity[n];
-  reading.hi = r.maxDensity[n];
+  reading.lo = r.unlabelled.lowest(t);
+  reading.hi = r.unlabelled.highest(t);
   if (shown) {
     // The labelled range is shared by the tile's labels: wider than one label's, never narrower.
-    reading.lo = std::min<int>(reading.lo, r.labelledMin[n]);
-    reading.hi = std::max<int>(reading.hi, r.labelledMax[n]);
+    reading.lo = std::min(reading.lo, r.labelled.lowest(t));
+    reading.hi = std::max(reading.hi, r.labelled.highest(t));
   }
-  if (hidden) reading.lo = 0;  // cut out: reads -1024 HU, classified with the region's TF
+  if (hidden) {  // cut out: reads -1024 HU (density 0), classified with the region's TF
+    reading.lo = 0;
+    reading.hi = std::max(reading.hi, 0);
+  }
   reading.ownTfs = shown & masks.own;
   reading.regionTfs = (bits & 1u) | hidden | (shown & ~masks.own);
   return reading;
@@ -61,6 +68,32 @@ struct TileReading {
     if (labels.ownTf(std::countr_zero(rest))->anyVisible(reading.lo, reading.hi)) return true;
   return false;
 }
+
+// The visibility bits of one group's tiles in a volume without labels, under `table`. A group
+// whose whole range the TF hides is answered by one query: at a vessel TF that is most groups of a
+// CT, so a TF change costs about a query per group rather than one per tile. Empty tiles need no
+// test of their own: their offsets (kEmptyMin > kEmptyMax) give lo > hi, which anyVisible refuses.
+std::uint64_t plainGroupMask(const SliceTiles& t, const PackedRanges& r, std::size_t group,
+                             std::size_t firstTile, int tileRows, int tileColumns,
+                             const TfTable& table) {
+  if (!table.anyVisible(r.groupLowest(group), r.groupHighest(group))) return 0;
+  const PackedRanges::Scale s = r.scale[group];
+  std::uint64_t mask = 0;
+  for (int row = 0; row < tileRows; ++row) {
+    const std::size_t first = firstTile + std::size_t(row) * t.tilesB;
+    for (int column = 0; column < tileColumns; ++column) {
+      const int lo = s.base + (r.minOffset[first + column] << s.shift);
+      const int hi = s.base + ((r.maxOffset[first + column] + 1) << s.shift) - 1;
+      mask |= std::uint64_t(table.anyVisible(lo, hi)) << (row * kGroupTiles + column);
+    }
+  }
+  return mask;
+}
+
+struct TileVisibility {
+  bool cells = false;  // for the tile's cells (nearest, trilinear)
+  bool wide = false;   // for the tile grown by one voxel (mean)
+};
 
 // The largest density a sample can read (0 for an empty reading).
 std::uint16_t largestDensity(const TileReading& reading) {
@@ -77,57 +110,100 @@ TileClassification::UsedTables TileClassification::usedBy(const RegionTables& ta
 
 TileClassification::TileClassification(const SliceTiles& tiles, const RegionTables& tables, bool mip,
                                        TileClassification* recycle)
-    : tiles_(&tiles), tables_(usedBy(tables)) {
+    : tiles_(&tiles), tables_(usedBy(tables)), hasMaxima_(mip) {
   if (recycle) {
-    visible_ = std::move(recycle->visible_);
+    cellsVisible_ = std::move(recycle->cellsVisible_);
+    wideVisible_ = std::move(recycle->wideVisible_);
     cellsMax_ = std::move(recycle->cellsMax_);
     wideMax_ = std::move(recycle->wideMax_);
   }
-  visible_.resize(tiles.tileCount());  // every entry is written below
-  if (!tiles.labelled || !mip) cellsMax_ = {}, wideMax_ = {};
   const TfTable anyRegion = visibilityUnion({tables_.focus, tables_.context, tables_.outside});
+  const LabelTables noLabels;
+  const LabelTables& labels = tables.labels ? *tables.labels : noLabels;
   if (tiles.labelled) {
-    const LabelTables& labels = tables.labels ? *tables.labels : LabelTables();
-    if (mip) classifyLabelled<true>(anyRegion, labels);
-    else classifyLabelled<false>(anyRegion, labels);
-    return;
+    const LabelMasks masks(labels);
+    const auto read = [&](const TileRanges& r, TileRef t) { return readTile(r, t, masks); };
+    if (mip) classify<true>(read, anyRegion, labels);
+    else classify<false>(read, anyRegion, labels);
+  } else {
+    if (mip) classify<true>(readPlainTile, anyRegion, labels);
+    else classifyPlainGroups(anyRegion);
   }
-  const TileRanges &cells = tiles.cells, &wide = tiles.wide;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, visible_.size(), 1 << 14),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t n = range.begin(); n != range.end(); ++n)
-          visible_[n] = std::uint8_t(
-              (anyRegion.anyVisible(cells.minDensity[n], cells.maxDensity[n]) ? kCellsVisible : 0) |
-              (anyRegion.anyVisible(wide.minDensity[n], wide.maxDensity[n]) ? kWideVisible : 0));
-      });
 }
 
-template <bool Maxima>
-void TileClassification::classifyLabelled(const TfTable& anyRegion, const LabelTables& labels) {
+void TileClassification::classifyPlainGroups(const TfTable& anyRegion) {
+  const SliceTiles& t = *tiles_;
+  const std::size_t groups = t.groupsPerSlice();
+  cellsMax_ = {}, wideMax_ = {};
+  cellsVisible_.resize(groups * t.slices);
+  wideVisible_.resize(groups * t.slices);
+  tbb::parallel_for(0, t.slices, [&](int slice) {
+    for (int gc = 0; gc < t.groupsC(); ++gc)
+      for (int gb = 0; gb < t.groupsB(); ++gb) {
+        const TileRef first = t.ref(slice, gc * kGroupTiles, gb * kGroupTiles);
+        const int rows = std::min(kGroupTiles, t.tilesC - gc * kGroupTiles);
+        const int columns = std::min(kGroupTiles, t.tilesB - gb * kGroupTiles);
+        cellsVisible_[first.group] =
+            plainGroupMask(t, t.cells.unlabelled, first.group, first.tile, rows, columns, anyRegion);
+        wideVisible_[first.group] =
+            plainGroupMask(t, t.wide.unlabelled, first.group, first.tile, rows, columns, anyRegion);
+      }
+  });
+}
+
+template <bool Maxima, class ReadTile>
+void TileClassification::classify(ReadTile&& read, const TfTable& anyRegion, const LabelTables& labels) {
   const TileRanges &cells = tiles_->cells, &wide = tiles_->wide;
-  if (Maxima) cellsMax_.resize(visible_.size()), wideMax_.resize(visible_.size());
-  const LabelMasks masks(labels);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, visible_.size(), 1 << 14),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t n = range.begin(); n != range.end(); ++n) {
-          const TileReading cellReading = readTile(cells, n, masks);
-          const TileReading wideReading = readTile(wide, n, masks);
-          visible_[n] = std::uint8_t((isVisible(cellReading, anyRegion, labels) ? kCellsVisible : 0) |
-                                     (isVisible(wideReading, anyRegion, labels) ? kWideVisible : 0));
-          if constexpr (Maxima) {
-            cellsMax_[n] = largestDensity(cellReading);
-            wideMax_[n] = largestDensity(wideReading);
-          }
-        }
-      });
+  if (Maxima) cellsMax_.resize(tiles_->tileCount()), wideMax_.resize(tiles_->tileCount());
+  else cellsMax_ = {}, wideMax_ = {};
+  setMasks([&](TileRef t) {
+    const TileReading cellReading = read(cells, t);
+    const TileReading wideReading = read(wide, t);
+    if constexpr (Maxima) {
+      cellsMax_[t.tile] = largestDensity(cellReading);
+      wideMax_[t.tile] = largestDensity(wideReading);
+    }
+    return TileVisibility{isVisible(cellReading, anyRegion, labels),
+                          isVisible(wideReading, anyRegion, labels)};
+  });
+}
+
+// Slice by slice, each tile's bits into its group's words (the groups of a slice are its own).
+template <class ClassifyTile>
+void TileClassification::setMasks(ClassifyTile&& classify) {
+  const SliceTiles& t = *tiles_;
+  const std::size_t groups = t.groupsPerSlice();
+  cellsVisible_.assign(groups * t.slices, 0);
+  wideVisible_.assign(groups * t.slices, 0);
+  tbb::parallel_for(0, t.slices, [&](int slice) {
+    std::uint64_t* cells = cellsVisible_.data() + groups * slice;
+    std::uint64_t* wide = wideVisible_.data() + groups * slice;
+    for (int tc = 0; tc < t.tilesC; ++tc) {
+      std::uint64_t* cellsRow = cells + std::size_t(tc / kGroupTiles) * t.groupsB();
+      std::uint64_t* wideRow = wide + std::size_t(tc / kGroupTiles) * t.groupsB();
+      for (int tb = 0; tb < t.tilesB; ++tb) {
+        const TileVisibility v = classify(t.ref(slice, tc, tb));
+        const int bit = (tc % kGroupTiles) * kGroupTiles + tb % kGroupTiles;
+        cellsRow[tb / kGroupTiles] |= std::uint64_t(v.cells) << bit;
+        wideRow[tb / kGroupTiles] |= std::uint64_t(v.wide) << bit;
+      }
+    }
+  });
+}
+
+std::size_t TileClassification::visibleTileCount(Filter filter) const {
+  std::size_t count = 0;
+  for (const std::uint64_t word : visibleMasks(filter)) count += std::popcount(word);
+  return count;
+}
+
+std::size_t TileClassification::memoryBytes() const {
+  return (cellsVisible_.size() + wideVisible_.size()) * sizeof(std::uint64_t) +
+         (cellsMax_.size() + wideMax_.size()) * sizeof(std::uint16_t);
 }
 
 const std::vector<std::uint16_t>& TileClassification::maxDensity(Filter filter) const {
-  const bool wide = filter == Filter::mean;
-  if (tiles_->labelled) return wide ? wideMax_ : cellsMax_;
-  return tiles_->reach(filter).maxDensity;
+  return filter == Filter::mean ? wideMax_ : cellsMax_;
 }
 
 bool TileClassification::classifies(const RegionTables& tables) const {

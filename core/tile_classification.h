@@ -20,8 +20,8 @@ class TileClassification {
  public:
   // A tile is visible if any TF of `tables` shows a density in it (focus and context count only
   // with regions, as the raycaster renders them). `tiles` and the tables must outlive this.
-  // `mip`: also each tile's largest density as the labels read it, which MIP needs (tiles of a
-  // volume without labels have theirs already). `recycle` (optional): a classification this one
+  // `mip`: also each tile's largest density as the labels read it, which MIP needs.
+  // `recycle` (optional): a classification this one
   // replaces, whose memory it takes over (fresh memory costs page faults that would double a
   // re-classification's time).
   TileClassification(const SliceTiles& tiles, const RegionTables& tables, bool mip = false,
@@ -35,12 +35,17 @@ class TileClassification {
 
   const SliceTiles& tiles() const { return *tiles_; }
   Axis axis() const { return tiles_->axis; }
-  // One byte per tile: kCellsVisible and kWideVisible (core/slice_tiles.h).
-  const std::vector<std::uint8_t>& visible() const { return visible_; }
+  // Which tiles may hold a visible sample, for the filter's reach (core/slice_tiles.h): one word
+  // per slice and tile group, [slice * groupsPerSlice() + group], bit groupBit(tile) per tile.
+  const std::vector<std::uint64_t>& visibleMasks(Filter filter) const {
+    return filter == Filter::mean ? wideVisible_ : cellsVisible_;
+  }
+  std::size_t visibleTileCount(Filter filter) const;
+  std::size_t memoryBytes() const;
   // Per tile, the largest density a sample of the filter's reach can read (MIP): hidden labels
   // read 0. Only if hasMaxima().
   const std::vector<std::uint16_t>& maxDensity(Filter filter) const;
-  bool hasMaxima() const { return !tiles_->labelled || !cellsMax_.empty(); }
+  bool hasMaxima() const { return hasMaxima_; }
   // True iff made from these TF table objects (the regions themselves do not matter).
   bool classifies(const RegionTables& tables) const;
 
@@ -53,13 +58,20 @@ class TileClassification {
     friend bool operator==(const UsedTables&, const UsedTables&) = default;
   };
   static UsedTables usedBy(const RegionTables& tables);
-  template <bool Maxima>
-  void classifyLabelled(const TfTable& anyRegion, const LabelTables& labels);
+  // read(ranges, n) tells what tile n's reach reads (as the labels say).
+  template <bool Maxima, class ReadTile>
+  void classify(ReadTile&& read, const TfTable& anyRegion, const LabelTables& labels);
+  // The same as classify without maxima for a volume without labels, group by group.
+  void classifyPlainGroups(const TfTable& anyRegion);
+  // Sets the visibility bits of every tile: visible(n) gives the tile's {cells, wide} visibility.
+  template <class TileVisible>
+  void setMasks(TileVisible&& visible);
 
   const SliceTiles* tiles_;
   UsedTables tables_;
-  std::vector<std::uint8_t> visible_;
-  // With labels only (else the tiles' own maxima hold): the maxima as the labels read.
+  bool hasMaxima_ = false;
+  std::vector<std::uint64_t> cellsVisible_, wideVisible_;
+  // With maxima only: per tile, the largest density a sample can read (as the labels read).
   std::vector<std::uint16_t> cellsMax_, wideMax_;
 };
 

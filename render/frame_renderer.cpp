@@ -23,8 +23,8 @@ void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
 
 double FrameRenderer::structureMiB() const {
   if (!tiles_) return 0;
-  const std::size_t visible = classification_ ? classification_->visible().size() : 0;
-  return (tiles_->memoryBytes() + visible) / 1048576.0;
+  const std::size_t classified = classification_ ? classification_->memoryBytes() : 0;
+  return (tiles_->memoryBytes() + classified) / 1048576.0;
 }
 
 Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,

@@ -50,7 +50,7 @@ class FrameRenderer {
   void prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
                Compositing compositing = Compositing::dvr);
 
-  // Memory of the slice tiles (four 16-bit ranges per tile) and their classification, MiB.
+  // Memory of the slice tiles (packed ranges, core/slice_tiles.h) and their classification, MiB.
   double structureMiB() const;
 
   // Which of the fast raycaster's techniques run (the bench switches them; the image is the same).

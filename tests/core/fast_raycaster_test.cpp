@@ -40,7 +40,7 @@ void expectSameImages(const Volume& volume, const TransferFunction& tf, const st
   const TfTable table = buildTable(tf);
   for (Axis axis : {Axis::i, Axis::j, Axis::k}) {
     const SliceTiles tiles = buildSliceTiles(volume, axis);
-    const TileClassification visible(tiles, table);
+    const TileClassification visible(tiles, singleTable(table), /*mip=*/true);  // DVR and MIP
     for (const Case& c : cases) {
       if (c.axis != axis) continue;
       RenderParams p;

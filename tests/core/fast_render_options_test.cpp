@@ -19,7 +19,7 @@ struct Scene {
       buildTable({"bone and vessels",
                   {{-1024, {0, 0, 0}, 0}, {150, {1, 0.3f, 0.2f}, 0}, {400, {1, 1, 0.9f}, 0.5}}});
   SliceTiles tiles = buildSliceTiles(volume, Axis::k);
-  TileClassification visible{tiles, table};
+  TileClassification visible{tiles, singleTable(table), /*mip=*/true};  // DVR and MIP
 
   Image render(Quality quality, double angle, const FastRenderOptions& options = {}) const {
     RenderParams p;
@@ -84,7 +84,7 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
   const Scene scene;
   for (Axis axis : {Axis::k, Axis::i}) {
     const SliceTiles tiles = buildSliceTiles(scene.volume, axis);
-    const TileClassification visible(tiles, scene.table);
+    const TileClassification visible(tiles, singleTable(scene.table), /*mip=*/true);  // DVR and MIP
     for (Quality quality : {Quality::medium, Quality::high})
       for (Compositing mode : {Compositing::dvr, Compositing::mip}) {
         RenderParams p;

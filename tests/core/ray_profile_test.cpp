@@ -45,7 +45,8 @@ class RayProfileTest : public ::testing::Test {
                               FastRenderOptions options) {
     const TfTable table = buildTable(tf);
     const SliceTiles tiles = buildSliceTiles(*volume_, params.axis);
-    const TileClassification visible(tiles, table);  // keeps a pointer to the tiles
+    const bool mip = params.compositing == Compositing::mip;
+    const TileClassification visible(tiles, singleTable(table), mip);  // keeps a pointer to the tiles
     ProfiledFrame frame;
     frame.image = renderFast(*volume_, visible, table, params, options, &frame.stats);
     return frame;

@@ -1,0 +1,132 @@
+// Slice tiles keep their density ranges packed (a byte per end, per-group scale) and a TF change
+// classifies a volume without labels group by group. Both are checked against ranges computed
+// here straight from the voxels: a packed range must hold the exact one (and equal it where the
+// group's densities span less than a byte), a tile with a visible exact range must be classified
+// visible, and the group-by-group classification must equal the tile-by-tile one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "core/tile_classification.h"
+#include "phantom/phantom.h"
+
+namespace angio {
+namespace {
+
+struct ExactRange {
+  int lo = kDensityLevels, hi = -1;
+};
+
+// The voxels tile (tb, tc) of `slice` reads, grown by `reach` voxels (0: cells, 1: mean filter).
+ExactRange exactRange(const Volume& volume, const SliceTiles& t, int slice, int tc, int tb, int reach) {
+  const int nb = volume.dims[t.axisB], nc = volume.dims[t.axisC];
+  ExactRange r;
+  for (int c = std::max(tc * kTileSize - reach, 0);
+       c <= std::min(tc * kTileSize + kTileSize + reach, nc - 1); ++c)
+    for (int b = std::max(tb * kTileSize - reach, 0);
+         b <= std::min(tb * kTileSize + kTileSize + reach, nb - 1); ++b) {
+      glm::ivec3 v;
+      v[int(t.axis)] = slice;
+      v[t.axisB] = b;
+      v[t.axisC] = c;
+      const int d = volume.densityAt(v.x, v.y, v.z);
+      r.lo = std::min(r.lo, d);
+      r.hi = std::max(r.hi, d);
+    }
+  return r;
+}
+
+bool visibleBit(const TileClassification& c, Filter filter, const SliceTiles& t, int slice, int tc,
+                int tb) {
+  const TileRef ref = t.ref(slice, tc, tb);
+  const int bit = (tc % kGroupTiles) * kGroupTiles + tb % kGroupTiles;
+  return (c.visibleMasks(filter)[ref.group] >> bit) & 1u;
+}
+
+// Visible only at densities [d, d + 2]: one packed step too many either way shows up.
+TransferFunction spike(int density) {
+  const double hu = density - 1024;
+  TransferFunction tf;
+  tf.points = {{hu - 0.5, glm::vec3(1.f), 0},
+               {hu, glm::vec3(1.f), 1},
+               {hu + 2, glm::vec3(1.f), 1},
+               {hu + 2.5, glm::vec3(1.f), 0}};
+  return tf;
+}
+
+// 37 x 29 voxels per slice: ten by eight tiles, two groups along b, ragged edges. Left half soft
+// tissue with noise (a group spanning fewer than 256 densities: packed exactly), right half the
+// whole density scale (rounded to steps of 16).
+Volume mixedVolume() {
+  Volume volume = makeVolume({37, 29, 5}, glm::dvec3(1.0));
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> soft(1000, 1200), any(0, kDensityLevels - 1);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 29; ++j)
+      for (int i = 0; i < 37; ++i)
+        volume.voxels[volume.indexOf(i, j, k)] =
+            encodeVoxel((i < 32 ? soft(random) : any(random)) - 1024);
+  return volume;
+}
+
+void checkTiles(const Volume& volume, Axis axis, const std::vector<int>& spikes) {
+  const SliceTiles t = buildSliceTiles(volume, axis);
+  for (int slice = 0; slice < t.slices; ++slice)
+    for (int tc = 0; tc < t.tilesC; ++tc)
+      for (int tb = 0; tb < t.tilesB; ++tb)
+        for (const int reach : {0, 1}) {
+          const PackedRanges& packed = (reach ? t.wide : t.cells).unlabelled;
+          const TileRef ref = t.ref(slice, tc, tb);
+          const ExactRange exact = exactRange(volume, t, slice, tc, tb, reach);
+          ASSERT_LE(packed.lowest(ref), exact.lo) << slice << " " << tc << " " << tb;
+          ASSERT_GE(packed.highest(ref), exact.hi) << slice << " " << tc << " " << tb;
+          if (packed.scale[ref.group].shift == 0) {
+            EXPECT_EQ(packed.lowest(ref), exact.lo);
+            EXPECT_EQ(packed.highest(ref), exact.hi);
+          }
+          ASSERT_LE(packed.groupLowest(ref.group), packed.lowest(ref));
+          ASSERT_GE(packed.groupHighest(ref.group), packed.highest(ref));
+        }
+  for (const int density : spikes) {
+    const TfTable table = buildTable(spike(density));
+    const TileClassification byGroup(t, singleTable(table));
+    const TileClassification byTile(t, singleTable(table), /*mip=*/true);  // per tile, with maxima
+    EXPECT_EQ(byGroup.visibleMasks(Filter::trilinear), byTile.visibleMasks(Filter::trilinear))
+        << density;
+    EXPECT_EQ(byGroup.visibleMasks(Filter::mean), byTile.visibleMasks(Filter::mean)) << density;
+    for (int slice = 0; slice < t.slices; ++slice)
+      for (int tc = 0; tc < t.tilesC; ++tc)
+        for (int tb = 0; tb < t.tilesB; ++tb) {
+          const ExactRange cells = exactRange(volume, t, slice, tc, tb, 0);
+          const ExactRange wide = exactRange(volume, t, slice, tc, tb, 1);
+          if (table.anyVisible(cells.lo, cells.hi))
+            ASSERT_TRUE(visibleBit(byGroup, Filter::trilinear, t, slice, tc, tb)) << density;
+          if (table.anyVisible(wide.lo, wide.hi))
+            ASSERT_TRUE(visibleBit(byGroup, Filter::mean, t, slice, tc, tb)) << density;
+        }
+  }
+}
+
+TEST(TileClassification, PackedRangesHoldTheExactOnesAndEqualThemWithinAByte) {
+  const Volume volume = mixedVolume();
+  checkTiles(volume, Axis::k, {});
+  checkTiles(volume, Axis::i, {});
+}
+
+TEST(TileClassification, GroupsAndTilesClassifyAlikeAndNeverHideAVisibleTile) {
+  const Volume volume = mixedVolume();
+  const std::vector<int> spikes = {900, 1000, 1100, 1199, 1201, 2047, 3000, 4090};
+  checkTiles(volume, Axis::k, spikes);
+  checkTiles(volume, Axis::j, spikes);
+}
+
+TEST(TileClassification, PhantomGroupsAndTilesClassifyAlike) {
+  PhantomOptions options;
+  options.dims = {48, 48, 40};
+  const Volume volume = generatePhantom(options).volume;
+  checkTiles(volume, Axis::k, {1100, 1180, 1300, 2500});
+}
+
+}  // namespace
+}  // namespace angio
