@@ -104,6 +104,11 @@ int runGui(const GuiOptions& options) {
   const GuiOptions effective = session ? withSessionDataset(options, *session) : options;
   LoadedDataset dataset = loadDataset(effective);
   AppStart start = initialState(effective, dataset, session);
+  {
+    ProgressLine progress("preparing the view");
+    dataset.tiles = std::make_shared<const SliceTiles>(
+        buildSliceTiles(dataset.volume, start.document.view.axis, std::ref(progress)));
+  }
   RenderThreads threads;  // the renderer's arenas and priorities, once for the program
   if (options.headless) {
     HeadlessOptions headless;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -181,13 +182,20 @@ void summariseSlice(const Volume& volume, SliceTiles& tiles, int slice, SliceScr
 }
 
 template <class Summary>
-void summariseTiles(const Volume& volume, SliceTiles& tiles) {
+void summariseTiles(const Volume& volume, SliceTiles& tiles,
+                    const std::function<void(double)>& progress) {
   allocate(tiles, tiles.cells);
   allocate(tiles, tiles.wide);
+  std::mutex reporting;  // progress is called one at a time, with growing fractions
+  int slicesDone = 0;
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles.slices), [&](const tbb::blocked_range<int>& range) {
     SliceScratch<Summary> scratch;
     for (int slice = range.begin(); slice != range.end(); ++slice)
       summariseSlice(volume, tiles, slice, scratch);
+    if (!progress) return;
+    const std::lock_guard<std::mutex> lock(reporting);
+    slicesDone += int(range.size());
+    progress(double(slicesDone) / tiles.slices);
   });
 }
 
@@ -209,7 +217,8 @@ std::size_t bytesOf(const TileRanges& r) {
 
 }  // namespace
 
-SliceTiles buildSliceTiles(const Volume& volume, Axis axis) {
+SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
+                           const std::function<void(double)>& progress) {
   SliceTiles tiles;
   tiles.axis = axis;
   tiles.axisB = (int(axis) + 1) % 3;
@@ -218,8 +227,8 @@ SliceTiles buildSliceTiles(const Volume& volume, Axis axis) {
   tiles.tilesB = (volume.dims[tiles.axisB] + kTileSize - 1) / kTileSize;
   tiles.tilesC = (volume.dims[tiles.axisC] + kTileSize - 1) / kTileSize;
   tiles.labelled = anyLabel(volume);
-  if (tiles.labelled) summariseTiles<LabelledSummary>(volume, tiles);
-  else summariseTiles<PlainSummary>(volume, tiles);
+  if (tiles.labelled) summariseTiles<LabelledSummary>(volume, tiles, progress);
+  else summariseTiles<PlainSummary>(volume, tiles, progress);
   return tiles;
 }
 

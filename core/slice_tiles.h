@@ -9,6 +9,7 @@
 // second range is kept over the tile grown by one more voxel on each side.
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/render_params.h"
@@ -115,7 +116,11 @@ struct SliceTiles {
   }
 };
 
-SliceTiles buildSliceTiles(const Volume& volume, Axis axis);
+// The tiles of `volume` for rotation about `axis`. `progress`, if given, is called with the
+// fraction of slices done, growing, one call at a time (from the building threads); an exception
+// it throws stops the build and leaves this function (e.g. a load's cancel).
+SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
+                           const std::function<void(double)>& progress = {});
 
 // The cell base along one axis of n voxels: min(floor(clamp(q)), n - 2), as cellAt computes it.
 int cellBase(double q, int n);

@@ -20,6 +20,7 @@
 #include "render/motion_sampling.h"
 #include "render/progressive_renderer.h"
 #include "core/ray_pick.h"
+#include "core/slice_tiles.h"
 #include "core/volume.h"
 #include "io/study_info.h"
 #include "io/volume_reader.h"
@@ -56,6 +57,10 @@ struct LoadedDataset {
   std::string name;         // file or folder, or "phantom IxJxK"
   std::string description;  // e.g. "MetaImage float32"
   StudyInfo study;          // the patient and study of a DICOM series
+  // The volume's slice tiles for the axis the view starts with, built as part of the load so that
+  // the first frame is as interruptible as any (null: the renderer builds them itself). Handed to
+  // the first renderer of the dataset.
+  std::shared_ptr<const SliceTiles> tiles;
 };
 
 // A volume read from `name` (a file or a DICOM folder) as the app holds it.

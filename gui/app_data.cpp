@@ -19,15 +19,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-LoadedDataset loadInBackground(const std::string& path, JobControl& control) {
-  ReadOptions read;
-  read.progress = [&control](double fraction) {
+// The share of a load's progress bar that reading takes; building the slice tiles the rest
+// (about 2.8 s and 0.5 s at 512x512x1200).
+constexpr double kReadShare = 0.85;
+
+// Reads the volume, then builds its slice tiles for `axis`; both report progress and stop on cancel.
+LoadedDataset loadInBackground(const std::string& path, Axis axis, JobControl& control) {
+  const auto report = [&control](double fraction) {
     control.progress.store(fraction);
     if (control.cancel.load()) throw LoadCancelled();
   };
+  ReadOptions read;
+  read.progress = [&report](double fraction) { report(kReadShare * fraction); };
   read.warn = printWarning;
-  LoadedVolume loaded = readVolume(path, read);
-  return loadedDataset(std::move(loaded), path);
+  LoadedDataset dataset = loadedDataset(readVolume(path, read), path);
+  dataset.tiles = std::make_shared<const SliceTiles>(
+      buildSliceTiles(dataset.volume, axis,
+                      [&report](double fraction) { report(kReadShare + (1 - kReadShare) * fraction); }));
+  return dataset;
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -52,7 +61,9 @@ void App::openDataset(const std::string& path, bool ofSession) {
   loadPath_ = absoluteDataset(path);  // a missing one stays as given: the load names it
   loadOfSession_ = ofSession;
   loadError_.clear();
-  load_.start([path = loadPath_](JobControl& control) { return loadInBackground(path, control); });
+  const Axis axis = pendingSession_ ? pendingSession_->view.axis : doc().view.axis;
+  load_.start(
+      [path = loadPath_, axis](JobControl& control) { return loadInBackground(path, axis, control); });
   message_ = "loading " + loadPath_;
 }
 

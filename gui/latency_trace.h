@@ -53,7 +53,7 @@ class LatencyTrace {
   using Clock = std::chrono::steady_clock;
 
   // Input applied at `inputAt` made request `id` (ids of a renderer's requests grow; the start-up
-  // request, 1, waits for the slice tiles and is left out, and so is a repeated id).
+  // request, 1, is not an input and is left out, and so is a repeated id).
   void requested(std::uint64_t id, Clock::time_point inputAt);
   // The UI took `frame` from latestFrame() and started its upload / completed it; a frame whose
   // pixels were already shown (re-labelled) is shown without an upload.

@@ -1,8 +1,26 @@
 #include "render/frame_renderer.h"
 
+#include <stdexcept>
+
 #include "core/reference_raycaster.h"
 
 namespace angio {
+
+namespace {
+
+bool fits(const SliceTiles& tiles, const Volume& volume) {
+  const auto tilesAlong = [&](int axis) { return (volume.dims[axis] + kTileSize - 1) / kTileSize; };
+  return tiles.slices == volume.dims[int(tiles.axis)] && tiles.tilesB == tilesAlong(tiles.axisB) &&
+         tiles.tilesC == tilesAlong(tiles.axisC);
+}
+
+}  // namespace
+
+FrameRenderer::FrameRenderer(const Volume& volume, std::shared_ptr<const SliceTiles> tiles)
+    : volume_(volume), tiles_(std::move(tiles)) {
+  if (tiles_ && !fits(*tiles_, volume_))
+    throw std::invalid_argument("FrameRenderer: the slice tiles given are of another volume");
+}
 
 void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
                             Compositing compositing) {
@@ -10,7 +28,7 @@ void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
   if (!tiles_ || tiles_->axis != axis) {
     classification_.reset();
     tiles_.reset();  // free the old tiles before building the new ones
-    tiles_ = buildSliceTiles(volume_, axis);
+    tiles_ = std::make_shared<const SliceTiles>(buildSliceTiles(volume_, axis));
   }
   if (classification_ && classifiedScene_ == scene && (!mip || classification_->hasMaxima())) return;
   // The classification needs the region TFs only, not the regions: any non-null regions stand

@@ -31,7 +31,10 @@ struct RenderControl {
 
 class FrameRenderer {
  public:
-  explicit FrameRenderer(const Volume& volume) : volume_(volume) {}
+  // `tiles`, if given, are the volume's slice tiles for some axis, built ahead (a load builds them
+  // for the axis the view starts with, so the first frame need not); renders about another axis
+  // build their own. Throws std::invalid_argument when they do not fit the volume.
+  explicit FrameRenderer(const Volume& volume, std::shared_ptr<const SliceTiles> tiles = {});
 
   // The image of `scene` seen with `params` (view, sampling, shading, compositing): the scene's
   // recipe's raycaster with its TFs and regions, then its finish step (the hybrid) unless the
@@ -52,6 +55,8 @@ class FrameRenderer {
 
   // Memory of the slice tiles (packed ranges, core/slice_tiles.h) and their classification, MiB.
   double structureMiB() const;
+  // The slice tiles of the last prepared axis (or those given to the constructor); null: none yet.
+  const std::shared_ptr<const SliceTiles>& tiles() const { return tiles_; }
 
   // Which of the fast raycaster's techniques run (the bench switches them; the image is the same).
   // Its cancel, recycle and rowsDone come from each render's RenderControl.
@@ -59,7 +64,7 @@ class FrameRenderer {
 
  private:
   const Volume& volume_;
-  std::optional<SliceTiles> tiles_;
+  std::shared_ptr<const SliceTiles> tiles_;
   std::shared_ptr<const PreparedScene> classifiedScene_;
   std::optional<TileClassification> classification_;
   RayRegions regions_;  // the view's, buffers reused from render to render

@@ -39,9 +39,10 @@ double ProgressiveStatus::estimatedProgress() const {
 }
 
 ProgressiveRenderer::ProgressiveRenderer(const Volume& volume, RenderThreads& threads,
-                                         ProgressiveCallbacks callbacks)
-    : volume_(volume), threads_(threads), callbacks_(std::move(callbacks)), frames_(volume),
-      worker_([this] { workerLoop(); }) {}
+                                         ProgressiveCallbacks callbacks,
+                                         std::shared_ptr<const SliceTiles> tiles)
+    : volume_(volume), threads_(threads), callbacks_(std::move(callbacks)),
+      frames_(volume, std::move(tiles)), worker_([this] { workerLoop(); }) {}
 
 ProgressiveRenderer::~ProgressiveRenderer() {
   {
@@ -153,7 +154,8 @@ void ProgressiveRenderer::workerLoop() {
   }
 }
 
-// Slice tiles per axis (rebuilt when it changes, not cancellable) and tile visibility per scene.
+// Slice tiles per axis (rebuilt when it changes, not cancellable: hence built ahead by a load) and
+// tile visibility per scene.
 void ProgressiveRenderer::prepare(const Job& job) {
   frames_.prepare(job.request.scene, job.request.params.axis, job.request.params.compositing);
 }

@@ -128,5 +128,29 @@ TEST(TileClassification, PhantomGroupsAndTilesClassifyAlike) {
   checkTiles(volume, Axis::k, {1100, 1180, 1300, 2500});
 }
 
+// A load builds the tiles with progress and cancel: the fractions grow to 1, and an exception
+// thrown from the callback leaves the build.
+TEST(SliceTiles, BuildReportsGrowingProgressAndStopsOnAThrow) {
+  const Volume volume = mixedVolume();
+  std::vector<double> fractions;
+  const SliceTiles tiles =
+      buildSliceTiles(volume, Axis::k, [&](double fraction) { fractions.push_back(fraction); });
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_GT(fractions.front(), 0.0);
+  EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
+  EXPECT_EQ(tiles.slices, volume.dims.z);
+
+  struct Cancelled {};
+  int calls = 0;
+  EXPECT_THROW(buildSliceTiles(volume, Axis::k,
+                               [&](double) {
+                                 ++calls;
+                                 throw Cancelled{};
+                               }),
+               Cancelled);
+  EXPECT_GE(calls, 1);
+}
+
 }  // namespace
 }  // namespace angio

@@ -88,6 +88,31 @@ TEST(FrameRenderer, OneRendererAcrossScenesAndAxesGivesEachRecipesImage) {
   }
 }
 
+// Tiles built ahead (as a load builds them) are the ones the renderer uses for their axis, give
+// the image it gives with its own, and give way to new ones for another axis.
+TEST(FrameRenderer, TilesBuiltAheadAreUsedForTheirAxisOnly) {
+  const PhantomInVolumeFrame& data = testData();
+  const auto ahead = std::make_shared<const SliceTiles>(buildSliceTiles(data.volume, Axis::k));
+  FrameRenderer frames(data.volume, ahead);
+  EXPECT_EQ(frames.tiles(), ahead);
+  RenderRecipe recipe = vesselGlyphRecipe();
+  const auto scene = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+  EXPECT_EQ(frames.render(scene).pixels, fresh(recipe).pixels);
+  EXPECT_EQ(frames.tiles(), ahead);
+
+  recipe.params.axis = Axis::i;
+  const auto aboutI = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+  EXPECT_EQ(frames.render(aboutI).pixels, fresh(recipe).pixels);
+  ASSERT_NE(frames.tiles(), nullptr);
+  EXPECT_EQ(frames.tiles()->axis, Axis::i);
+}
+
+TEST(FrameRenderer, TilesOfAnotherVolumeAreRefused) {
+  const Volume other = generatePhantom(PhantomOptions{{32, 32, 40}}).volume;
+  const auto tiles = std::make_shared<const SliceTiles>(buildSliceTiles(other, Axis::k));
+  EXPECT_THROW(FrameRenderer(testData().volume, tiles), std::invalid_argument);
+}
+
 // The fast raycaster gives the reference's image (core/fast_raycaster.h), with regions too.
 TEST(FrameRenderer, TheRecipesRaycasterChoiceGivesTheSameImage) {
   RenderRecipe recipe = vesselGlyphRecipe();
