@@ -128,12 +128,14 @@ void addCpr(CLI::App& app, angio::CprOptions& o) {
       ->capture_default_str();
 }
 
-// The phantom's style: realistic (organs, trabecular bone, correlated noise) or simple (as before).
+// The phantom's style: realistic (organs, trabecular bone, correlated noise; arterial or
+// portal-venous phase) or simple (as before).
 void addStyleOption(CLI::App* cmd, std::string& style, const std::string& flag) {
   cmd->add_option(flag, style,
-                  "Phantom style: realistic (organs, trabecular bone, small vessels, correlated "
-                  "noise) or simple (clean tissue, white noise)")
-      ->check(CLI::IsMember({"realistic", "simple"}))
+                  "Phantom style: realistic (arterial phase: organs, trabecular bone, small vessels, "
+                  "correlated noise), portal-venous (the same ~70 s after injection: veins enhanced, "
+                  "vessels and organs at 100-190 HU) or simple (clean tissue, white noise)")
+      ->check(CLI::IsMember({"realistic", "portal-venous", "simple"}))
       ->capture_default_str();
 }
 

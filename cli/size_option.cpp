@@ -18,7 +18,7 @@ glm::ivec3 parseSize(const std::string& text) {
 
 PhantomStyle parseStyle(const std::string& name) {
   if (const auto style = parsePhantomStyle(name)) return *style;
-  throw std::runtime_error("phantom style '" + name + "' is not realistic or simple");
+  throw std::runtime_error("phantom style '" + name + "' is not realistic, portal-venous or simple");
 }
 
 }  // namespace angio

@@ -325,8 +325,8 @@ double noiseSigmaAt(const Look& look, double zMm) {
 }
 
 Look lookOf(PhantomStyle style) {
-  // Arterial-phase CTA: 15-25 HU in soft tissue.
-  if (style == PhantomStyle::realistic) return {true, true, 17, 24};
+  // Arterial-phase CTA: 15-25 HU in soft tissue (the portal-venous phase is scanned alike).
+  if (style != PhantomStyle::simple) return {true, true, 17, 24};
   return {false, false, kNoiseSigmaHu, kNoiseSigmaHu};
 }
 
@@ -563,6 +563,7 @@ std::vector<CenterlinePath> toPhysical(std::vector<CenterlinePath> paths) {
 std::optional<PhantomStyle> parsePhantomStyle(const std::string& name) {
   if (name == "realistic") return PhantomStyle::realistic;
   if (name == "simple") return PhantomStyle::simple;
+  if (name == "portal-venous") return PhantomStyle::portalVenous;
   return std::nullopt;
 }
 

@@ -9,7 +9,8 @@
 // at arterial-phase densities (kidney cortex and medulla, liver, spleen, pancreas, bowel loops),
 // psoas muscles, visceral fat, textured cancellous bone, fatty marrow, hundreds of small
 // contrast-filled branches and in-plane correlated noise; the simple style is the phantom as it was
-// before (clean tissue, white noise), kept for the golden images and the tests built on it.
+// before (clean tissue, white noise), kept for the golden images and the tests built on it; the
+// portal-venous style is the realistic one in the portal-venous phase, veins enhanced.
 // Same options, same bytes, whatever the thread count.
 #include <cstdint>
 #include <functional>
@@ -24,7 +25,10 @@
 
 namespace angio {
 
-enum class PhantomStyle { realistic, simple };
+// realistic: arterial phase (CTA timing); portalVenous: the same anatomy some 70 s after the
+// injection, as in an abdominal staging CT: the arteries, the veins and the organs all read
+// 100-190 HU, on the low-opacity ramp of vessel presets (a renderer's hardest case).
+enum class PhantomStyle { realistic, simple, portalVenous };
 
 struct PhantomOptions {
   glm::ivec3 dims{512, 512, 1200};
@@ -39,7 +43,7 @@ struct PhantomOptions {
   friend bool operator==(const PhantomOptions&, const PhantomOptions&) = default;
 };
 
-// "realistic" or "simple"; nullopt for anything else.
+// "realistic", "simple" or "portal-venous"; nullopt for anything else.
 std::optional<PhantomStyle> parsePhantomStyle(const std::string& name);
 
 struct Phantom {

@@ -133,6 +133,13 @@ constexpr Materials kRealisticMaterials{.vertebra = {1.5, 1000, 280, kBoneLabel,
                                         .metatarsal = {1.5, 1200, 220, kBoneLabel, 60},
                                         .kidney = {7.0, 180, 100, 0, 10}};
 
+// Portal-venous (nephrographic) phase: cortex and medulla alike, about 160-180 HU.
+constexpr Materials kPortalVenousMaterials = [] {
+  Materials m = kRealisticMaterials;
+  m.kidney = {7.0, 175, 165, 0, 10};
+  return m;
+}();
+
 constexpr double kDiscHu = 90;
 
 Capsule capsule(glm::dvec3 a, glm::dvec3 b, double ra, double rb) { return {a, b, ra, rb}; }
@@ -234,7 +241,14 @@ double lumenHu(double distanceFromRootMm) {
   return 430.0 - 100.0 * std::min(1.0, distanceFromRootMm / 1400.0);
 }
 
-void addArteries(Anatomy& anatomy, const ArterialTree& tree) {
+// Portal-venous phase: the arteries read 150..185 HU, hardly more than the veins beside them.
+double portalVenousLumenHu(double distanceFromRootMm) {
+  return 185.0 - 35.0 * std::min(1.0, distanceFromRootMm / 1400.0);
+}
+
+using LumenHu = double (*)(double);
+
+void addArteries(Anatomy& anatomy, const ArterialTree& tree, LumenHu lumenHu) {
   std::vector<double> startDistance(tree.branches.size(), 0.0);
   for (std::size_t b = 0; b < tree.branches.size(); ++b) {
     const ArteryBranch& branch = tree.branches[b];
@@ -280,8 +294,12 @@ std::vector<BodySection> bodySectionsAt(double zMm) {
 }
 
 Anatomy buildAnatomy(PhantomStyle style) {
-  const bool realistic = style == PhantomStyle::realistic;
-  const Materials& m = realistic ? kRealisticMaterials : kSimpleMaterials;
+  const bool realistic = style != PhantomStyle::simple;
+  const bool portalVenous = style == PhantomStyle::portalVenous;
+  const Materials& m = portalVenous ? kPortalVenousMaterials
+                       : realistic  ? kRealisticMaterials
+                                    : kSimpleMaterials;
+  const LumenHu lumen = portalVenous ? portalVenousLumenHu : lumenHu;
   Anatomy anatomy;
   anatomy.feet = feet();
   addSpine(anatomy, m);
@@ -293,8 +311,8 @@ Anatomy buildAnatomy(PhantomStyle style) {
     addFootBones(anatomy.shelled, m, s);
   }
   const ArterialTree tree = buildArterialTree();
-  addArteries(anatomy, tree);
-  if (realistic) addRealisticTissue(anatomy, tree, std::function<double(double)>(lumenHu));
+  addArteries(anatomy, tree, lumen);
+  if (realistic) addRealisticTissue(anatomy, tree, std::function<double(double)>(lumen), style);
   return anatomy;
 }
 

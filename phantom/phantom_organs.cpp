@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <string>
 
 #include "core/labels.h"
 
@@ -40,11 +41,19 @@ Capsule capsule(glm::dvec3 a, glm::dvec3 b, double ra, double rb) { return {a, b
 const Ellipsoid kLiver = ellipsoid({-65, 0, 1195}, {50, 55, 70});
 const Ellipsoid kSpleen = ellipsoid({88, 25, 1190}, {20, 30, 48});
 
-void addOrgans(std::vector<FilledPart>& soft) {
-  soft.push_back({kLiver, 95, 8});
-  soft.push_back({kSpleen, 118, 20});
-  soft.push_back({capsule({-5, -15, 1170}, {62, 14, 1186}, 10, 8), 125, 10});  // pancreas
-  soft.push_back({ellipsoid({0, -5, 905}, {40, 28, 30}), 10, 0});              // bladder
+// Portal-venous phase (about 70 s): the liver enhances through the portal vein to 100-130 HU, the
+// spleen becomes homogeneous, the pancreas fades below the liver.
+struct OrganDensities {
+  double liver, liverTexture, spleen, spleenTexture, pancreas;
+};
+constexpr OrganDensities kArterialOrgans{95, 8, 118, 20, 125};
+constexpr OrganDensities kPortalVenousOrgans{115, 8, 120, 8, 105};
+
+void addOrgans(std::vector<FilledPart>& soft, const OrganDensities& d) {
+  soft.push_back({kLiver, d.liver, d.liverTexture});
+  soft.push_back({kSpleen, d.spleen, d.spleenTexture});
+  soft.push_back({capsule({-5, -15, 1170}, {62, 14, 1186}, 10, 8), d.pancreas, 10});  // pancreas
+  soft.push_back({ellipsoid({0, -5, 905}, {40, 28, 30}), 10, 0});                     // bladder
   for (double s : {1.0, -1.0}) {
     soft.push_back({capsule({28 * s, 48, 1205}, {52 * s, 25, 950}, 13, 18), 60, 5});  // psoas
   }
@@ -235,15 +244,91 @@ void addSmallArteries(Anatomy& anatomy, const ArterialTree& tree,
   addOrganBranches(anatomy.lumen, kSpleen, {78, 15, 1185}, 10, hu, rng);
 }
 
+// ---- Veins (portal-venous phase): soft parts, so that bones, kidneys and bowel paint over them
+// where a hand-placed course grazes one.
+
+// Portal-venous densities (HU): the portal system brightest, the renal veins next, the cava and
+// the leg veins less (unopacified blood from the legs still mixing in).
+constexpr double kPortalHu = 180, kRenalVeinHu = 170, kCavaHu = 150, kIliacVeinHu = 140;
+constexpr double kLegVeinHu = 130, kTibialVeinHu = 120;
+
+void addVein(std::vector<FilledPart>& soft, const std::vector<CurvePoint>& knots, double hu) {
+  for (std::size_t n = 0; n + 1 < knots.size(); ++n) {
+    const CurvePoint& a = knots[n];
+    const CurvePoint& b = knots[n + 1];
+    soft.push_back({capsule(a.position, b.position, a.radius, b.radius), hu});
+  }
+}
+
+CurvePoint at(double x, double y, double z, double r) { return {{x, y, z}, r}; }
+
+// The cava right of the aorta (continuing above the box), the renal veins (the left one in front
+// of the aorta), the portal vein with the splenic and superior mesenteric veins.
+void addTrunkVeins(std::vector<FilledPart>& soft) {
+  addVein(soft, {at(-14, 10, 1260, 11), at(-14, 10, 1195, 11), at(-13, 8, 1100, 10), at(-6, 8, 1050, 9)},
+          kCavaHu);
+  addVein(soft, {at(48, 48, 1160, 4), at(30, 15, 1162, 4), at(14, -6, 1163, 4), at(-12, 6, 1163, 5)},
+          kRenalVeinHu);
+  addVein(soft, {at(-48, 48, 1160, 4), at(-20, 14, 1160, 5)}, kRenalVeinHu);
+  addVein(soft, {at(5, -2, 1175, 7), at(-30, 0, 1190, 7)}, kPortalHu);  // portal
+  addVein(soft, {at(5, -2, 1175, 4.5), at(40, 10, 1180, 4.5), at(78, 15, 1185, 4)},
+          kPortalHu);  // splenic
+  addVein(soft, {at(5, -2, 1175, 5), at(8, -18, 1120, 4.5), at(10, -25, 1070, 4)}, kPortalHu);  // SMV
+}
+
+// Iliac, femoral and popliteal veins of one side (side = +1: the patient's left), medial and
+// behind their arteries (phantom_arteries.cpp), from the cava's confluence to the knee.
+void addLegVeins(std::vector<FilledPart>& soft, double side) {
+  const auto s = [side](double x, double y, double z, double r) { return at(side * x, y, z, r); };
+  addVein(soft,
+          {at(-6, 8, 1050, 7), s(26, 16, 1020, 7), s(42, 24, 990, 6.5), s(56, 16, 960, 6),
+           s(70, -4, 930, 6), s(77, -26, 900, 5.5)},
+          kIliacVeinHu);
+  addVein(
+      soft,
+      {s(77, -26, 900, 5.5), s(79, -30, 880, 5.5), s(76, -19, 800, 5.5), s(72, 0, 700, 5),
+       s(66, 20, 630, 5), s(70, 70, 585, 5), s(88, 90, 540, 5), s(93, 96, 490, 5), s(94, 94, 432, 4.5)},
+      kLegVeinHu);
+}
+
+// Two thin veins beside each tibial artery (venae comitantes), on either side of it.
+void addTibialVeins(std::vector<FilledPart>& soft, const ArterialTree& tree) {
+  for (const ArteryBranch& branch : tree.branches) {
+    if (branch.name.find("tibial") == std::string::npos) continue;
+    const std::vector<CurvePoint> course = resample(branch.points, 8);
+    for (double pair : {1.0, -1.0}) {
+      std::vector<CurvePoint> vein;
+      for (std::size_t n = 0; n < course.size(); ++n) {
+        const std::size_t next = std::min(n + 1, course.size() - 1), previous = n > 0 ? n - 1 : 0;
+        const glm::dvec3 tangent = glm::normalize(course[next].position - course[previous].position);
+        const double radius = 0.8 * course[n].radius;
+        const glm::dvec3 offset = pair * (course[n].radius + radius + 0.5) * perpendicular(tangent);
+        vein.push_back({course[n].position + offset, radius});
+      }
+      addVein(soft, vein, kTibialVeinHu);
+    }
+  }
+}
+
+void addVeins(Anatomy& anatomy, const ArterialTree& tree, Rng& rng) {
+  addTrunkVeins(anatomy.softParts);
+  for (double side : {1.0, -1.0}) addLegVeins(anatomy.softParts, side);
+  addTibialVeins(anatomy.softParts, tree);
+  // Portal branches through the liver, brighter than its parenchyma.
+  addOrganBranches(anatomy.softParts, kLiver, {-30, 0, 1190}, 16, kPortalHu, rng);
+}
+
 }  // namespace
 
 void addRealisticTissue(Anatomy& anatomy, const ArterialTree& tree,
-                        const std::function<double(double)>& lumenHu) {
+                        const std::function<double(double)>& lumenHu, PhantomStyle style) {
   Rng rng;
-  addOrgans(anatomy.softParts);
+  const bool portalVenous = style == PhantomStyle::portalVenous;
+  addOrgans(anatomy.softParts, portalVenous ? kPortalVenousOrgans : kArterialOrgans);
   addSmallArteries(anatomy, tree, lumenHu, rng);
   addColon(anatomy.shelled);
   addSmallBowel(anatomy.shelled, rng);
+  if (portalVenous) addVeins(anatomy, tree, rng);
 }
 
 }  // namespace angio::phantom

@@ -1,6 +1,6 @@
 #pragma once
 // What the realistic phantom adds to the simple one's anatomy (phantom_anatomy.h): abdominal organs
-// at arterial-phase densities (liver, spleen, pancreas, unopacified bladder), psoas muscles, small
+// at arterial-phase (or portal-venous) densities (liver, spleen, pancreas, unopacified bladder), psoas muscles, small
 // bowel loops and colon (enhancing wall around fluid or gas), and hundreds of small contrast-filled
 // branches (1-3 mm) off the arterial tree into the muscles and inside the organs. Real CT owes much
 // of its rendering cost to such tissue: its densities sit on the low-opacity ramp of vessel
@@ -14,7 +14,10 @@
 namespace angio::phantom {
 
 // lumenHu(distance from the aortic root, mm): the contrast density of the tree at that distance.
+// `style` (realistic or portalVenous) is the contrast phase: the organs' densities, and in the
+// portal-venous phase the enhanced veins (portal system, renal veins, cava, iliac, femoral,
+// popliteal and paired tibial veins).
 void addRealisticTissue(Anatomy& anatomy, const ArterialTree& tree,
-                        const std::function<double(double)>& lumenHu);
+                        const std::function<double(double)>& lumenHu, PhantomStyle style);
 
 }  // namespace angio::phantom

@@ -1,5 +1,5 @@
 // The realistic phantom against published CT statistics: noise of 15-25 HU with a lag-1
-// autocorrelation of 0.45-0.65 in-plane, arterial-phase organ densities, textured cancellous bone
+// autocorrelation of 0.45-0.65 in-plane, arterial-phase (and portal-venous) organ and vessel densities, textured cancellous bone
 // and fatty marrow, far more tissue on the "CTA vessels" ramp than the simple phantom, correct
 // ground-truth labels and the same bytes for any thread count; the simple style unchanged.
 #include <algorithm>
@@ -126,6 +126,14 @@ TEST_F(RealisticPhantom, OrgansReadTheirArterialPhaseDensities) {
   }
 }
 
+// The cava (right of the aorta) and a femoral vein (beside its artery): unenhanced in this phase.
+constexpr glm::dvec3 kCava{-14, 10, 1140}, kFemoralVein{74, -9.5, 750};
+
+TEST_F(RealisticPhantom, VeinsAreNotYetEnhanced) {
+  EXPECT_LT(median(huAround(volume(), kCava, {4, 4, 6})), 90) << "cava";
+  EXPECT_LT(median(huAround(volume(), kFemoralVein, {2, 2, 4})), 90) << "femoral vein";
+}
+
 TEST_F(RealisticPhantom, CancellousBoneIsTexturedAndLongBoneMarrowFatty) {
   const std::vector<double> vertebra = huAround(volume(), {0, 40, 1121}, {10, 8, 6});  // L3's body
   EXPECT_GE(median(vertebra), 200);
@@ -158,6 +166,23 @@ TEST_F(RealisticPhantom, LabelsStayCorrect) {
   }
   EXPECT_GT(points, 1000u);
   EXPECT_EQ(labelled, 0u);
+}
+
+// The same anatomy ~70 s after the injection (published portal-venous values): the liver 100-130 HU,
+// the spleen homogeneous, the kidneys nephrographic, the aorta down to 150-185 HU and the veins
+// enhanced: vessels and organs all on the vessel presets' ramp.
+TEST(PortalVenousPhantom, OrgansAndVesselsReadPortalVenousDensities) {
+  const Volume volume =
+      generatePhantom({.dims = kDims, .seed = 1, .style = PhantomStyle::portalVenous}).volume;
+  EXPECT_NEAR(median(huAround(volume, {-65, 0, 1175}, {12, 12, 12})), 115, 10) << "liver";
+  EXPECT_NEAR(median(huAround(volume, {95, 15, 1195}, {4, 4, 4})), 120, 12) << "spleen";
+  for (double s : {1.0, -1.0}) {
+    EXPECT_NEAR(median(huAround(volume, {72 * s, 52, 1160}, {4, 4, 6})), 165, 15) << "medulla " << s;
+  }
+  EXPECT_NEAR(median(huAround(volume, {14, 5, 1150}, {4, 4, 6})), 183, 15) << "aorta";
+  EXPECT_NEAR(median(huAround(volume, kCava, {4, 4, 6})), 150, 15) << "cava";
+  EXPECT_NEAR(median(huAround(volume, kFemoralVein, {2, 2, 4})), 130, 20) << "femoral vein";
+  EXPECT_NEAR(median(huAround(volume, {-12, -1, 1182}, {3, 3, 3})), 180, 20) << "portal vein";
 }
 
 // Fraction of the 8x8 pixel tiles of the axial slices in which some voxel reaches minHu: the tiles
@@ -231,6 +256,7 @@ TEST(PhantomStyles, SimpleIsThePreviousGeneratorsBytes) {
 TEST(PhantomStyles, ParseByName) {
   EXPECT_EQ(parsePhantomStyle("realistic"), PhantomStyle::realistic);
   EXPECT_EQ(parsePhantomStyle("simple"), PhantomStyle::simple);
+  EXPECT_EQ(parsePhantomStyle("portal-venous"), PhantomStyle::portalVenous);
   EXPECT_EQ(parsePhantomStyle("clean"), std::nullopt);
   EXPECT_EQ(PhantomOptions{}.style, PhantomStyle::realistic);
 }
