@@ -527,7 +527,7 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
   for (auto& ray : rays) ray.reset();
   const RayTemplates& templates = f.templates;
   for (std::size_t rank = 0; rank + 1 < templates.rankBegin.size(); ++rank) {
-    if (rank % 4 == 3 && cancelRequested(f.options)) return false;
+    if (cancelRequested(f.options)) return false;  // a relaxed load per group: free
     const std::int32_t group = templates.rankGroup[rank];
     if constexpr (Mode::profile) countRank(f, bundle, rank, scratch);
     if (!Mode::mip && f.skipGroups && !scratch.tiles.groupMask[group]) continue;
@@ -617,7 +617,10 @@ Image frameImage(const ViewGeometry& view, Image* recycle) {
   }
   image.width = view.width;
   image.height = view.height;
-  image.pixels.resize(std::size_t(view.width) * view.height);
+  const std::size_t pixels = std::size_t(view.width) * view.height;
+  // Growing would copy the old pixels into the new memory (touching its pages): they are not needed.
+  if (image.pixels.capacity() < pixels) image.pixels = Pixels();
+  image.pixels.resize(pixels);
   return image;
 }
 
@@ -669,12 +672,12 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.templates = buildRayTemplates(volume, f.view, tiles, options.cancel);
   const double templateMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  Image image = frameImage(f.view, options.recycle);  // unset pixels: no time spent on a cancel
   if (cancelRequested(options)) {
     if (stats) *stats = {0, templateMs, true, false, {}};
-    return makeImage(f.view.width, f.view.height);
+    return image;
   }
 
-  Image image = frameImage(f.view, options.recycle);
   const bool profile = profiled(params, tables.regions != nullptr, labels, options);
   const RowFunction renderRowsFn = rowFunctionFor(params, tables.regions != nullptr, labels, profile);
   std::mutex countsMutex;

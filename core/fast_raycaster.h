@@ -37,7 +37,7 @@ struct FastRenderOptions {
                            // only where samples are dense (osd < 0.75), where it pays
   // Rows that read the same voxels rendered in one pass (row bundles, core/fast_raycaster.cpp).
   bool shareRows = true;
-  const std::atomic<bool>* cancel = nullptr;  // checked per template column, every 4 groups of a row
+  const std::atomic<bool>* cancel = nullptr;  // checked per template column and per group of a row
   // Optional: an earlier frame whose pixel memory the new frame takes over (it is left empty).
   // Fresh memory for a frame costs page faults (the kernel clears every new page). A cancelled
   // frame's unrendered rows are then undefined.

@@ -82,11 +82,14 @@ void sortVisitsFrontToBack(const SliceTiles& tiles, const ViewGeometry& view, Ra
 RayTemplates buildRayTemplates(const Volume& volume, const ViewGeometry& view, const SliceTiles& tiles,
                                const std::atomic<bool>* cancel) {
   std::vector<std::vector<TileRun>> perColumn(view.width);
+  const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   tbb::parallel_for(0, view.width, [&](int x) {
-    if (!cancel || !cancel->load(std::memory_order_relaxed))
-      perColumn[x] = columnRuns(volume, view, tiles, x);
+    if (!cancelled()) perColumn[x] = columnRuns(volume, view, tiles, x);
   });
   RayTemplates templates;
+  // Gathering and ordering the runs is serial (up to 0.2 s for a zoomed view of a 1024^2 volume):
+  // a cancelled frame must not wait for it.
+  if (cancelled()) return templates;
   templates.columnBegin.reserve(view.width + 1);
   for (const auto& runs : perColumn) appendColumn(tiles, runs, templates);
   templates.columnBegin.push_back(std::uint32_t(templates.groups.size()));

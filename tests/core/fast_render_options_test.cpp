@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "core/fast_raycaster.h"
+#include "core/ray_templates.h"
+#include "core/view_geometry.h"
 #include "phantom/phantom.h"
 
 namespace angio {
@@ -50,6 +52,31 @@ TEST(FastRenderOptions, RecycledMemoryOfAnotherSizeGivesTheSameImage) {
     ASSERT_EQ(recycled.height, fresh.height);
     EXPECT_TRUE(recycled.pixels == fresh.pixels) << toString(quality);
   }
+}
+
+// A cancel that comes before the rows (while the templates are built) ends the frame without
+// ordering the templates or clearing pixels: the frame keeps the recycled memory, unset.
+TEST(FastRenderOptions, AFrameCancelledBeforeItsRowsKeepsTheRecycledMemoryAndRendersNothing) {
+  const Scene scene;
+  Image previous = scene.render(Quality::high, 75);  // larger than a medium frame
+  const glm::vec4* memory = previous.pixels.data();
+  const std::atomic<bool> cancel{true};
+  FastRenderOptions options;
+  options.cancel = &cancel;
+  options.recycle = &previous;
+  FastRenderStats stats;
+  RenderParams p;
+  p.sampling = qualitySampling(Quality::medium);
+  const Image image = renderFast(scene.volume, scene.visible, scene.table, p, options, &stats);
+  EXPECT_TRUE(stats.cancelled);
+  EXPECT_EQ(stats.samples, 0u);
+  EXPECT_EQ(image.pixels.data(), memory);
+  EXPECT_EQ(image.pixels.size(), std::size_t(image.width) * image.height);
+
+  const ViewGeometry view = makeViewGeometry(scene.volume, p);
+  const RayTemplates templates = buildRayTemplates(scene.volume, view, scene.tiles, &cancel);
+  EXPECT_TRUE(templates.visits.empty());
+  EXPECT_FALSE(buildRayTemplates(scene.volume, view, scene.tiles).visits.empty());
 }
 
 TEST(FastRenderOptions, EveryRowIsCountedOnceWhenDone) {
