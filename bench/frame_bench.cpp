@@ -172,14 +172,17 @@ LevelProfile profileLevel(FrameRenderer& frames, const std::shared_ptr<const Pre
                           const RenderParams& base, const FrameTimingRow& timed) {
   LevelProfile profile{timed.level, {}, timed.frames, 0};
   frames.techniques.profile = true;
+  std::vector<double> templateMs;
   for (int n = 0; n < timed.frames; ++n) {
     RenderParams p = base;
     p.angleDeg = benchAngle(n, timed.frames);
     FastRenderStats stats;
     frames.render(scene, p, {}, &stats);
     profile.total += stats.profile;
+    templateMs.push_back(stats.templateMs);
   }
   frames.techniques.profile = false;
+  if (!templateMs.empty()) profile.templateMs = median(templateMs);
   const double evaluatedPerFrame = double(profile.total.evaluated) / std::max(timed.frames, 1);
   if (evaluatedPerFrame > 0) profile.nsPerEvaluatedSample = timed.medianCpuMs * 1e6 / evaluatedPerFrame;
   return profile;
@@ -436,7 +439,8 @@ std::string toJson(const BenchReport& r) {
                              {"rays", p.rays},
                              {"terminated_rays", p.terminatedRays},
                              {"terminated_depth", p.terminatedDepth},
-                             {"ns_per_evaluated_sample", l.nsPerEvaluatedSample}});
+                             {"ns_per_evaluated_sample", l.nsPerEvaluatedSample},
+                             {"template_ms", l.templateMs}});
   }
   return j.dump(2);
 }

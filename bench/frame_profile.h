@@ -15,6 +15,7 @@ struct LevelProfile {
   RayProfile total;  // over all frames
   int frames = 0;
   double nsPerEvaluatedSample = 0;  // median CPU ms per frame / evaluated samples per frame
+  double templateMs = 0;            // median wall ms per frame building the ray templates
   bool operator==(const LevelProfile&) const = default;
 };
 
