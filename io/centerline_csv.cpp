@@ -7,7 +7,7 @@
 
 #include "io/atomic_write.h"
 #include "io/input_error.h"
-#include "io/quoted_text.h"
+#include "io/shown_text.h"
 #include "io/number_text.h"
 
 namespace angio {

@@ -11,7 +11,7 @@
 #include "io/atomic_write.h"
 #include "io/json_text.h"
 #include "io/input_error.h"
-#include "io/quoted_text.h"
+#include "io/shown_text.h"
 #include "io/lowercase.h"
 
 namespace angio {

@@ -1,4 +1,5 @@
 #include "io/dicom_element_check.h"
+#include "io/shown_text.h"
 
 #include <array>
 #include <cstdio>
@@ -176,11 +177,11 @@ std::string dicomImageProblem(const DicomElementHeader& header, std::string_view
   if (tag == 0x00020002 || tag == 0x00080016) {
     const std::string uid = trimmedText(value);
     if (!listed(kSingleFrameImageClasses, uid))
-      return "is of SOP class '" + shownDicomValue(uid) +
+      return "is of SOP class '" + shownText(uid) +
              "', not a single-frame CT, MR, PET, CR or secondary capture image";
   }
   if (tag == 0x00280008 && trimmedText(value) != "1")
-    return "has NumberOfFrames (0028,0008) '" + shownDicomValue(trimmedText(value)) +
+    return "has NumberOfFrames (0028,0008) '" + shownText(trimmedText(value)) +
            "'; need single-frame slices";
   if (tag == 0x00280005 && value.size() == 2 && unsigned16(value, header.bigEndian) != 2)
     return "has ImageDimensions (0028,0005) " + std::to_string(unsigned16(value, header.bigEndian)) +
@@ -188,7 +189,7 @@ std::string dicomImageProblem(const DicomElementHeader& header, std::string_view
   if (tag == 0x00080010 && !trimmedText(value).empty()) {
     for (const std::string_view code : kRecognitionCodes)
       if (value.substr(0, code.size()) == code) return "";
-    return "has a RecognitionCode (0008,0010) '" + shownDicomValue(trimmedText(value)) +
+    return "has a RecognitionCode (0008,0010) '" + shownText(trimmedText(value)) +
            "' that is not ACR-NEMA's";
   }
   return "";
@@ -196,25 +197,8 @@ std::string dicomImageProblem(const DicomElementHeader& header, std::string_view
 
 std::string dicomTransferSyntaxProblem(const std::string& uid) {
   if (listed(kReadTransferSyntaxes, uid)) return "";
-  return "has transfer syntax '" + shownDicomValue(uid) +
+  return "has transfer syntax '" + shownText(uid) +
          "', which is not read (need native, JPEG, JPEG-LS, JPEG 2000 or RLE)";
-}
-
-std::string shownDicomValue(std::string_view value) {
-  constexpr std::size_t kShownBytes = 64;
-  std::string shown;
-  for (const char c : value.substr(0, kShownBytes)) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7f) {
-      shown += c;
-      continue;
-    }
-    char escaped[8];
-    std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-    shown += escaped;
-  }
-  if (value.size() > kShownBytes) shown += "...";
-  return shown;
 }
 
 }  // namespace angio

@@ -42,8 +42,4 @@ bool dicomDictionarySequence(std::uint16_t group, std::uint16_t element);
 // syntaxes and the JPEG, JPEG-LS, JPEG 2000 and RLE codecs GDCM decodes.
 std::string dicomTransferSyntaxProblem(const std::string& uid);
 
-// A value from a file as a message shows it: printable ASCII as is, other bytes as \xNN, at most
-// 64 bytes of it (then "...").
-std::string shownDicomValue(std::string_view value);
-
 }  // namespace angio

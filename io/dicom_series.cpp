@@ -13,6 +13,7 @@
 #include <itkGDCMImageIO.h>
 
 #include "io/dicom_file_walk.h"
+#include "io/shown_text.h"
 #include "io/dicom_slice_check.h"
 #include "io/input_error.h"
 #include "io/volume_conversion.h"
@@ -37,10 +38,7 @@ struct Slice {
 
 // A UID as the user reads it in a message (it comes from the file: printable characters only).
 std::string shownUid(const std::string& uid) {
-  if (uid.empty()) return "(no SeriesInstanceUID)";
-  std::string shown;
-  for (const char c : uid) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-  return shown;
+  return uid.empty() ? "(no SeriesInstanceUID)" : shownText(uid);
 }
 
 std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }

@@ -16,6 +16,7 @@
 #include <gdcmReader.h>
 
 #include "io/dicom_element_check.h"
+#include "io/shown_text.h"
 #include "io/dicom_file_walk.h"
 #include "io/input_error.h"
 
@@ -76,7 +77,7 @@ std::optional<std::vector<double>> decimals(const gdcm::DataSet& data, const gdc
     char* parsedEnd = nullptr;
     const double value = std::strtod(text.c_str(), &parsedEnd);
     if (text.empty() || *parsedEnd != '\0' || !std::isfinite(value))
-      problem.fail(std::string("has an invalid ") + name + " ('" + shownDicomValue(*bytes) + "')");
+      problem.fail(std::string("has an invalid ") + name + " ('" + shownText(*bytes) + "')");
     values.push_back(value);
     start = end + 1;
   }
@@ -143,11 +144,11 @@ void checkReadableImage(const gdcm::File& file, const SliceProblem& problem) {
   if (!sopClass) sopClass = valueBytes(data, gdcm::Tag(0x0008, 0x0016));
   const std::string uid = trimmed(sopClass.value_or(""));
   if (!gdcm::MediaStorage::IsImage(gdcm::MediaStorage::GetMSType(uid.c_str())))
-    problem.fail("is not an image (SOP class '" + shownDicomValue(uid) + "')");
+    problem.fail("is not an image (SOP class '" + shownText(uid) + "')");
   if (const auto photometric = valueBytes(data, gdcm::Tag(0x0028, 0x0004))) {
     const std::string name = trimmed(*photometric);
     if (name != "MONOCHROME1" && name != "MONOCHROME2")
-      problem.fail("has PhotometricInterpretation (0028,0004) '" + shownDicomValue(name.substr(0, 16)) +
+      problem.fail("has PhotometricInterpretation (0028,0004) '" + shownText(name.substr(0, 16)) +
                    "'; need greyscale CT (MONOCHROME1 or MONOCHROME2)");
   }
   if (data.FindDataElement(gdcm::Tag(0x0088, 0x0200)))

@@ -202,11 +202,5 @@ TEST_F(DicomElementCheckTest, ElementProblemsAreEmptyForWellFormedElements) {
   EXPECT_EQ(dicomTransferSyntaxProblem("1.2.840.10008.1.2.4.70"), "");
 }
 
-TEST(DicomValueShown, NonPrintableBytesAreEscapedAndLongValuesCut) {
-  EXPECT_EQ(shownDicomValue(std::string("a\nb\x01\xff", 5)), "a\\x0ab\\x01\\xff");
-  const std::string shown = shownDicomValue(std::string(100, 'x'));
-  EXPECT_EQ(shown, std::string(64, 'x') + "...");
-}
-
 }  // namespace
 }  // namespace angio
