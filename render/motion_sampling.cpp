@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kStepRatio = 1.189207115002721;  // 2^(1/4)
 constexpr double kFinerHeadroom = 0.75;
-constexpr double kCoarsestPerFastIsd = 2.0;
+constexpr double kCoarsestPerFastIsd = 4.0;
 
 // From the finest (medium's isd) to the fast level's, both included, then on in the same ratio
 // up to kCoarsestPerFastIsd times the fast level's.

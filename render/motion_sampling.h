@@ -18,14 +18,15 @@ struct MeasuredFrame {
 };
 
 // The first level's sampling for the next frame: levels[fast] with its isd replaced by a step of
-// a ladder from levels[medium].isd to twice levels[fast].isd (ratio 2^(1/4) between steps, so the
+// a ladder from levels[medium].isd to four times levels[fast].isd (ratio 2^(1/4) between steps, so the
 // pixel count changes by about 1.4x per step). The time is predicted as
 // `last.ms * (last.isd / isd)^2` (the pixel count); the finest step within `budgetMs` is taken,
 // except that a step finer than `last`'s needs a prediction within 3/4 of the budget (no flicker
 // between two steps). Steps coarser than the fast level are there for the scans where even it is
 // over budget (a tall run-off, a zoomed view): a blurrier image that follows the hand beats a
-// sharper one that lags it, as VTK's interactive level of detail does; the coarsest has a quarter
-// of the fast level's pixels. Without a measurement, or with a budget of 0 (off), levels[fast] as
+// sharper one that lags it, as VTK's interactive level of detail does; the coarsest has a
+// sixteenth of the fast level's pixels (a 1024-matrix run-off needs that much: its fast level takes
+// 70-190 ms, and a quarter of its pixels still over 60 ms). Without a measurement, or with a budget of 0 (off), levels[fast] as
 // it is.
 Sampling motionSampling(const LevelSamplings& levels, std::optional<MeasuredFrame> last,
                         double budgetMs);

@@ -1,9 +1,11 @@
 // The first level's sampling while dragging: the finest isd of the ladder from the medium level to
-// twice the fast level's whose predicted time (the measured one times the pixel ratio) fits the
+// four times the fast level's whose predicted time (the measured one times the pixel ratio) fits the
 // budget.
 #include "render/motion_sampling.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace angio {
 namespace {
@@ -34,15 +36,18 @@ TEST(MotionSampling, ASlowFrameCoarsensToTheFirstStepWithinTheBudget) {
   EXPECT_NEAR(motionSampling(levels, MeasuredFrame{100, 1}, 40).isd, kStep * kStep * kStep, 1e-12);
 }
 
-TEST(MotionSampling, AFastLevelOverBudgetCoarsensPastItUpToTwiceItsIsd) {
+TEST(MotionSampling, AFastLevelOverBudgetCoarsensPastItUpToFourTimesItsIsd) {
   const LevelSamplings levels = defaultLevelSamplings();  // fast: isd 3
   // 52 ms at isd 3 (the fast level on a tall run-off): 3 kStep costs 52 / 1.41 = 36.8 ms.
   EXPECT_NEAR(motionSampling(levels, MeasuredFrame{52, 3}, 40).isd, 3 * kStep, 1e-12);
   // 500 ms at isd 1: 3 kStep costs 500 / 12.7 = 39.3 ms.
   EXPECT_NEAR(motionSampling(levels, MeasuredFrame{500, 1}, 40).isd, 3 * kStep, 1e-12);
-  // Even isd 6 (a quarter of the fast level's pixels) is over budget: it is the coarsest there is.
-  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{2000, 1}, 40).isd, 6.0, 1e-9);
-  EXPECT_EQ(motionSampling(levels, MeasuredFrame{2000, 1}, 40).osd, levels[0].osd);
+  // 2000 ms at isd 1 (a 1024-matrix run-off at the medium level): 3 kStep^5 costs 2000 / 50.9 =
+  // 39.3 ms.
+  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{2000, 1}, 40).isd, 3 * std::pow(kStep, 5), 1e-9);
+  // Even isd 12 (a sixteenth of the fast level's pixels) is over budget: it is the coarsest there is.
+  EXPECT_NEAR(motionSampling(levels, MeasuredFrame{10000, 1}, 40).isd, 12.0, 1e-9);
+  EXPECT_EQ(motionSampling(levels, MeasuredFrame{10000, 1}, 40).osd, levels[0].osd);
 }
 
 TEST(MotionSampling, LevelsWithoutRoomBelowTheFastLevelStillCoarsen) {
