@@ -16,7 +16,8 @@ constexpr float kSliderWidth = 260;
 bool slider(const char* label, double& value, double lo, double hi, const char* format,
             const std::string& name, WidgetRects& rects) {
   ImGui::SetNextItemWidth(kSliderWidth);
-  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format);
+  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format,
+                                           ImGuiSliderFlags_AlwaysClamp);
   noteRect(rects, name);
   return changed;
 }

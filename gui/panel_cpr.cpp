@@ -33,7 +33,7 @@ void drawWindowAndWidth(CprState& cpr, WidgetRects& rects) {
   ImGui::BeginDisabled(cpr.mode == CprMode::projected);
   ImGui::SetNextItemWidth(150);
   ImGui::SliderScalar("width##cpr", ImGuiDataType_Double, &cpr.widthMm, &kMinCprWidthMm, &kMaxCprWidthMm,
-                      "%.0f mm");
+                      "%.0f mm", ImGuiSliderFlags_AlwaysClamp);
   ImGui::EndDisabled();
   noteRect(rects, "cpr_width");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
@@ -84,7 +84,8 @@ void drawHybrid(CprState& cpr, bool hybridBefore, const CprPanelInfo& info, Widg
   ImGui::BeginDisabled(!cpr.hybrid);  // there, greyed, while the hybrid is off: nothing moves
   ImGui::SetNextItemWidth(150);
   const double lo = 0, hi = kMaxTransitionMm;
-  ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm");
+  ImGui::SliderScalar("transition", ImGuiDataType_Double, &cpr.transitionMm, &lo, &hi, "%.1f mm",
+                      ImGuiSliderFlags_AlwaysClamp);
   ImGui::EndDisabled();
   noteRect(rects, "cpr_transition");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))

@@ -106,7 +106,8 @@ ExportRequests drawImageExport(ExportPanelUi& ui, const JobInfo& job, WidgetRect
       "(FILE.json) records every parameter.");
   const double isdMin = 0.1, isdMax = 5;
   ImGui::SetNextItemWidth(120);
-  ImGui::SliderScalar("isd", ImGuiDataType_Double, &ui.isd, &isdMin, &isdMax, "%.2f");
+  ImGui::SliderScalar("isd", ImGuiDataType_Double, &ui.isd, &isdMin, &isdMax, "%.2f",
+                      ImGuiSliderFlags_AlwaysClamp);
   helpMarker("Image sampling distance in voxel units: 0.5 = the high level, 0.25 for print.");
   if (job.running) {
     ImGui::Text("rendering ... %.0f s", job.seconds);

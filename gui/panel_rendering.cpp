@@ -19,9 +19,11 @@ constexpr NamedWindow kMipWindows[] = {{"CTA", 800, 300}, {"bone", 1500, 500}, {
 void drawMipWindow(RenderingEdit& edit) {
   float window = float(edit.mipWindow), level = float(edit.mipLevel);
   ImGui::SetNextItemWidth(200);
-  if (ImGui::SliderFloat("window (HU)", &window, 1, 4000, "%.0f")) edit.mipWindow = window;
+  if (ImGui::SliderFloat("window (HU)", &window, 1, 4000, "%.0f", ImGuiSliderFlags_AlwaysClamp))
+    edit.mipWindow = window;
   ImGui::SetNextItemWidth(200);
-  if (ImGui::SliderFloat("level (HU)", &level, -1024, 3071, "%.0f")) edit.mipLevel = level;
+  if (ImGui::SliderFloat("level (HU)", &level, -1024, 3071, "%.0f", ImGuiSliderFlags_AlwaysClamp))
+    edit.mipLevel = level;
   for (std::size_t n = 0; n < std::size(kMipWindows); ++n) {
     if (n) ImGui::SameLine();
     if (ImGui::SmallButton(kMipWindows[n].label))
@@ -35,10 +37,10 @@ void drawShading(Shading& shading) {
   float ka = float(shading.ka), kd = float(shading.kd);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90);
-  if (ImGui::SliderFloat("ka", &ka, 0, 1, "%.2f")) shading.ka = ka;
+  if (ImGui::SliderFloat("ka", &ka, 0, 1, "%.2f", ImGuiSliderFlags_AlwaysClamp)) shading.ka = ka;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90);
-  if (ImGui::SliderFloat("kd", &kd, 0, 1, "%.2f")) shading.kd = kd;
+  if (ImGui::SliderFloat("kd", &kd, 0, 1, "%.2f", ImGuiSliderFlags_AlwaysClamp)) shading.kd = kd;
 }
 
 }  // namespace

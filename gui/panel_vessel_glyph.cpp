@@ -17,7 +17,8 @@ constexpr const char* kContextNames[] = {"none", "slab", "tube"};
 // A slider for a double; true when it changed.
 bool sliderMm(const char* label, double& value, double lo, double hi, const char* format = "%.1f mm") {
   ImGui::SetNextItemWidth(180);
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format);
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format,
+                             ImGuiSliderFlags_AlwaysClamp);
 }
 
 // The preset combo of a region TF: the main TF it follows first, then the presets; a chosen preset
@@ -80,7 +81,8 @@ void drawFocus(TubeRadius& focus, WidgetRects& rects) {
   if (focus.mode == RadiusMode::vesselFactor) {
     ImGui::SetNextItemWidth(180);
     const double lo = 0.5, hi = 6;
-    ImGui::SliderScalar("x radius##focus", ImGuiDataType_Double, &focus.value, &lo, &hi, "%.2fx");
+    ImGui::SliderScalar("x radius##focus", ImGuiDataType_Double, &focus.value, &lo, &hi, "%.2fx",
+                        ImGuiSliderFlags_AlwaysClamp);
   } else {
     sliderMm("radius##focus", focus.value, 0.5, 40);
   }

@@ -49,10 +49,12 @@ void drawMotion(ViewState& view, double fitZoom) {
   ImGui::SameLine();
   float spin = float(view.spinDegreesPerSecond);
   ImGui::SetNextItemWidth(130);
-  if (ImGui::SliderFloat("deg/s", &spin, -180, 180, "%.0f")) view.spinDegreesPerSecond = spin;
+  if (ImGui::SliderFloat("deg/s", &spin, -180, 180, "%.0f", ImGuiSliderFlags_AlwaysClamp))
+    view.spinDegreesPerSecond = spin;
   float perPixel = float(view.degreesPerPixel);
   ImGui::SetNextItemWidth(130);
-  if (ImGui::SliderFloat("deg per pixel (drag)", &perPixel, 0.05f, 2.f, "%.2f"))
+  if (ImGui::SliderFloat("deg per pixel (drag)", &perPixel, 0.05f, 2.f, "%.2f",
+                         ImGuiSliderFlags_AlwaysClamp))
     view.degreesPerPixel = perPixel;
   if (ImGui::Button("reset zoom/pan")) view.zoom = 1, view.panPx = glm::dvec2(0.0);
   ImGui::SameLine();

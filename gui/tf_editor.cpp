@@ -199,7 +199,8 @@ void drawSelectedPointFields(TransferFunction& tf, TfEditorView& view, bool& cha
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   const double zero = 0, one = 1;
-  if (ImGui::SliderScalar("opacity", ImGuiDataType_Double, &point.opacity, &zero, &one, "%.3f"))
+  if (ImGui::SliderScalar("opacity", ImGuiDataType_Double, &point.opacity, &zero, &one, "%.3f",
+                          ImGuiSliderFlags_AlwaysClamp))
     changed = true;
   ImGui::PopID();
 }
@@ -208,11 +209,11 @@ void drawModulators(TransferFunction& tf, TfEditorView& view, bool& changed) {
   const double scaleMin = 0, scaleMax = 3, shiftMin = -500, shiftMax = 500;
   ImGui::SetNextItemWidth(180);
   if (ImGui::SliderScalar("opacity modulator", ImGuiDataType_Double, &tf.modulators.opacityScale,
-                          &scaleMin, &scaleMax, "x %.2f"))
+                          &scaleMin, &scaleMax, "x %.2f", ImGuiSliderFlags_AlwaysClamp))
     changed = true;
   ImGui::SetNextItemWidth(180);
   if (ImGui::SliderScalar("HU shift", ImGuiDataType_Double, &tf.modulators.huShift, &shiftMin, &shiftMax,
-                          "%+.0f HU"))
+                          "%+.0f HU", ImGuiSliderFlags_AlwaysClamp))
     changed = true;
   if (ImGui::SmallButton("reset modulators") &&
       (tf.modulators.opacityScale != 1 || tf.modulators.huShift != 0)) {
