@@ -8,6 +8,7 @@
 
 #include "io/input_error.h"
 #include "io/json_text.h"
+#include "io/shown_text.h"
 
 namespace angio {
 
@@ -119,7 +120,7 @@ struct StepParser {
       step.kind = ScriptStep::Kind::state;
       step.text = string(object["state"], "state");
     } else {
-      fail("unknown action " + object.begin().key());
+      fail("unknown action " + quotedText(object.begin().key()));
     }
     return step;
   }

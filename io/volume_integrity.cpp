@@ -9,6 +9,7 @@
 #include "io/input_error.h"
 #include "io/metaimage_header.h"
 #include "io/nifti_header.h"
+#include "io/shown_text.h"
 
 namespace angio {
 
@@ -48,7 +49,8 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
     std::error_code error;
     const std::uint64_t size = std::filesystem::file_size(data, error);
     if (error)
-      throw InputError(file, "its data file " + dataFile + " cannot be read: " + error.message());
+      throw InputError(file,
+                       "its data file " + quotedText(dataFile) + " cannot be read: " + error.message());
     found = size;
     long headerBytes = 0;
     try {
