@@ -25,9 +25,9 @@ struct MeasuredFrame {
 // between two steps). Steps coarser than the fast level are there for the scans where even it is
 // over budget (a tall run-off, a zoomed view): a blurrier image that follows the hand beats a
 // sharper one that lags it, as VTK's interactive level of detail does; the coarsest has a
-// sixteenth of the fast level's pixels (a 1024-matrix run-off needs that much: its fast level takes
-// 70-190 ms, and a quarter of its pixels still over 60 ms). Without a measurement, or with a budget of 0 (off), levels[fast] as
-// it is.
+// sixteenth of the fast level's pixels: on a 1024-matrix run-off a quarter of them still took
+// 66-84 ms in the headless GUI. Without a measurement, or with a budget of 0 (off), levels[fast]
+// as it is.
 Sampling motionSampling(const LevelSamplings& levels, std::optional<MeasuredFrame> last,
                         double budgetMs);
 
