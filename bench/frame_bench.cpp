@@ -25,23 +25,6 @@ namespace {
 
 using Clock = BenchClock;
 
-struct Level {
-  std::string name;
-  Sampling sampling;
-};
-
-std::vector<Level> levels() {
-  Sampling trilinearMedium = qualitySampling(Quality::medium);
-  trilinearMedium.filter = Filter::trilinear;
-  return {{"fast", qualitySampling(Quality::fast)},
-          {"medium", qualitySampling(Quality::medium)},
-          {"medium-trilinear", trilinearMedium},
-          {"high", qualitySampling(Quality::high)}};
-}
-
-// The n-th of `count` angles spread over the full turn, as every timed row renders them.
-double benchAngle(int n, int count) { return 360.0 * n / count; }
-
 // What the "clipped" rows render (core/clip_interval.h): the middle 80 % of the volume along
 // every axis, the half behind a plane facing the viewer through the centre.
 ViewClipping benchClipping(const Volume& volume) {
@@ -233,6 +216,29 @@ InterruptLatency interruptLatency(FrameRenderer& frames,
 
 }  // namespace
 
+RenderParams BenchLevel::params(Axis axis) const {
+  RenderParams p;
+  p.axis = axis;
+  p.sampling = sampling;
+  return p;
+}
+
+std::vector<BenchLevel> benchLevels(const std::vector<std::string>& wanted) {
+  Sampling trilinearMedium = qualitySampling(Quality::medium);
+  trilinearMedium.filter = Filter::trilinear;
+  std::vector<BenchLevel> levels = {{"fast", qualitySampling(Quality::fast)},
+                                    {"medium", qualitySampling(Quality::medium)},
+                                    {"medium-trilinear", trilinearMedium},
+                                    {"high", qualitySampling(Quality::high)}};
+  if (wanted.empty()) return levels;
+  std::erase_if(levels, [&](const BenchLevel& level) {
+    return std::find(wanted.begin(), wanted.end(), level.name) == wanted.end();
+  });
+  return levels;
+}
+
+double benchAngle(int n, int count) { return 360.0 * n / count; }
+
 BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
                           const BenchSettings& settings) {
   std::optional<tbb::global_control> limit;
@@ -281,12 +287,8 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
     frames.techniques = {};
     return times;
   };
-  for (const Level& level : levels()) {
-    const auto& wanted = settings.levels;
-    if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), level.name) == wanted.end()) continue;
-    RenderParams p;
-    p.axis = settings.axis;
-    p.sampling = level.sampling;
+  for (const BenchLevel& level : benchLevels(settings.levels)) {
+    const RenderParams p = level.params(settings.axis);
     report.rows.push_back(
         timeFrames(level.name, "all", settings.angles, p, sceneFrames(frames, scene, previous)));
     std::fprintf(stderr, "bench: %s %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);

@@ -41,6 +41,19 @@ struct BenchSettings {
   bool profile = false;
 };
 
+// The levels every frame bench times: the three quality levels and medium with trilinear filtering.
+struct BenchLevel {
+  std::string name;  // "fast", "medium", "medium-trilinear", "high"
+  Sampling sampling;
+
+  RenderParams params(Axis axis) const;  // a view about `axis` with this sampling
+};
+// Those of `wanted` (names; empty: all), in the order above.
+std::vector<BenchLevel> benchLevels(const std::vector<std::string>& wanted = {});
+
+// The n-th of `count` angles spread over the full turn, as every timed row renders them.
+double benchAngle(int n, int count);
+
 struct FrameTimingRow {
   std::string level;    // "fast", "medium", "high", "medium-trilinear"
   std::string variant;  // "all", "clipped", "reference", "no empty-space skipping", ...

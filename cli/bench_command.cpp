@@ -3,6 +3,7 @@
 #include <fstream>
 #include <functional>
 
+#include "bench/approximation_bench.h"
 #include "bench/frame_bench.h"
 #include "bench/slice_bench.h"
 #include "bench/trace_bench.h"
@@ -92,6 +93,15 @@ int runBench(const BenchOptionsCli& options) {
   const Phantom data = benchVolume(options);
   const Volume& volume = data.volume;
   if (options.glyphIntervals) return runGlyphIntervalBench(options, volume);
+  if (options.approximations) {
+    ApproximationSettings settings;
+    settings.angles = options.angles;
+    settings.axis = *parseAxis(options.axis);
+    settings.threads = options.threads;
+    settings.levels = options.levels;
+    std::printf("%s", formatApproximationBench(runApproximationBench(volume, tf, settings)).c_str());
+    return 0;
+  }
   if (options.slices) {
     std::printf("%s", formatSliceBench(runSliceBench(volume, options.angles)).c_str());
     return 0;

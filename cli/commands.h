@@ -29,6 +29,7 @@ struct RenderOptions {
   std::string quality = "high";
   std::optional<double> isd, osd, ert, ka, kd;
   std::optional<std::string> filter;
+  bool preintegrated = false;          // pre-integrated classification (an approximation)
   std::optional<std::string> shading;  // "on" | "off"
   bool mip = false;
   std::optional<double> window, level;
@@ -119,6 +120,7 @@ struct BenchOptionsCli {
       false;            // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
   bool trace = false;   // time only vessel tracing (bench/trace_bench.h)
   bool slices = false;  // time only the slice view's images (bench/slice_bench.h)
+  bool approximations = false;  // time and compare the approximations (bench/approximation_bench.h)
 };
 int runBench(const BenchOptionsCli& options);
 

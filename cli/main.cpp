@@ -59,6 +59,9 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
       ->check(angio::numberAtLeast(angio::kMinSamplingDistance));
   cmd->add_option("--filter", o.filter, "Reconstruction filter")
       ->check(CLI::IsMember({"nearest", "trilinear", "mean"}));
+  cmd->add_flag("--preintegrated", o.preintegrated,
+                "Pre-integrated classification: each segment between samples classified by the TF's "
+                "integral over its densities (an approximation that keeps thin shells at larger --osd)");
   cmd->add_option("--shading", o.shading, "Headlight diffuse shading")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(angio::numberBetween(0, 10));
@@ -222,6 +225,10 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--slices", o.slices,
                 "Time only the slice view's images: each orientation stepped through --angles "
                 "slices");
+  cmd->add_flag("--approximations", o.approximations,
+                "Time only the approximations against the exact images: per level, osd x1 ... x4 "
+                "post- and pre-integrated, PSNR against the level's exact image and the converged "
+                "one (osd / 4); --angles 6 is plenty");
 }
 
 void addDemo(CLI::App& app, angio::DemoOptions& o) {

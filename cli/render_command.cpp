@@ -40,6 +40,7 @@ RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
   if (o.osd) p.sampling.osd = *o.osd;
   if (o.ert) p.sampling.ert = *o.ert;
   if (o.filter) p.sampling.filter = *parseFilter(*o.filter);
+  p.sampling.preintegrated = o.preintegrated;
   if (o.shading) p.shading.enabled = *o.shading == "on";
   if (o.ka) p.shading.ka = *o.ka;
   if (o.kd) p.shading.kd = *o.kd;

@@ -14,6 +14,7 @@
 
 #include "core/clip_interval.h"
 #include "core/compositing.h"
+#include "core/preintegration.h"
 #include "core/ray_samplers.h"
 #include "core/ray_templates.h"
 #include "core/volume_sampling.h"
@@ -34,6 +35,8 @@ struct Frame {
   ViewGeometry view;
   FrameTables tables;
   RayTemplates templates;
+  // Pre-integrated classification (params.sampling.preintegrated, DVR), slot for slot with tables.
+  const PreintegratedTables* segments = nullptr;
 
   glm::dvec3 rayStepQ{0.0};  // from one sample to the next, voxel units (RaySamples::stepQ)
   bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
@@ -189,6 +192,10 @@ struct Lane {
   bool shows = true;  // some sample lies in the domain and the clipping's interval (MIP: not black)
   bool done = false;  // terminated early, or nothing more shown
   long firstEvaluated = -1;  // profiling: the lane's first reconstructed sample
+  // Pre-integration: the density of the lane's last evaluated sample, and which sample that was;
+  // samples up to it are done (a run's extension, see visitGroup, may have taken the next run's first).
+  float front = 0.f;
+  long frontAt = std::numeric_limits<long>::min();
 };
 
 // What the rays of one column of a bundle carry from one tile group to the next.
@@ -204,6 +211,11 @@ struct BundleRay {
   long clipBegin = std::numeric_limits<long>::min();
   long clipEnd = std::numeric_limits<long>::max();
   long nextEnd = std::numeric_limits<long>::max();
+  long domainEnd = std::numeric_limits<long>::max();  // pre-integration: after the ray's last sample
+  // Pre-integration: the last sample of the last hidden cell leapt over, and its corners' density
+  // range, which holds every lane's density there.
+  long hiddenAt = std::numeric_limits<long>::min();
+  glm::ivec2 hiddenRange{0};
 
   // The first sample any live lane still needs.
   long resumeAt(int lanes) const {
@@ -262,6 +274,20 @@ void countTermination(const RowBundle& bundle, long k, const Lane& lane, RayProf
   profile.terminatedDepth += std::uint64_t(k - lane.firstEvaluated + 1) * rays;
 }
 
+// Pre-integration: the segment from sample k - 1 to k of lane l, classified with sample k's TF
+// (core/preintegration.h). The front is the lane's last evaluated sample, or read where the lane
+// did not evaluate k - 1 (skipped, clipped, or before the ray's first sample), as the reference does.
+template <class Sampler>
+glm::vec4 preintegratedSegment(const Frame& f, const RowBundle& bundle, int l, long k, Region region,
+                               int label, float back, BundleRay<Sampler>& b) {
+  Lane& lane = b.lanes[l];
+  const float front =
+      lane.frontAt == k - 1 ? lane.front : b.sampler.densityAt(b.positions.at(k - 1), bundle.fracA[l]);
+  lane.front = back;
+  lane.frontAt = k;
+  return f.segments->of(region, label, f.tables).segment(front, back);
+}
+
 // One sample k of one lane, after the bundle's sampler moved to it.
 template <class Mode, class Sampler>
 void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRay<Sampler>& b) {
@@ -288,9 +314,13 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   if constexpr (Mode::mip) {
     lane.mipMaximum = std::max(lane.mipMaximum, sampler.density(bundle.fracA[l]));
   } else {
-    // (Without regions the sampler's cell already passed this test for every lane.)
-    if (Mode::regions && f.skipCells && !sampler.mayBeVisible(*f.tfOf(region, label))) return;
-    const glm::vec4 rgba = (*table)[tableIndex(sampler.density(bundle.fracA[l]))];
+    // (Without regions the sampler's cell already passed this test for every lane. A
+    // pre-integrated segment reaches back to the sample before: sampleSpan tests that.)
+    if (Mode::regions && f.skipCells && !f.segments && !sampler.mayBeVisible(*f.tfOf(region, label)))
+      return;
+    const float density = sampler.density(bundle.fracA[l]);
+    const glm::vec4 rgba = f.segments ? preintegratedSegment(f, bundle, l, k, region, label, density, b)
+                                      : (*table)[tableIndex(density)];
     if constexpr (Mode::profile) countSample(bundle, k, rgba.a, lane, *b.profile);
     if (rgba.a <= 0.f) return;
     const float shade = f.params.shading.enabled
@@ -303,6 +333,24 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
       b.finish(lane);
     }
   }
+}
+
+// Pre-integration: sample k lies in a cell the TFs hide. Its segment is hidden too when the
+// densities from sample k - 1 into the cell are, for every lane that needs it: k - 1 was the lane's
+// last evaluated sample, or the last of a hidden cell leapt over (its density in that cell's range).
+template <class Sampler>
+bool frontsHidden(const Frame& f, const RowBundle& bundle, long k, const BundleRay<Sampler>& b) {
+  glm::ivec2 range = b.sampler.densityRange();
+  for (int l = 0; l < bundle.lanes; ++l) {
+    const Lane& lane = b.lanes[l];
+    if (lane.done || k < lane.resumeAt || k <= lane.frontAt) continue;
+    glm::ivec2 front;
+    if (lane.frontAt == k - 1) front = glm::ivec2(tableIndex(lane.front));
+    else if (b.hiddenAt == k - 1) front = b.hiddenRange;
+    else return false;
+    range = {std::min(range.x, front.x), std::max(range.y, front.y)};
+  }
+  return !f.anyRegionTf->anyVisible(range.x, range.y);
 }
 
 // The samples [first, stop) of one tile run, composited into each lane's ray (DVR) or maximum
@@ -323,17 +371,21 @@ long sampleSpan(const Frame& f, const RowBundle& bundle, long first, long stop, 
         continue;
       }
     } else {
-      if (skip && !sampler.mayBeVisible(*f.anyRegionTf)) {
+      if (skip && !sampler.mayBeVisible(*f.anyRegionTf) &&
+          (!f.segments || frontsHidden(f, bundle, k, b))) {
         if constexpr (Mode::profile)
           b.profile->skippedByCells +=
               std::uint64_t(std::min<long>(sampler.samplesLeftInCell() + 1, stop - k)) * b.live *
               raysPerLane(bundle);
-        k += sampler.samplesLeftInCell();
+        b.hiddenAt = k + sampler.samplesLeftInCell();
+        b.hiddenRange = sampler.densityRange();
+        k = b.hiddenAt;
         continue;
       }
     }
     for (int l = 0; l < lanes; ++l)
-      if (!b.lanes[l].done && k >= b.lanes[l].resumeAt) sampleLane<Mode>(f, bundle, l, k, b);
+      if (!b.lanes[l].done && k >= b.lanes[l].resumeAt && k > b.lanes[l].frontAt)
+        sampleLane<Mode>(f, bundle, l, k, b);
     if (b.live == 0) return k;
     // Every lane in a clipped stretch: leap to the first sample one of them needs.
     if constexpr (Mode::regions) {
@@ -416,7 +468,10 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
       b.finishEnded(run.firstSample, bundle.lanes);
       return true;
     }
-    const long end = std::min(run.firstSample + run.count, b.clipEnd);
+    // Pre-integration: a visible run also takes the next run's first sample, whose segment starts
+    // here; hidden runs after it then hold only hidden segments (both ends in hidden tiles).
+    const long runEnd = run.firstSample + run.count + (f.segments ? 1 : 0);
+    const long end = std::min({runEnd, b.clipEnd, b.domainEnd});
     long first = std::max(run.firstSample, b.clipBegin);
     if constexpr (Mode::regions) first = std::max(first, b.resumeAt(bundle.lanes));
     if (end <= first) continue;
@@ -466,6 +521,8 @@ BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   for (int l = 0; l < bundle.lanes; ++l)
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
   if (f.clipped) clipLanes(f, bundle, x, b);
+  // The rows of a bundle differ only along the rotation axis, inside the domain: one range.
+  if (f.segments) b.domainEnd = sampleRange(f.view, f.view.rayOrigin(x, bundle.firstRow)).last + 1;
   return b;
 }
 
@@ -669,6 +726,11 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   // the test and leap cost more than the interpolation they save (`angioray bench` times both).
   f.skipCells = options.skipEmpty && options.skipCells && params.sampling.osd < 0.75;
   f.rayStepQ = RaySamples(volume, f.view, glm::dvec3(0.0)).stepQ;
+  std::optional<PreintegratedTables> segments;
+  if (params.sampling.preintegrated && params.compositing == Compositing::dvr) {
+    segments = preintegratedTables(tables, params.sampling.osd);
+    f.segments = &*segments;
+  }
   f.templates = buildRayTemplates(volume, f.view, tiles, options.cancel);
   const double templateMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

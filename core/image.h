@@ -54,4 +54,9 @@ Image makeImage(int width, int height);
 // The rendering model's 8-bit output: round(255 clamp(C)) per channel, RGB interleaved.
 std::vector<std::uint8_t> toRgb8(const Image& image);
 
+// Peak signal-to-noise ratio of `image` against `exact` in dB, over the 8-bit RGB output (what is
+// seen and saved): 10 log10(255^2 / mean squared difference); infinite for equal output. The
+// measure of the approximations (rendering model). Throws std::invalid_argument for other sizes.
+double psnrDb(const Image& image, const Image& exact);
+
 }  // namespace angio

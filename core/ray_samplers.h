@@ -12,7 +12,8 @@
 // trilinear value lies between the corners' min and max, so its table entry does too).
 //
 // Use per sample: moveTo(q), then mayBeVisible / maxDensity, then density(fracA), then
-// gradient(fracA). Rows of a bundle (core/fast_raycaster.cpp) share one sampler: their samples
+// gradient(fracA); densityAt(q, fracA) reads another position without moving (pre-integration's
+// front sample). Rows of a bundle (core/fast_raycaster.cpp) share one sampler: their samples
 // read the same voxels and differ only in the cell fraction along the rotation axis a, `fracA`
 // (what cellAt gives for the row's own q; the voxel filters ignore it, a bundle's rows read the
 // same nearest voxel). samplesLeftInCell() tells how many of the following samples (q + j step, j = 1, 2, ...)
@@ -47,16 +48,20 @@ class VoxelRaySampler {
 
   void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
+  glm::ivec2 densityRange() const { return {0, kDensityLevels - 1}; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
-  float density(float) const {
-    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, voxel_, read_);
-    else return float(read_(volume_.at(voxel_.x, voxel_.y, voxel_.z)));
-  }
+  float density(float) const { return densityOf(voxel_); }
+  float densityAt(const glm::dvec3& q, float) const { return densityOf(nearestVoxel(volume_, q)); }
   glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_, read_); }
   int label(float) const { return labelOf(volume_.at(voxel_.x, voxel_.y, voxel_.z)); }
 
  private:
+  float densityOf(glm::ivec3 v) const {
+    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, v, read_);
+    else return float(read_(volume_.at(v.x, v.y, v.z)));
+  }
+
   const Volume& volume_;
   const Read read_;
   glm::ivec3 voxel_{0};
@@ -88,6 +93,8 @@ class TrilinearRaySampler {
     if (cell_.base != cached_) load();
   }
   bool mayBeVisible(const TfTable& table) const { return table.anyVisible(lo_, hi_); }
+  // The smallest and largest corner density: every sample in the cell lies between them.
+  glm::ivec2 densityRange() const { return {lo_, hi_}; }
   float maxDensity() const { return float(hi_); }
 
   // The j >= 1 with base <= q + j step < base + 1 on every axis, less a margin far above the
@@ -108,6 +115,13 @@ class TrilinearRaySampler {
   float density(float fracA) {
     return interpolateRow(
         fracA, [&](int dx, int dy, int dz) { return corners_[corner(dx, dy, dz)]; }, densityPlanes_);
+  }
+  // The density of this row at another position of the ray (q as given to moveTo), without moving:
+  // pre-integration's front sample where the ray did not evaluate the sample before.
+  float densityAt(const glm::dvec3& q, float fracA) const {
+    Cell cell = cellAt(volume_, q);
+    cell.frac[axis_] = fracA;
+    return trilinearDensity(volume_, cell, read_);
   }
   glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();

@@ -7,6 +7,7 @@
 
 #include "core/clip_interval.h"
 #include "core/compositing.h"
+#include "core/preintegration.h"
 #include "core/view_geometry.h"
 #include "core/volume_sampling.h"
 
@@ -19,7 +20,20 @@ struct RayScene {
   const FrameTables& tables;
   const MaskedDensity& read;  // the labels' mask (all shown: the plain density)
   const RenderParams& params;
+  // Pre-integrated classification (params.sampling.preintegrated): the tables, slot for slot.
+  const PreintegratedTables* segments = nullptr;
 };
+
+// Pre-integrated classification: the segment from sample k - 1 (whatever its region; outside the
+// domain its clamped density) to k, classified with the TF of sample k's region and label.
+inline glm::vec4 preintegratedSample(const RayScene& s, const RaySamples& positions, long k,
+                                     Region region) {
+  const Filter filter = s.params.sampling.filter;
+  const glm::dvec3 q = positions.at(k);
+  return s.segments->of(region, sampleLabel(s.volume, q, filter), s.tables)
+      .segment(sampleDensity(s.volume, positions.at(k - 1), filter, s.read),
+               sampleDensity(s.volume, q, filter, s.read));
+}
 
 // DVR front to back. After each composited sample k, stop(ray, k) may end the ray (early ray
 // termination, a pick's opacity threshold).
@@ -36,7 +50,8 @@ RayAccumulator compositeDvr(const RayScene& s, const glm::dvec3& origin, RegionC
     const Region region = regions.at(double(k) * s.view.sampleMm);
     const SampleTable* table = s.tables.of(region, sampleLabel(s.volume, q, filter));
     if (!table) continue;  // a clipped region
-    const glm::vec4 rgba = (*table)[tableIndex(sampleDensity(s.volume, q, filter, s.read))];
+    const glm::vec4 rgba = s.segments ? preintegratedSample(s, positions, k, region)
+                                      : (*table)[tableIndex(sampleDensity(s.volume, q, filter, s.read))];
     if (rgba.a <= 0.f) continue;  // transparent: contributes nothing, shading not needed
     ray.add(rgba, shadingFactor(s.params.shading, sampleGradient(s.volume, q, filter, s.read), viewDir));
     if (stop(ray, k)) break;

@@ -1,6 +1,7 @@
 #include "core/reference_raycaster.h"
 
 #include <atomic>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -38,7 +39,9 @@ Image renderReference(const Volume& volume, const RegionTables& regionTables, co
   Image image = makeImage(view.width, view.height);
   const FrameTables tables = frameTables(regionTables, params.sampling.osd);
   const MaskedDensity read = regionTables.density();
-  const RayScene scene{volume, view, tables, read, params};
+  std::optional<PreintegratedTables> segments;
+  if (params.sampling.preintegrated) segments = preintegratedTables(regionTables, params.sampling.osd);
+  const RayScene scene{volume, view, tables, read, params, segments ? &*segments : nullptr};
   std::atomic<int> rowsDone{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, view.height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y)

@@ -17,6 +17,9 @@ struct Sampling {
   double osd = 1.0;  // object sampling distance, voxel units
   Filter filter = Filter::nearest;
   double ert = 0.98;  // early ray termination threshold on accumulated opacity; 1 = never
+  // Pre-integrated classification of the segments between samples (rendering model,
+  // "Approximations"; core/preintegration.h) instead of the TF at each sample.
+  bool preintegrated = false;
 
   friend bool operator==(const Sampling&, const Sampling&) = default;
 };

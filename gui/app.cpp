@@ -207,8 +207,9 @@ ViewportOverlay App::viewportOverlay() const {
   if (!shown_ || texture_.empty()) return overlay;
   const Sampling& s = shown_->params.sampling;
   char label[96];
-  std::snprintf(label, sizeof label, "%s  %dx%d  isd %.2g osd %.2g %s", toString(shown_->level),
-                shown_->image->width, shown_->image->height, s.isd, s.osd, toString(s.filter));
+  std::snprintf(label, sizeof label, "%s  %dx%d  isd %.2g osd %.2g %s%s", toString(shown_->level),
+                shown_->image->width, shown_->image->height, s.isd, s.osd, toString(s.filter),
+                s.preintegrated ? " pre-integrated" : "");
   overlay.levelLabel = label;
   return overlay;
 }

@@ -45,6 +45,7 @@ nlohmann::json App::report() const {
              {"isd", s.isd},
              {"osd", s.osd},
              {"filter", toString(s.filter)},
+             {"preintegrated", s.preintegrated},
              {"render_ms", shown_->renderMs},
              {"samples", shown_->samples},
              {"checksum", std::to_string(checksum(shown_->display->levels.front().rgb))}};

@@ -47,13 +47,20 @@ void drawShading(Shading& shading) {
 
 std::optional<RenderingEdit> drawRenderingPanel(const Document& document) {
   const RenderingEdit before{document.mode, document.shading, document.tf.mipWindow,
-                             document.tf.mipLevel};
+                             document.tf.mipLevel, levelsPreintegrated(document)};
   RenderingEdit edit = before;
   bool mip = edit.mode == Compositing::mip;
   if (ImGui::Checkbox("MIP", &mip)) edit.mode = mip ? Compositing::mip : Compositing::dvr;
   helpMarker("Maximum intensity projection through a window/level instead of the transfer function.");
   if (mip) drawMipWindow(edit);
   else drawShading(edit.shading);
+  if (!mip) {
+    ImGui::Checkbox("pre-integrated", &edit.preintegrated);
+    helpMarker(
+        "Pre-integrated classification: each segment between two samples is coloured by the "
+        "transfer function over all densities it passes, so thin or steep structures are "
+        "not missed between samples. An approximation of the exact image; off is exact.");
+  }
   if (edit == before) return std::nullopt;
   return edit;
 }

@@ -100,7 +100,8 @@ Json samplingJson(const Sampling& sampling) {
   return {{"isd", sampling.isd},
           {"osd", sampling.osd},
           {"filter", toString(sampling.filter)},
-          {"ert", sampling.ert}};
+          {"ert", sampling.ert},
+          {"preintegrated", sampling.preintegrated}};
 }
 
 // Reads one session file: every key optional (defaults stay), every present key checked.
@@ -233,6 +234,7 @@ struct SessionReader {
     sampling.isd = number(s, "isd", 1e-3, 100, sampling.isd);
     sampling.osd = number(s, "osd", 1e-3, 100, sampling.osd);
     sampling.ert = number(s, "ert", 0, 1, sampling.ert);
+    sampling.preintegrated = flag(s, "preintegrated", sampling.preintegrated);
     if (s.contains("filter")) {
       const auto filter = parseFilter(text(s, "filter"));
       if (!filter) fail("levels filter is not nearest, trilinear or mean");

@@ -45,6 +45,7 @@ void change(Document& d, const RenderingEdit& edit) {
   d.shading = edit.shading;
   d.tf.mipWindow = edit.mipWindow;
   d.tf.mipLevel = edit.mipLevel;
+  for (Sampling& level : d.levels) level.preintegrated = edit.preintegrated;
 }
 void change(Document& d, const VesselGlyphEdit& edit) { d.vesselGlyph = edit.vesselGlyph; }
 // The CPR pane shows the fitted image again for another image: another path, mode or width.
@@ -152,6 +153,12 @@ void Workstation::apply(const Edit& edit) {
   if (next == document_) return;
   document_ = std::move(next);
   ++version_;
+}
+
+bool levelsPreintegrated(const Document& document) {
+  for (const Sampling& level : document.levels)
+    if (!level.preintegrated) return false;
+  return true;
 }
 
 }  // namespace angio

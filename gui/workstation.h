@@ -37,8 +37,11 @@ struct RenderingEdit {
   Compositing mode = Compositing::dvr;
   Shading shading;
   double mipWindow = 0, mipLevel = 0;
+  bool preintegrated = false;  // every level's classification (rendering model, Approximations)
   friend bool operator==(const RenderingEdit&, const RenderingEdit&) = default;
 };
+// On when every quality level pre-integrates (the Rendering panel switches them together).
+bool levelsPreintegrated(const Document& document);
 struct VesselGlyphEdit {
   VesselGlyphState vesselGlyph;
   friend bool operator==(const VesselGlyphEdit&, const VesselGlyphEdit&) = default;

@@ -239,6 +239,9 @@ RenderParams readParams(const Reader& r, const Json& json) {
   p.sampling.osd = r.number(sampling, "osd", "sampling.");
   p.sampling.filter = r.choice(sampling, "filter", parseFilter, "sampling.");
   p.sampling.ert = r.number(sampling, "ert", "sampling.");
+  // Absent in sidecars from before pre-integration existed: those images were post-classified.
+  if (sampling.contains("preintegrated"))
+    p.sampling.preintegrated = r.flag(sampling, "preintegrated", "sampling.");
   if (const std::string problem = samplingProblem(p.sampling); !problem.empty())
     throw InputError(r.source, "\"sampling\": " + problem);
   const Json& shading = r.at(json, "shading", "");
@@ -269,6 +272,7 @@ ImageMetadata viewMetadata(const RenderRecipe& s) {
       {"osd", numberText(p.sampling.osd)},
       {"filter", toString(p.sampling.filter)},
       {"ert", numberText(p.sampling.ert)},
+      {"classification", p.sampling.preintegrated ? "pre-integrated" : "post"},
   };
   if (s.quality) metadata["quality"] = toString(*s.quality);
   if (p.compositing == Compositing::mip) {
@@ -326,7 +330,8 @@ std::string renderSidecarJson(const RenderRecipe& s) {
        {{"isd", p.sampling.isd},
         {"osd", p.sampling.osd},
         {"filter", toString(p.sampling.filter)},
-        {"ert", p.sampling.ert}}},
+        {"ert", p.sampling.ert},
+        {"preintegrated", p.sampling.preintegrated}}},
       {"shading", {{"enabled", p.shading.enabled}, {"ka", p.shading.ka}, {"kd", p.shading.kd}}},
       {"compositing", p.compositing == Compositing::mip ? "mip" : "dvr"},
       {"mip", {{"window", p.mip.window}, {"level", p.mip.level}}},

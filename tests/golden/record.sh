@@ -1,12 +1,17 @@
-#!/ usr / bin / env bash
-#Records the golden corpus : render sidecars(and CPR command lines) that cover every kind of image
-#angioray makes, with the dataset paths replaced by placeholders.Run once, on the commit whose
-#images are the reference; the hashes are then written by the golden test in record mode:
-#tests / golden / record.sh build / angioray
-#ANGIORAY_GOLDEN_RECORD = 1 build / render_tests-- gtest_filter = 'GoldenCorpus.*'
-set - euo pipefail bin = $(realpath "$1") here = $(cd "$(dirname " $0 ")" && pwd) shared =
-    $(realpath "$here/../../../shared/data") work =
-        $(mktemp - d) trap 'rm -rf "$work"' EXIT mkdir - p "$here/sidecars" rm - f "$here" / sidecars/*.json
+#!/usr/bin/env bash
+# Records the golden corpus: render sidecars (and CPR command lines) that cover every kind of image
+# angioray makes, with the dataset paths replaced by placeholders. Run once, on the commit whose
+# images are the reference; the hashes are then written by the golden test in record mode:
+#   tests/golden/record.sh build/angioray
+#   ANGIORAY_GOLDEN_RECORD=1 build/render_tests --gtest_filter='GoldenCorpus.*'
+set -euo pipefail
+bin=$(realpath "$1")
+here=$(cd "$(dirname "$0")" && pwd)
+shared=$(realpath "$here/../../../shared/data")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$here/sidecars"
+rm -f "$here"/sidecars/*.json
 
 phantom=$work/phantom.nrrd
 phantom_cl=$work/phantom.csv

@@ -175,6 +175,24 @@ TEST_F(GuiPanels, TheMipCheckboxSwitchesToMipKeepingTheWindow) {
   EXPECT_EQ(edit->shading, document.shading);
 }
 
+// Row 2 (under MIP and shading): pre-integrated classification, for every level at once.
+TEST_F(GuiPanels, ThePreintegratedCheckboxSwitchesEveryLevel) {
+  Workstation workstation;
+  const auto draw = [&] { return drawRenderingPanel(workstation.document()); };
+  const ImVec2 checkbox(ImGui::GetStyle().WindowPadding.x + 8, rowCentreY(2));
+  const std::optional<RenderingEdit> edit = click(draw, checkbox);
+  ASSERT_TRUE(edit);
+  EXPECT_TRUE(edit->preintegrated);
+  EXPECT_EQ(edit->mode, Compositing::dvr);
+  workstation.apply(*edit);
+  for (const Sampling& level : workstation.document().levels) EXPECT_TRUE(level.preintegrated);
+  EXPECT_TRUE(levelsPreintegrated(workstation.document()));
+  const std::optional<RenderingEdit> off = click(draw, checkbox);
+  ASSERT_TRUE(off);
+  workstation.apply(*off);
+  for (const Sampling& level : workstation.document().levels) EXPECT_FALSE(level.preintegrated);
+}
+
 TEST_F(GuiPanels, TheVesselGlyphPanelAsksForItsFileAndTurnsVesselGlyphOn) {
   Workstation workstation;
   const Centerlines centerlines = twoPaths();

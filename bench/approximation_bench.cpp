@@ -1,0 +1,124 @@
+#include "bench/approximation_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include <tbb/global_control.h>
+
+#include "bench/frame_bench.h"
+#include "bench/timing.h"
+#include "core/image.h"
+#include "render/frame_renderer.h"
+#include "render/prepared_scene.h"
+#include "render/render_recipe.h"
+
+namespace angio {
+
+namespace {
+
+// The images of one level and sampling at every bench angle, each frame timed.
+struct Frames {
+  std::vector<Image> images;
+  std::vector<double> ms, samples;
+};
+
+Frames renderFrames(FrameRenderer& frames, const std::shared_ptr<const PreparedScene>& scene,
+                    RenderParams p, int angles) {
+  Frames out;
+  for (int n = 0; n < angles; ++n) {
+    p.angleDeg = benchAngle(n, angles);
+    FastRenderStats stats;
+    const auto start = BenchClock::now();
+    out.images.push_back(frames.render(scene, p, {}, &stats));
+    out.ms.push_back(msSince(start));
+    out.samples.push_back(double(stats.samples));
+  }
+  return out;
+}
+
+std::vector<double> psnrs(const Frames& frames, const Frames& exact) {
+  std::vector<double> values;
+  for (std::size_t n = 0; n < frames.images.size(); ++n)
+    values.push_back(psnrDb(frames.images[n], exact.images[n]));
+  return values;
+}
+
+ApproximationRow row(const std::string& level, const RenderParams& p, const Frames& frames,
+                     const Frames& exact, const Frames& converged) {
+  const std::vector<double> level_ = psnrs(frames, exact);
+  return {level,
+          p.sampling.osd,
+          p.sampling.preintegrated,
+          median(frames.ms),
+          *std::min_element(frames.ms.begin(), frames.ms.end()),
+          *std::max_element(frames.ms.begin(), frames.ms.end()),
+          median(frames.samples),
+          median(level_),
+          *std::min_element(level_.begin(), level_.end()),
+          median(psnrs(frames, converged)),
+          int(frames.images.size())};
+}
+
+std::string decibels(double db) {
+  if (std::isinf(db)) return "exact";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", db);
+  return text;
+}
+
+}  // namespace
+
+std::vector<ApproximationRow> runApproximationBench(const Volume& volume, const TransferFunction& tf,
+                                                    const ApproximationSettings& settings) {
+  std::optional<tbb::global_control> limit;
+  if (settings.threads > 0)
+    limit.emplace(tbb::global_control::max_allowed_parallelism, settings.threads);
+  RenderRecipe recipe;
+  recipe.tf = tf;
+  recipe.params.axis = settings.axis;
+  const auto scene = PreparedScene::prepare(volume, {}, recipe);
+  FrameRenderer frames(volume);
+  frames.prepare(scene, settings.axis);
+  std::vector<ApproximationRow> rows;
+  for (const BenchLevel& level : benchLevels(settings.levels)) {
+    const RenderParams p = level.params(settings.axis);
+    renderFrames(frames, scene, p, 1);  // warm-up: first-touch of the frame memory
+    const Frames exact = renderFrames(frames, scene, p, settings.angles);
+    RenderParams fine = p;
+    fine.sampling.osd /= 4;
+    const Frames converged = renderFrames(frames, scene, fine, settings.angles);
+    for (const double scale : settings.osdScales)
+      for (const bool preintegrated : {false, true}) {
+        RenderParams q = p;
+        q.sampling.osd *= scale;
+        q.sampling.preintegrated = preintegrated;
+        const Frames approximate =
+            scale == 1 && !preintegrated ? exact : renderFrames(frames, scene, q, settings.angles);
+        rows.push_back(row(level.name, q, approximate, exact, converged));
+        std::fprintf(stderr, "bench: %s osd %.3g%s %.1f ms\n", level.name.c_str(), q.sampling.osd,
+                     preintegrated ? " pre-integrated" : "", rows.back().medianMs);
+      }
+  }
+  return rows;
+}
+
+std::string formatApproximationBench(const std::vector<ApproximationRow>& rows) {
+  std::string out =
+      "level             osd    classification   median ms (min-max)       samples/frame   "
+      "PSNR vs level dB (worst)   PSNR vs converged dB\n";
+  for (const ApproximationRow& r : rows) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%-17s %-6.3g %-16s %8.1f (%.1f-%.1f)%*s %12.0f   %8s (%s)%*s %8s\n", r.level.c_str(),
+                  r.osd, r.preintegrated ? "pre-integrated" : "post", r.medianMs, r.minMs, r.maxMs, 4,
+                  "", r.medianSamples, decibels(r.psnrLevelDb).c_str(),
+                  decibels(r.minPsnrLevelDb).c_str(), 10, "", decibels(r.psnrConvergedDb).c_str());
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace angio

@@ -1,0 +1,41 @@
+#pragma once
+// The approximations of the rendering model measured against its exact images (issue of the
+// seeds' adaptive techniques): for each level, frames at the level's own osd and at larger ones,
+// exact and pre-integrated, each timed (median, min, max over the angles), its samples counted and
+// its image compared (PSNR over the 8-bit output) with the exact image at the level's osd and with
+// the converged one (exact at a quarter of the level's osd: what a finer osd tends to).
+#include <string>
+#include <vector>
+
+#include "core/render_params.h"
+#include "core/transfer_function.h"
+#include "core/volume.h"
+
+namespace angio {
+
+struct ApproximationSettings {
+  int angles = 6;
+  Axis axis = Axis::k;
+  int threads = 0;                  // 0 = all cores
+  std::vector<std::string> levels;  // names (bench/frame_bench.h benchLevels); empty = all
+  std::vector<double> osdScales = {1, 1.5, 2, 3, 4};  // times the level's osd
+};
+
+struct ApproximationRow {
+  std::string level;
+  double osd = 0;
+  bool preintegrated = false;
+  double medianMs = 0, minMs = 0, maxMs = 0;
+  double medianSamples = 0;    // samples in tiles not skipped, per frame
+  double psnrLevelDb = 0;      // median over the angles, against the exact image at the level's osd
+  double minPsnrLevelDb = 0;   // the worst angle
+  double psnrConvergedDb = 0;  // median, against the exact image at a quarter of the level's osd
+  int frames = 0;
+};
+
+std::vector<ApproximationRow> runApproximationBench(const Volume& volume, const TransferFunction& tf,
+                                                    const ApproximationSettings& settings);
+
+std::string formatApproximationBench(const std::vector<ApproximationRow>& rows);
+
+}  // namespace angio
