@@ -46,12 +46,22 @@ std::vector<double> psnrs(const Frames& frames, const Frames& exact) {
   return values;
 }
 
+std::string techniqueName(const Sampling& s) {
+  if (s.adaptive) {
+    char text[64];
+    std::snprintf(text, sizeof text, "adaptive %g, h0 %g", s.adaptive->tolerance,
+                  s.adaptive->initialStep);
+    return text;
+  }
+  return s.preintegrated ? "pre-integrated" : "post";
+}
+
 ApproximationRow row(const std::string& level, const RenderParams& p, const Frames& frames,
                      const Frames& exact, const Frames& converged) {
   const std::vector<double> level_ = psnrs(frames, exact);
   return {level,
           p.sampling.osd,
-          p.sampling.preintegrated,
+          techniqueName(p.sampling),
           median(frames.ms),
           *std::min_element(frames.ms.begin(), frames.ms.end()),
           *std::max_element(frames.ms.begin(), frames.ms.end()),
@@ -67,6 +77,11 @@ std::string decibels(double db) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f", db);
   return text;
+}
+
+void report(const ApproximationRow& row) {
+  std::fprintf(stderr, "bench: %s osd %.3g %s %.1f ms\n", row.level.c_str(), row.osd,
+               row.technique.c_str(), row.medianMs);
 }
 
 }  // namespace
@@ -98,24 +113,30 @@ std::vector<ApproximationRow> runApproximationBench(const Volume& volume, const 
         const Frames approximate =
             scale == 1 && !preintegrated ? exact : renderFrames(frames, scene, q, settings.angles);
         rows.push_back(row(level.name, q, approximate, exact, converged));
-        std::fprintf(stderr, "bench: %s osd %.3g%s %.1f ms\n", level.name.c_str(), q.sampling.osd,
-                     preintegrated ? " pre-integrated" : "", rows.back().medianMs);
+        report(rows.back());
       }
+    for (const AdaptiveIntegration& adaptive : settings.adaptive) {
+      RenderParams q = p;
+      q.sampling.adaptive = adaptive;
+      rows.push_back(
+          row(level.name, q, renderFrames(frames, scene, q, settings.angles), exact, converged));
+      report(rows.back());
+    }
   }
   return rows;
 }
 
 std::string formatApproximationBench(const std::vector<ApproximationRow>& rows) {
   std::string out =
-      "level             osd    classification   median ms (min-max)       samples/frame   "
+      "level             osd    technique                  median ms (min-max)       samples/frame   "
       "PSNR vs level dB (worst)   PSNR vs converged dB\n";
   for (const ApproximationRow& r : rows) {
     char line[256];
     std::snprintf(line, sizeof line,
                   "%-17s %-6.3g %-16s %8.1f (%.1f-%.1f)%*s %12.0f   %8s (%s)%*s %8s\n", r.level.c_str(),
-                  r.osd, r.preintegrated ? "pre-integrated" : "post", r.medianMs, r.minMs, r.maxMs, 4,
-                  "", r.medianSamples, decibels(r.psnrLevelDb).c_str(),
-                  decibels(r.minPsnrLevelDb).c_str(), 10, "", decibels(r.psnrConvergedDb).c_str());
+                  r.osd, r.technique.c_str(), r.medianMs, r.minMs, r.maxMs, 4, "", r.medianSamples,
+                  decibels(r.psnrLevelDb).c_str(), decibels(r.minPsnrLevelDb).c_str(), 10, "",
+                  decibels(r.psnrConvergedDb).c_str());
     out += line;
   }
   return out;

@@ -3,7 +3,8 @@
 // seeds' adaptive techniques): for each level, frames at the level's own osd and at larger ones,
 // exact and pre-integrated, each timed (median, min, max over the angles), its samples counted and
 // its image compared (PSNR over the 8-bit output) with the exact image at the level's osd and with
-// the converged one (exact at a quarter of the level's osd: what a finer osd tends to).
+// the converged one (exact at a quarter of the level's osd: what a finer osd tends to). Adaptive
+// integration rows (seed 000 sec. 4.3) use the level's filter and isd and no osd.
 #include <string>
 #include <vector>
 
@@ -19,12 +20,16 @@ struct ApproximationSettings {
   int threads = 0;                  // 0 = all cores
   std::vector<std::string> levels;  // names (bench/frame_bench.h benchLevels); empty = all
   std::vector<double> osdScales = {1, 1.5, 2, 3, 4};  // times the level's osd
+  // Adaptive integration rows (core/adaptive_integration.h) per level: these c_tol with these
+  // initial steps (voxels), each pair a row.
+  std::vector<AdaptiveIntegration> adaptive = {
+      {0.01, 4.0, 0.125}, {0.01, 2.0, 0.125}, {0.001, 1.0, 0.125}};
 };
 
 struct ApproximationRow {
   std::string level;
   double osd = 0;
-  bool preintegrated = false;
+  std::string technique;  // "post", "pre-integrated", "adaptive c_tol 0.01, h0 4"
   double medianMs = 0, minMs = 0, maxMs = 0;
   double medianSamples = 0;    // samples in tiles not skipped, per frame
   double psnrLevelDb = 0;      // median over the angles, against the exact image at the level's osd

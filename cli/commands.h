@@ -29,8 +29,9 @@ struct RenderOptions {
   std::string quality = "high";
   std::optional<double> isd, osd, ert, ka, kd;
   std::optional<std::string> filter;
-  bool preintegrated = false;          // pre-integrated classification (an approximation)
-  std::optional<std::string> shading;  // "on" | "off"
+  bool preintegrated = false;                   // pre-integrated classification (an approximation)
+  std::optional<double> adaptive, initialStep;  // adaptive integration: c_tol, first step (voxels)
+  std::optional<std::string> shading;           // "on" | "off"
   bool mip = false;
   std::optional<double> window, level;
   std::optional<std::string> imageWindow;  // "left,right,bottom,top", mm about the image centre

@@ -62,6 +62,14 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
   cmd->add_flag("--preintegrated", o.preintegrated,
                 "Pre-integrated classification: each segment between samples classified by the TF's "
                 "integral over its densities (an approximation that keeps thin shells at larger --osd)");
+  cmd->add_option("--adaptive", o.adaptive,
+                  "Error-controlled adaptive integration along each ray with this relative tolerance "
+                  "(c_tol) instead of samples every --osd (an approximation; DVR without VesselGlyph)")
+      ->check(angio::numberBetween(1e-6, 1));
+  cmd->add_option("--initial-step", o.initialStep,
+                  "Adaptive integration: the first intervals' length in voxels (default 2); nothing "
+                  "thicker than half of it is missed")
+      ->check(angio::numberBetween(0.125, 64));
   cmd->add_option("--shading", o.shading, "Headlight diffuse shading")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(angio::numberBetween(0, 10));

@@ -41,6 +41,13 @@ RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
   if (o.ert) p.sampling.ert = *o.ert;
   if (o.filter) p.sampling.filter = *parseFilter(*o.filter);
   p.sampling.preintegrated = o.preintegrated;
+  if (o.initialStep && !o.adaptive) throw std::invalid_argument("--initial-step needs --adaptive");
+  if (o.adaptive) {
+    p.sampling.adaptive = AdaptiveIntegration{};
+    p.sampling.adaptive->tolerance = *o.adaptive;
+    if (o.initialStep) p.sampling.adaptive->initialStep = *o.initialStep;
+    if (o.mip) throw std::invalid_argument("--adaptive is for DVR, not --mip");
+  }
   if (o.shading) p.shading.enabled = *o.shading == "on";
   if (o.ka) p.shading.ka = *o.ka;
   if (o.kd) p.shading.kd = *o.kd;
@@ -71,6 +78,8 @@ RenderRecipe sidecarFrom(const RenderOptions& o) {
   s.vesselGlyph = vesselGlyphRecipe(o.vesselGlyph, o.tf);
   s.hybrid = hybridCprRecipe(o.vesselGlyph);
   if (s.vesselGlyph && o.mip) throw std::invalid_argument("--mip cannot be combined with --centerlines");
+  if (s.vesselGlyph && o.adaptive)
+    throw std::invalid_argument("--adaptive cannot be combined with --centerlines (VesselGlyph)");
   s.dataset = absolutePath(o.volume);
   s.labels = absolutePath(o.labels);
   s.quality = parseQuality(o.quality);

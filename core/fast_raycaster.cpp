@@ -196,6 +196,8 @@ struct Lane {
   // samples up to it are done (a run's extension, see visitGroup, may have taken the next run's first).
   float front = 0.f;
   long frontAt = std::numeric_limits<long>::min();
+  float frontShade = 1.f;  // the shading factor of sample frontShadeAt (computed where visible)
+  long frontShadeAt = std::numeric_limits<long>::min();
 };
 
 // What the rays of one column of a bundle carry from one tile group to the next.
@@ -288,6 +290,22 @@ glm::vec4 preintegratedSegment(const Frame& f, const RowBundle& bundle, int l, l
   return f.segments->of(region, label, f.tables).segment(front, back);
 }
 
+// Pre-integration with shading: a segment's emission is shaded by the mean of its ends' shading
+// factors (core/preintegration.h); the front's is the lane's last one, or read at sample k - 1.
+template <class Sampler>
+float segmentShade(const Frame& f, const RowBundle& bundle, int l, long k, float backShade,
+                   BundleRay<Sampler>& b) {
+  Lane& lane = b.lanes[l];
+  const float frontShade =
+      lane.frontShadeAt == k - 1
+          ? lane.frontShade
+          : shadingFactor(f.params.shading, b.sampler.gradientAt(b.positions.at(k - 1), bundle.fracA[l]),
+                          glm::vec3(f.view.viewDir));
+  lane.frontShade = backShade;
+  lane.frontShadeAt = k;
+  return 0.5f * (frontShade + backShade);
+}
+
 // One sample k of one lane, after the bundle's sampler moved to it.
 template <class Mode, class Sampler>
 void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRay<Sampler>& b) {
@@ -323,10 +341,11 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
                                       : (*table)[tableIndex(density)];
     if constexpr (Mode::profile) countSample(bundle, k, rgba.a, lane, *b.profile);
     if (rgba.a <= 0.f) return;
-    const float shade = f.params.shading.enabled
-                            ? shadingFactor(f.params.shading, sampler.gradient(bundle.fracA[l]),
-                                            glm::vec3(f.view.viewDir))
-                            : 1.f;
+    float shade = f.params.shading.enabled
+                      ? shadingFactor(f.params.shading, sampler.gradient(bundle.fracA[l]),
+                                      glm::vec3(f.view.viewDir))
+                      : 1.f;
+    if (f.segments && f.params.shading.enabled) shade = segmentShade(f, bundle, l, k, shade, b);
     lane.ray.add(rgba, shade);
     if (lane.ray.opacity >= f.params.sampling.ert) {
       if constexpr (Mode::profile) countTermination(bundle, k, lane, *b.profile);

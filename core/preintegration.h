@@ -16,6 +16,8 @@
 // opacity). Building is O(4096) per TF, so a TF drag costs nothing measurable, and both voxel
 // filters and trilinear use the same table. A segment within one entry (s_f and s_b round to the
 // same density) gives exactly the post-classified sample: a constant medium renders as before.
+// Shading: the raycasters shade a segment by the mean of the shading factors at its two ends (the
+// back end's alone would shift the shading half a segment from the colour it modulates).
 #include <array>
 #include <vector>
 

@@ -53,6 +53,9 @@ class VoxelRaySampler {
   long samplesLeftInCell() const { return 0; }
   float density(float) const { return densityOf(voxel_); }
   float densityAt(const glm::dvec3& q, float) const { return densityOf(nearestVoxel(volume_, q)); }
+  glm::vec3 gradientAt(const glm::dvec3& q, float) const {
+    return nearestGradient(volume_, nearestVoxel(volume_, q), read_);
+  }
   glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_, read_); }
   int label(float) const { return labelOf(volume_.at(voxel_.x, voxel_.y, voxel_.z)); }
 
@@ -122,6 +125,11 @@ class TrilinearRaySampler {
     Cell cell = cellAt(volume_, q);
     cell.frac[axis_] = fracA;
     return trilinearDensity(volume_, cell, read_);
+  }
+  glm::vec3 gradientAt(const glm::dvec3& q, float fracA) const {
+    Cell cell = cellAt(volume_, q);
+    cell.frac[axis_] = fracA;
+    return trilinearGradient(volume_, cell, read_);
   }
   glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();

@@ -53,7 +53,14 @@ RayAccumulator compositeDvr(const RayScene& s, const glm::dvec3& origin, RegionC
     const glm::vec4 rgba = s.segments ? preintegratedSample(s, positions, k, region)
                                       : (*table)[tableIndex(sampleDensity(s.volume, q, filter, s.read))];
     if (rgba.a <= 0.f) continue;  // transparent: contributes nothing, shading not needed
-    ray.add(rgba, shadingFactor(s.params.shading, sampleGradient(s.volume, q, filter, s.read), viewDir));
+    float shade = shadingFactor(s.params.shading, sampleGradient(s.volume, q, filter, s.read), viewDir);
+    // Pre-integrated: the segment's emission shaded by the mean of its ends' shading factors.
+    if (s.segments && s.params.shading.enabled)
+      shade =
+          0.5f * (shadingFactor(s.params.shading,
+                                sampleGradient(s.volume, positions.at(k - 1), filter, s.read), viewDir) +
+                  shade);
+    ray.add(rgba, shade);
     if (stop(ray, k)) break;
   }
   return ray;

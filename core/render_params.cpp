@@ -27,6 +27,15 @@ std::string samplingProblem(const Sampling& s) {
     return text;
   }
   if (s.ert < 0 || s.ert > 1) return "ert must be in [0, 1]";
+  if (const auto& a = s.adaptive) {
+    if (!(std::isfinite(a->tolerance) && a->tolerance > 0 && a->tolerance <= 1))
+      return "the adaptive integration's tolerance must be in (0, 1]";
+    // The bisections go down to minStep: a pass per halving, 2^passes intervals per initial one.
+    if (!(std::isfinite(a->minStep) && a->minStep >= kMinSamplingDistance) ||
+        !(std::isfinite(a->initialStep) && a->initialStep >= a->minStep && a->initialStep <= 64))
+      return "the adaptive integration's steps must satisfy 0.001 <= min step <= initial step <= 64 "
+             "voxels";
+  }
   return "";
 }
 

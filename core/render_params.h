@@ -12,6 +12,16 @@ enum class Filter { nearest, trilinear, mean };
 enum class Quality { fast, medium, high };
 enum class Compositing { dvr, mip };
 
+// Error-controlled adaptive integration along each ray (core/adaptive_integration.h; seed 000
+// sec. 4.3) instead of samples every osd.
+struct AdaptiveIntegration {
+  double tolerance = 0.01;   // c_tol: stop once the ray's sum changes by at most this part of it
+  double initialStep = 2.0;  // the first intervals' length, voxel units (4 misses bone cortex)
+  double minStep = 0.125;    // no interval is bisected below this, voxel units
+
+  friend bool operator==(const AdaptiveIntegration&, const AdaptiveIntegration&) = default;
+};
+
 struct Sampling {
   double isd = 1.0;  // image sampling distance, voxel units
   double osd = 1.0;  // object sampling distance, voxel units
@@ -20,6 +30,7 @@ struct Sampling {
   // Pre-integrated classification of the segments between samples (rendering model,
   // "Approximations"; core/preintegration.h) instead of the TF at each sample.
   bool preintegrated = false;
+  std::optional<AdaptiveIntegration> adaptive;  // none: samples every osd (exact)
 
   friend bool operator==(const Sampling&, const Sampling&) = default;
 };

@@ -31,7 +31,8 @@ void App::adjustByDrag(glm::vec2 px) {
   if (doc().mode == Compositing::mip) {
     const TransferFunction& tf = doc().tf;
     commit(RenderingEdit{doc().mode, doc().shading, std::max(1.0, tf.mipWindow + px.x * kWindowPerPx),
-                         tf.mipLevel - px.y * kLevelPerPx, levelsPreintegrated(doc())});
+                         tf.mipLevel - px.y * kLevelPerPx, levelsPreintegrated(doc()),
+                         doc().levels[0].adaptive});
     return;
   }
   TransferFunction tf = editedTf();

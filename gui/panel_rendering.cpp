@@ -43,11 +43,38 @@ void drawShading(Shading& shading) {
   if (ImGui::SliderFloat("kd", &kd, 0, 1, "%.2f", ImGuiSliderFlags_AlwaysClamp)) shading.kd = kd;
 }
 
+// Seed 000's error-controlled adaptive integration, for every level, with its tolerance and first
+// step. Experimental: it skips no empty space, so frames take seconds.
+void drawAdaptive(std::optional<AdaptiveIntegration>& adaptive) {
+  bool on = adaptive.has_value();
+  ImGui::SameLine();  // beside pre-integration: the panels below keep their place
+  if (ImGui::Checkbox("adaptive integration", &on))
+    adaptive = on ? std::optional(AdaptiveIntegration{}) : std::nullopt;
+  helpMarker(
+      "Error-controlled adaptive integration along each ray (intervals bisected where the "
+      "trapezoid and Simpson rules disagree) instead of samples every osd. An approximation, "
+      "and slow: it skips no empty space. Nothing thicker than half the first step is missed.");
+  if (!adaptive) return;
+  float tolerance = float(adaptive->tolerance), step = float(adaptive->initialStep);
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::SliderFloat("tolerance", &tolerance, 0.0001f, 0.1f, "%.4f",
+                         ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    adaptive->tolerance = tolerance;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  if (ImGui::SliderFloat("first step", &step, 0.5f, 8.f, "%.1f vx", ImGuiSliderFlags_AlwaysClamp))
+    adaptive->initialStep = step;
+}
+
 }  // namespace
 
 std::optional<RenderingEdit> drawRenderingPanel(const Document& document) {
-  const RenderingEdit before{document.mode, document.shading, document.tf.mipWindow,
-                             document.tf.mipLevel, levelsPreintegrated(document)};
+  const RenderingEdit before{document.mode,
+                             document.shading,
+                             document.tf.mipWindow,
+                             document.tf.mipLevel,
+                             levelsPreintegrated(document),
+                             document.levels[0].adaptive};
   RenderingEdit edit = before;
   bool mip = edit.mode == Compositing::mip;
   if (ImGui::Checkbox("MIP", &mip)) edit.mode = mip ? Compositing::mip : Compositing::dvr;
@@ -60,6 +87,7 @@ std::optional<RenderingEdit> drawRenderingPanel(const Document& document) {
         "Pre-integrated classification: each segment between two samples is coloured by the "
         "transfer function over all densities it passes, so thin or steep structures are "
         "not missed between samples. An approximation of the exact image; off is exact.");
+    drawAdaptive(edit.adaptive);
   }
   if (edit == before) return std::nullopt;
   return edit;

@@ -101,7 +101,11 @@ Json samplingJson(const Sampling& sampling) {
           {"osd", sampling.osd},
           {"filter", toString(sampling.filter)},
           {"ert", sampling.ert},
-          {"preintegrated", sampling.preintegrated}};
+          {"preintegrated", sampling.preintegrated},
+          {"adaptive", sampling.adaptive ? Json{{"tolerance", sampling.adaptive->tolerance},
+                                                {"initial_step", sampling.adaptive->initialStep},
+                                                {"min_step", sampling.adaptive->minStep}}
+                                         : Json(nullptr)}};
 }
 
 // Reads one session file: every key optional (defaults stay), every present key checked.
@@ -230,11 +234,23 @@ struct SessionReader {
     return view;
   }
 
+  // A level's adaptive integration: null (off) or its tolerance and steps.
+  std::optional<AdaptiveIntegration> adaptive(const Json& a) const {
+    if (a.is_null()) return std::nullopt;
+    if (!a.is_object()) fail("levels adaptive is not an object or null");
+    AdaptiveIntegration settings;
+    settings.tolerance = number(a, "tolerance", 1e-6, 1, settings.tolerance);
+    settings.initialStep = number(a, "initial_step", 1e-3, 64, settings.initialStep);
+    settings.minStep = number(a, "min_step", 1e-3, settings.initialStep, settings.minStep);
+    return settings;
+  }
+
   Sampling sampling(const Json& s, Sampling sampling) const {
     sampling.isd = number(s, "isd", 1e-3, 100, sampling.isd);
     sampling.osd = number(s, "osd", 1e-3, 100, sampling.osd);
     sampling.ert = number(s, "ert", 0, 1, sampling.ert);
     sampling.preintegrated = flag(s, "preintegrated", sampling.preintegrated);
+    if (s.contains("adaptive")) sampling.adaptive = adaptive(s["adaptive"]);
     if (s.contains("filter")) {
       const auto filter = parseFilter(text(s, "filter"));
       if (!filter) fail("levels filter is not nearest, trilinear or mean");

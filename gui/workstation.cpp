@@ -45,7 +45,10 @@ void change(Document& d, const RenderingEdit& edit) {
   d.shading = edit.shading;
   d.tf.mipWindow = edit.mipWindow;
   d.tf.mipLevel = edit.mipLevel;
-  for (Sampling& level : d.levels) level.preintegrated = edit.preintegrated;
+  for (Sampling& level : d.levels) {
+    level.preintegrated = edit.preintegrated;
+    level.adaptive = edit.adaptive;
+  }
 }
 void change(Document& d, const VesselGlyphEdit& edit) { d.vesselGlyph = edit.vesselGlyph; }
 // The CPR pane shows the fitted image again for another image: another path, mode or width.

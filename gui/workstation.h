@@ -38,6 +38,7 @@ struct RenderingEdit {
   Shading shading;
   double mipWindow = 0, mipLevel = 0;
   bool preintegrated = false;  // every level's classification (rendering model, Approximations)
+  std::optional<AdaptiveIntegration> adaptive;  // every level's integration (none: samples every osd)
   friend bool operator==(const RenderingEdit&, const RenderingEdit&) = default;
 };
 // On when every quality level pre-integrates (the Rendering panel switches them together).

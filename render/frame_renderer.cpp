@@ -1,5 +1,7 @@
 #include "render/frame_renderer.h"
 
+#include "core/adaptive_integration.h"
+
 #include <stdexcept>
 
 #include "core/reference_raycaster.h"
@@ -54,7 +56,13 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
   FastRenderStats local;
   FastRenderStats& s = stats ? *stats : local;
   Image image;
-  if (scene->recipe().raycaster == Raycaster::reference) {
+  if (params.sampling.adaptive) {
+    AdaptiveIntegrationStats adaptive;
+    image = renderAdaptive(volume_, tables, params, &adaptive, control.cancel);
+    s = {};
+    s.samples = adaptive.nodes;
+    s.cancelled = adaptive.cancelled;
+  } else if (scene->recipe().raycaster == Raycaster::reference) {
     s = {};
     image = renderReference(volume_, tables, params, control.progress);
   } else {

@@ -242,6 +242,12 @@ RenderParams readParams(const Reader& r, const Json& json) {
   // Absent in sidecars from before pre-integration existed: those images were post-classified.
   if (sampling.contains("preintegrated"))
     p.sampling.preintegrated = r.flag(sampling, "preintegrated", "sampling.");
+  if (sampling.contains("adaptive") && !sampling["adaptive"].is_null()) {
+    const Json& adaptive = r.at(sampling, "adaptive", "sampling.");
+    p.sampling.adaptive = AdaptiveIntegration{r.number(adaptive, "tolerance", "sampling.adaptive."),
+                                              r.number(adaptive, "initial_step", "sampling.adaptive."),
+                                              r.number(adaptive, "min_step", "sampling.adaptive.")};
+  }
   if (const std::string problem = samplingProblem(p.sampling); !problem.empty())
     throw InputError(r.source, "\"sampling\": " + problem);
   const Json& shading = r.at(json, "shading", "");
@@ -273,6 +279,10 @@ ImageMetadata viewMetadata(const RenderRecipe& s) {
       {"filter", toString(p.sampling.filter)},
       {"ert", numberText(p.sampling.ert)},
       {"classification", p.sampling.preintegrated ? "pre-integrated" : "post"},
+      {"integration", p.sampling.adaptive
+                          ? "adaptive, tolerance " + numberText(p.sampling.adaptive->tolerance) +
+                                ", initial step " + numberText(p.sampling.adaptive->initialStep)
+                          : "samples every osd"},
   };
   if (s.quality) metadata["quality"] = toString(*s.quality);
   if (p.compositing == Compositing::mip) {
@@ -331,7 +341,11 @@ std::string renderSidecarJson(const RenderRecipe& s) {
         {"osd", p.sampling.osd},
         {"filter", toString(p.sampling.filter)},
         {"ert", p.sampling.ert},
-        {"preintegrated", p.sampling.preintegrated}}},
+        {"preintegrated", p.sampling.preintegrated},
+        {"adaptive", p.sampling.adaptive ? Json{{"tolerance", p.sampling.adaptive->tolerance},
+                                                {"initial_step", p.sampling.adaptive->initialStep},
+                                                {"min_step", p.sampling.adaptive->minStep}}
+                                         : Json(nullptr)}}},
       {"shading", {{"enabled", p.shading.enabled}, {"ka", p.shading.ka}, {"kd", p.shading.kd}}},
       {"compositing", p.compositing == Compositing::mip ? "mip" : "dvr"},
       {"mip", {{"window", p.mip.window}, {"level", p.mip.level}}},

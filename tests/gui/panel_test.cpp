@@ -193,6 +193,28 @@ TEST_F(GuiPanels, ThePreintegratedCheckboxSwitchesEveryLevel) {
   for (const Sampling& level : workstation.document().levels) EXPECT_FALSE(level.preintegrated);
 }
 
+// Row 2, after "pre-integrated" and its "(?)": adaptive integration with its default tolerance
+// and first step, for every level.
+TEST_F(GuiPanels, TheAdaptiveIntegrationCheckboxSwitchesEveryLevel) {
+  Workstation workstation;
+  float afterPreintegrated = 0;  // measured while drawing, when the font is set
+  const auto draw = [&] {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    afterPreintegrated = style.WindowPadding.x + ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+                         ImGui::CalcTextSize("pre-integrated").x + style.ItemSpacing.x +
+                         ImGui::CalcTextSize("(?)").x + style.ItemSpacing.x;
+    return drawRenderingPanel(workstation.document());
+  };
+  frame(draw);
+  const ImVec2 checkbox(afterPreintegrated + 8, rowCentreY(2));
+  const std::optional<RenderingEdit> edit = click(draw, checkbox);
+  ASSERT_TRUE(edit);
+  ASSERT_TRUE(edit->adaptive);
+  EXPECT_EQ(*edit->adaptive, AdaptiveIntegration{});
+  workstation.apply(*edit);
+  for (const Sampling& level : workstation.document().levels) EXPECT_EQ(level.adaptive, edit->adaptive);
+}
+
 TEST_F(GuiPanels, TheVesselGlyphPanelAsksForItsFileAndTurnsVesselGlyphOn) {
   Workstation workstation;
   const Centerlines centerlines = twoPaths();

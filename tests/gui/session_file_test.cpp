@@ -66,6 +66,7 @@ Document unusualSession() {
   s.levels[0] = {2.0, 1.5, Filter::nearest, 0.9};
   s.levels[2] = {0.25, 0.125, Filter::mean, 1.0};
   s.levels[2].preintegrated = true;
+  s.levels[1].adaptive = AdaptiveIntegration{0.005, 3.0, 0.25};
   s.cpr = {.shown = true,
            .mode = CprMode::projected,
            .path = 1,
@@ -162,6 +163,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
     EXPECT_DOUBLE_EQ(loaded.levels[q].osd, saved.levels[q].osd) << q;
     EXPECT_EQ(loaded.levels[q].filter, saved.levels[q].filter) << q;
     EXPECT_EQ(loaded.levels[q].preintegrated, saved.levels[q].preintegrated) << q;
+    EXPECT_EQ(loaded.levels[q].adaptive, saved.levels[q].adaptive) << q;
     EXPECT_DOUBLE_EQ(loaded.levels[q].ert, saved.levels[q].ert) << q;
   }
   EXPECT_TRUE(loaded.cpr.shown);
