@@ -19,6 +19,10 @@ namespace angio {
 
 namespace {
 
+// Off the axes: in an axis-aligned view the voxel filters meet every voxel once per osd and agree
+// with the converged image far better than in any other view (measured: 58 against 37 dB).
+constexpr double kAngleOffsetDeg = 15;
+
 // The images of one level and sampling at every bench angle, each frame timed.
 struct Frames {
   std::vector<Image> images;
@@ -29,7 +33,7 @@ Frames renderFrames(FrameRenderer& frames, const std::shared_ptr<const PreparedS
                     RenderParams p, int angles) {
   Frames out;
   for (int n = 0; n < angles; ++n) {
-    p.angleDeg = benchAngle(n, angles);
+    p.angleDeg = benchAngle(n, angles) + kAngleOffsetDeg;
     FastRenderStats stats;
     const auto start = BenchClock::now();
     out.images.push_back(frames.render(scene, p, {}, &stats));

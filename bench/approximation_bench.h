@@ -4,7 +4,8 @@
 // exact and pre-integrated, each timed (median, min, max over the angles), its samples counted and
 // its image compared (PSNR over the 8-bit output) with the exact image at the level's osd and with
 // the converged one (exact at a quarter of the level's osd: what a finer osd tends to). Adaptive
-// integration rows (seed 000 sec. 4.3) use the level's filter and isd and no osd.
+// integration rows (seed 000 sec. 4.3) use the level's filter and isd and no osd. The angles are the
+// frame bench's plus 15 degrees, so that no view is axis-aligned.
 #include <string>
 #include <vector>
 

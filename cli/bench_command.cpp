@@ -99,6 +99,7 @@ int runBench(const BenchOptionsCli& options) {
     settings.axis = *parseAxis(options.axis);
     settings.threads = options.threads;
     settings.levels = options.levels;
+    if (options.skipAdaptive) settings.adaptive.clear();
     std::printf("%s", formatApproximationBench(runApproximationBench(volume, tf, settings)).c_str());
     return 0;
   }

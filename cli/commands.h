@@ -118,9 +118,10 @@ struct BenchOptionsCli {
   std::vector<std::string> hide;    // the labels those rows hide (default: bone)
   std::string json;
   bool glyphIntervals =
-      false;            // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
-  bool trace = false;   // time only vessel tracing (bench/trace_bench.h)
-  bool slices = false;  // time only the slice view's images (bench/slice_bench.h)
+      false;                  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
+  bool trace = false;         // time only vessel tracing (bench/trace_bench.h)
+  bool slices = false;        // time only the slice view's images (bench/slice_bench.h)
+  bool skipAdaptive = false;  // --approximations without the adaptive integration rows
   bool approximations = false;  // time and compare the approximations (bench/approximation_bench.h)
 };
 int runBench(const BenchOptionsCli& options);

@@ -233,6 +233,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--slices", o.slices,
                 "Time only the slice view's images: each orientation stepped through --angles "
                 "slices");
+  cmd->add_flag("--skip-adaptive", o.skipAdaptive,
+                "With --approximations: leave out the adaptive integration rows (seconds to a minute "
+                "per frame at 512x512x1200)");
   cmd->add_flag("--approximations", o.approximations,
                 "Time only the approximations against the exact images: per level, osd x1 ... x4 "
                 "post- and pre-integrated, PSNR against the level's exact image and the converged "

@@ -145,6 +145,10 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
     throw InputError(file, "has DimSize '" + shown(header.field("DimSize")) + "' that is not " +
                                std::to_string(ndims) + " whole numbers >= 1");
   const std::string data = header.field("ElementDataFile");
+  // MetaIO takes an empty name for a data file of (size_t) -1 bytes and asks for that much memory.
+  if (data.empty())
+    throw InputError(file,
+                     "names no voxel data (ElementDataFile is missing or empty; LOCAL or a file name)");
   if (data == "LIST" || data.find('%') != std::string::npos)
     throw InputError(file, "keeps its voxels in a list of files (ElementDataFile = " + shown(data) +
                                "); only one data file (or LOCAL) is read: convert it to one .mha");
