@@ -206,9 +206,14 @@ ViewportOverlay App::viewportOverlay() const {
   overlay.banner = studyBanner(data_.study);
   if (!shown_ || texture_.empty()) return overlay;
   const Sampling& s = shown_->params.sampling;
-  char label[96];
-  std::snprintf(label, sizeof label, "%s  %dx%d  isd %.2g osd %.2g %s%s", toString(shown_->level),
-                shown_->image->width, shown_->image->height, s.isd, s.osd, toString(s.filter),
+  char along[48];  // how the rays are integrated: samples every osd, or adaptively
+  if (s.adaptive && doc().mode == Compositing::dvr)
+    std::snprintf(along, sizeof along, "adaptive %.2g from %.2g", s.adaptive->tolerance,
+                  s.adaptive->initialStep);
+  else std::snprintf(along, sizeof along, "osd %.2g", s.osd);
+  char label[128];
+  std::snprintf(label, sizeof label, "%s  %dx%d  isd %.2g %s %s%s", toString(shown_->level),
+                shown_->image->width, shown_->image->height, s.isd, along, toString(s.filter),
                 s.preintegrated ? " pre-integrated" : "");
   overlay.levelLabel = label;
   return overlay;

@@ -56,7 +56,8 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
   FastRenderStats local;
   FastRenderStats& s = stats ? *stats : local;
   Image image;
-  if (params.sampling.adaptive) {
+  // MIP takes the maximum of the samples, adaptive integration or not (as pre-integration).
+  if (params.sampling.adaptive && params.compositing == Compositing::dvr) {
     AdaptiveIntegrationStats adaptive;
     image = renderAdaptive(volume_, tables, params, &adaptive, control.cancel);
     s = {};
