@@ -192,7 +192,8 @@ std::string adaptiveIntegrationProblem(const RenderParams& params) {
 }
 
 Image renderAdaptive(const Volume& volume, const RegionTables& tables, const RenderParams& params,
-                     AdaptiveIntegrationStats* stats, const std::atomic<bool>* cancel) {
+                     AdaptiveIntegrationStats* stats, const std::atomic<bool>* cancel,
+                     std::atomic<int>* rowsDone) {
   if (const std::string problem = adaptiveIntegrationProblem(params); !problem.empty())
     throw std::invalid_argument(problem);
   if (tables.regions || !tables.outside)
@@ -213,6 +214,7 @@ Image renderAdaptive(const Volume& volume, const RegionTables& tables, const Ren
       }
       for (int x = 0; x < view.width; ++x)
         image.at(x, y) = integrator.integrate(view.rayOrigin(x, y), intervals, local);
+      if (rowsDone) rowsDone->fetch_add(1, std::memory_order_relaxed);
     }
     const std::lock_guard<std::mutex> lock(mutex);
     total.nodes += local.nodes;

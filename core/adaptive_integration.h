@@ -39,9 +39,9 @@ std::string adaptiveIntegrationProblem(const RenderParams& params);
 
 // The image of `params` with params.sampling.adaptive; throws std::invalid_argument where
 // adaptiveIntegrationProblem says why not, or for VesselGlyph regions in `tables`.
-// `cancel`, if set, is checked before each row.
+// `cancel`, if set, is checked before each row; `rowsDone`, if set, is incremented after each.
 Image renderAdaptive(const Volume& volume, const RegionTables& tables, const RenderParams& params,
                      AdaptiveIntegrationStats* stats = nullptr,
-                     const std::atomic<bool>* cancel = nullptr);
+                     const std::atomic<bool>* cancel = nullptr, std::atomic<int>* rowsDone = nullptr);
 
 }  // namespace angio

@@ -59,7 +59,7 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
   // MIP takes the maximum of the samples, adaptive integration or not (as pre-integration).
   if (params.sampling.adaptive && params.compositing == Compositing::dvr) {
     AdaptiveIntegrationStats adaptive;
-    image = renderAdaptive(volume_, tables, params, &adaptive, control.cancel);
+    image = renderAdaptive(volume_, tables, params, &adaptive, control.cancel, control.rowsDone);
     s = {};
     s.samples = adaptive.nodes;
     s.cancelled = adaptive.cancelled;
