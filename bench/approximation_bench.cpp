@@ -62,7 +62,7 @@ std::string techniqueName(const Sampling& s) {
 
 ApproximationRow row(const std::string& level, const RenderParams& p, const Frames& frames,
                      const Frames& exact, const Frames& converged) {
-  const std::vector<double> level_ = psnrs(frames, exact);
+  const std::vector<double> againstLevel = psnrs(frames, exact);
   return {level,
           p.sampling.osd,
           techniqueName(p.sampling),
@@ -70,8 +70,8 @@ ApproximationRow row(const std::string& level, const RenderParams& p, const Fram
           *std::min_element(frames.ms.begin(), frames.ms.end()),
           *std::max_element(frames.ms.begin(), frames.ms.end()),
           median(frames.samples),
-          median(level_),
-          *std::min_element(level_.begin(), level_.end()),
+          median(againstLevel),
+          *std::min_element(againstLevel.begin(), againstLevel.end()),
           median(psnrs(frames, converged)),
           int(frames.images.size())};
 }

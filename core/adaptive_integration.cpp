@@ -17,9 +17,6 @@ namespace angio {
 
 namespace {
 
-// Extinction per voxel unit is capped where the TF's opacity is 1 (as in pre-integration).
-constexpr float kMaxExtinction = 40.f;
-
 struct Node {
   float extinction = 0.f;   // k = -ln(1 - a) per voxel unit
   glm::vec3 emission{0.f};  // q = rgb s k
@@ -54,8 +51,8 @@ class RayIntegrator {
   RayIntegrator(const Volume& volume, const RegionTables& tables, const MaskedDensity& read,
                 const RenderParams& params, const ViewGeometry& view,
                 const AdaptiveIntegration& settings)
-      : volume_(volume), tables_(tables), read_(read), params_(params), settings_(settings),
-        viewDir_(view.viewDir), view_(view) {}
+      : volume_(volume), tables_(tables), read_(read), params_(params), settings_(settings), view_(view),
+        viewDir_(view.viewDir) {}
 
   // RGBA of the ray from `origin`; `intervals` is scratch memory kept between rays.
   glm::vec4 integrate(const glm::dvec3& origin, std::vector<Interval>& intervals,
@@ -99,7 +96,7 @@ class RayIntegrator {
     const TfTable& tf = own ? *own : *tables_.outside;
     const glm::vec4 rgba = tf.rgba[tableIndex(sampleDensity(volume_, q, filter, read_))];
     if (rgba.a <= 0.f) return {};
-    const float extinction = std::min(float(-std::log1p(-double(rgba.a))), kMaxExtinction);
+    const float extinction = float(extinctionPerVoxel(rgba.a));
     const float shade =
         shadingFactor(params_.shading, sampleGradient(volume_, q, filter, read_), viewDir_);
     return {extinction, glm::vec3(rgba) * shade * extinction};
@@ -175,8 +172,8 @@ class RayIntegrator {
   const MaskedDensity& read_;
   const RenderParams& params_;
   const AdaptiveIntegration& settings_;
-  const glm::vec3 viewDir_;
   const ViewGeometry& view_;
+  const glm::vec3 viewDir_;  // view_.viewDir in float, as shadingFactor takes it
   glm::dvec3 firstQ_{0.0}, stepQ_{0.0};
   double length_ = 0;
   long initialCount_ = 0, nextInitial_ = 0;

@@ -15,11 +15,12 @@
 // integrand the initial intervals already resolve (a constant medium) is not refined at all.
 // Nodes are every initialStep / 2 apart at first, so nothing thicker than that is missed; thinner
 // features may be, as the seed says of every adaptive scheme. Plain DVR and labels; no VesselGlyph
-// regions, no MIP (render/frame_renderer renders MIP by samples whatever the sampling says). No empty-space skipping: every ray is integrated over its whole clipped domain,
-// up to early ray termination.
+// regions, no MIP (render/frame_renderer renders MIP by samples whatever the sampling says). No
+// empty-space skipping: every ray is integrated over its whole clipped domain, up to early ray
+// termination.
 #include <atomic>
 #include <cstdint>
-#include <functional>
+#include <string>
 
 #include "core/compositing.h"
 #include "core/image.h"

@@ -6,6 +6,10 @@ float opacityAtDistance(float opacityPerVoxel, double osd) {
   return float(1.0 - std::pow(1.0 - double(opacityPerVoxel), osd));
 }
 
+double extinctionPerVoxel(float opacityPerVoxel) {
+  return std::min(-std::log1p(-std::min(double(opacityPerVoxel), 1.0)), kMaxExtinction);
+}
+
 SampleTable correctedTable(const TfTable& table, double osd) {
   SampleTable corrected;
   for (int d = 0; d < kDensityLevels; ++d) {

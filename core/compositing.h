@@ -21,6 +21,12 @@ namespace angio {
 // Opacity per sample at distance osd voxel units: alpha = 1 - (1 - a)^osd (rendering model).
 float opacityAtDistance(float opacityPerVoxel, double osd);
 
+// The same opacity per voxel unit as an extinction coefficient, tau = -ln(1 - a) per voxel unit
+// (alpha = 1 - exp(-tau osd)), for the approximations that integrate along a ray. Capped where a is
+// 1 (tau infinite) so sums of it stay finite: 0.3 voxel units through it still give alpha 1 - 6e-6.
+constexpr double kMaxExtinction = 40.0;
+double extinctionPerVoxel(float opacityPerVoxel);
+
 // The TF table with opacities corrected for the sample distance, computed once per frame.
 using SampleTable = std::array<glm::vec4, kDensityLevels>;
 SampleTable correctedTable(const TfTable& table, double osd);

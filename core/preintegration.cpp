@@ -5,24 +5,12 @@
 
 namespace angio {
 
-namespace {
-
-// -ln(1 - a): the extinction per voxel unit of an opacity per voxel unit, capped where a is 1
-// (infinite) so prefix sums stay finite: a segment of 0.01 voxel units through it still has alpha
-// 1 - exp(-0.4) and one of 0.3 (the high level) 1 - 6e-6.
-constexpr double kMaxExtinction = 40.0;
-double extinction(float opacityPerVoxel) {
-  return std::min(-std::log1p(-std::min(double(opacityPerVoxel), 1.0)), kMaxExtinction);
-}
-
-}  // namespace
-
 PreintegratedTable::PreintegratedTable(const TfTable& table, double osd)
     : osd_(osd), post_(correctedTable(table, osd)), entries_(kDensityLevels + 1),
       visibleBelow_(table.integratedVisible) {
   for (int d = 0; d < kDensityLevels; ++d) {
     Entry& entry = entries_[d];
-    entry.tau = extinction(table.rgba[d].a);
+    entry.tau = extinctionPerVoxel(table.rgba[d].a);
     entry.emission = glm::dvec3(table.rgba[d]) * entry.tau;
     entries_[d + 1].tauBelow = entry.tauBelow + entry.tau;
     entries_[d + 1].emissionBelow = entry.emissionBelow + entry.emission;

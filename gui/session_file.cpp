@@ -11,6 +11,7 @@
 
 #include "io/atomic_write.h"
 #include "io/json_text.h"
+#include "io/sampling_json.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
@@ -94,18 +95,6 @@ Json slicesJson(const SliceViewState& slices) {
           {"level", slices.windowLevel.level},
           {"cursor_mm", slices.cursorMm ? vectorJson(*slices.cursorMm) : Json(nullptr)},
           {"panes", slicePanesJson(slices.panes)}};
-}
-
-Json samplingJson(const Sampling& sampling) {
-  return {{"isd", sampling.isd},
-          {"osd", sampling.osd},
-          {"filter", toString(sampling.filter)},
-          {"ert", sampling.ert},
-          {"preintegrated", sampling.preintegrated},
-          {"adaptive", sampling.adaptive ? Json{{"tolerance", sampling.adaptive->tolerance},
-                                                {"initial_step", sampling.adaptive->initialStep},
-                                                {"min_step", sampling.adaptive->minStep}}
-                                         : Json(nullptr)}};
 }
 
 // Reads one session file: every key optional (defaults stay), every present key checked.
@@ -436,7 +425,7 @@ std::string toJson(const Document& session) {
   const ViewState& v = session.view;
   Json levels = Json::object();
   for (int q = 0; q < kQualityLevels; ++q)
-    levels[toString(Quality(q))] = samplingJson(session.levels[q]);
+    levels[toString(Quality(q))] = Json::parse(samplingJson(session.levels[q]).dump());
   Json panels = Json::object();
   for (const auto& [name, open] : session.panelsOpen) panels[name] = open;
   const Json json = {

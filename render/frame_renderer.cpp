@@ -1,9 +1,8 @@
 #include "render/frame_renderer.h"
 
-#include "core/adaptive_integration.h"
-
 #include <stdexcept>
 
+#include "core/adaptive_integration.h"
 #include "core/reference_raycaster.h"
 
 namespace angio {

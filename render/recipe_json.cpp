@@ -11,6 +11,7 @@
 #include "core/number_text.h"
 #include "io/atomic_write.h"
 #include "io/json_text.h"
+#include "io/sampling_json.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
@@ -336,16 +337,7 @@ std::string renderSidecarJson(const RenderRecipe& s) {
       {"quality", s.quality ? Json(toString(*s.quality)) : Json(nullptr)},
       {"raycaster", s.raycaster == Raycaster::reference ? "reference" : "fast"},
       {"view", viewJson(p)},
-      {"sampling",
-       {{"isd", p.sampling.isd},
-        {"osd", p.sampling.osd},
-        {"filter", toString(p.sampling.filter)},
-        {"ert", p.sampling.ert},
-        {"preintegrated", p.sampling.preintegrated},
-        {"adaptive", p.sampling.adaptive ? Json{{"tolerance", p.sampling.adaptive->tolerance},
-                                                {"initial_step", p.sampling.adaptive->initialStep},
-                                                {"min_step", p.sampling.adaptive->minStep}}
-                                         : Json(nullptr)}}},
+      {"sampling", samplingJson(p.sampling)},
       {"shading", {{"enabled", p.shading.enabled}, {"ka", p.shading.ka}, {"kd", p.shading.kd}}},
       {"compositing", p.compositing == Compositing::mip ? "mip" : "dvr"},
       {"mip", {{"window", p.mip.window}, {"level", p.mip.level}}},

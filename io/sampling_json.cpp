@@ -1,0 +1,19 @@
+#include "io/sampling_json.h"
+
+namespace angio {
+
+nlohmann::ordered_json samplingJson(const Sampling& sampling) {
+  using Json = nlohmann::ordered_json;
+  const auto& adaptive = sampling.adaptive;
+  return {{"isd", sampling.isd},
+          {"osd", sampling.osd},
+          {"filter", toString(sampling.filter)},
+          {"ert", sampling.ert},
+          {"preintegrated", sampling.preintegrated},
+          {"adaptive", adaptive ? Json{{"tolerance", adaptive->tolerance},
+                                       {"initial_step", adaptive->initialStep},
+                                       {"min_step", adaptive->minStep}}
+                                : Json(nullptr)}};
+}
+
+}  // namespace angio
