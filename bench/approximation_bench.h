@@ -25,6 +25,9 @@ struct ApproximationSettings {
   // initial steps (voxels), each pair a row.
   std::vector<AdaptiveIntegration> adaptive = {
       {0.01, 4.0, 0.125}, {0.01, 2.0, 0.125}, {0.001, 1.0, 0.125}};
+  // Adaptive sampling rows (core/adaptive_sampling.h) per level: these levels and oracle
+  // tolerances, each a row; the oracle is made ahead (its time is reported apart, once per TF).
+  std::vector<AdaptiveSampling> adaptiveSampling = {{3, 3, 0.02}, {3, 6, 0.02}, {3, 6, 0.1}};
 };
 
 struct ApproximationRow {
@@ -37,6 +40,7 @@ struct ApproximationRow {
   double minPsnrLevelDb = 0;   // the worst angle
   double psnrConvergedDb = 0;  // median, against the exact image at a quarter of the level's osd
   int frames = 0;
+  double setupMs = 0;  // the first frame, which makes what later frames reuse (the oracle)
 };
 
 std::vector<ApproximationRow> runApproximationBench(const Volume& volume, const TransferFunction& tf,

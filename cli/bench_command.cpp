@@ -99,7 +99,8 @@ int runBench(const BenchOptionsCli& options) {
     settings.axis = *parseAxis(options.axis);
     settings.threads = options.threads;
     settings.levels = options.levels;
-    if (options.skipAdaptive) settings.adaptive.clear();
+    if (options.skipAdaptive || options.onlyAdaptiveSampling) settings.adaptive.clear();
+    if (options.onlyAdaptiveSampling) settings.osdScales = {1};  // exact and pre-integrated
     std::printf("%s", formatApproximationBench(runApproximationBench(volume, tf, settings)).c_str());
     return 0;
   }

@@ -31,6 +31,9 @@ struct RenderOptions {
   std::optional<std::string> filter;
   bool preintegrated = false;                   // pre-integrated classification (an approximation)
   std::optional<double> adaptive, initialStep;  // adaptive integration: c_tol, first step (voxels)
+  std::optional<int> adaptiveSampling;          // adaptive sampling (seed 003): its levels
+  std::optional<int> rayLevels;                 // and along rays
+  std::optional<double> oracleTolerance;        // and its oracle's tolerance
   std::optional<std::string> shading;           // "on" | "off"
   bool mip = false;
   std::optional<double> window, level;
@@ -122,6 +125,7 @@ struct BenchOptionsCli {
   bool trace = false;         // time only vessel tracing (bench/trace_bench.h)
   bool slices = false;        // time only the slice view's images (bench/slice_bench.h)
   bool skipAdaptive = false;  // --approximations without the adaptive integration rows
+  bool onlyAdaptiveSampling = false;  // --approximations: only the adaptive sampling rows
   bool approximations = false;  // time and compare the approximations (bench/approximation_bench.h)
 };
 int runBench(const BenchOptionsCli& options);

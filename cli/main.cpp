@@ -70,6 +70,19 @@ void addRender(CLI::App& app, angio::RenderOptions& o) {
                   "Adaptive integration: the first intervals' length in voxels (default 2); nothing "
                   "thicker than half of it is missed")
       ->check(angio::numberBetween(0.125, 64));
+  cmd->add_option("--adaptive-sampling", o.adaptiveSampling,
+                  "Adaptive sampling in 3-D with this many levels (rays up to 2^levels apart across the "
+                  "image, synthesised between, where an oracle finds the TF smooth; pre-integrated; "
+                  "an approximation, DVR without VesselGlyph or labels with their own TF)")
+      ->check(CLI::Range(0, angio::kMaxAdaptiveLevels));
+  cmd->add_option("--ray-levels", o.rayLevels,
+                  "Adaptive sampling: samples up to 2^this apart along rays where the oracle allows "
+                  "(default 6, at least --adaptive-sampling)")
+      ->check(CLI::Range(0, angio::kMaxAdaptiveLevels));
+  cmd->add_option("--oracle-tolerance", o.oracleTolerance,
+                  "Adaptive sampling: how much the TF's opacity (per voxel) may change over a block of "
+                  "4^3 voxels that is still sampled sparsely (default 0.02)")
+      ->check(angio::numberBetween(0, 1e6));
   cmd->add_option("--shading", o.shading, "Headlight diffuse shading")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--ka", o.ka, "Ambient coefficient")->check(angio::numberBetween(0, 10));
@@ -236,6 +249,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--skip-adaptive", o.skipAdaptive,
                 "With --approximations: leave out the adaptive integration rows (seconds to a minute "
                 "per frame at 512x512x1200)");
+  cmd->add_flag("--only-adaptive-sampling", o.onlyAdaptiveSampling,
+                "With --approximations: only the adaptive sampling rows, with the level's exact and "
+                "pre-integrated rows at its own osd");
   cmd->add_flag("--approximations", o.approximations,
                 "Time only the approximations against the exact images: per level, osd x1 ... x4 "
                 "post- and pre-integrated, PSNR against the level's exact image and the converged "

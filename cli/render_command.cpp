@@ -48,6 +48,19 @@ RenderParams paramsFrom(const RenderOptions& o, const TransferFunction& tf) {
     if (o.initialStep) p.sampling.adaptive->initialStep = *o.initialStep;
     if (o.mip) throw std::invalid_argument("--adaptive is for DVR, not --mip");
   }
+  if ((o.oracleTolerance || o.rayLevels) && !o.adaptiveSampling)
+    throw std::invalid_argument("--oracle-tolerance and --ray-levels need --adaptive-sampling");
+  if (o.adaptiveSampling) {
+    if (o.adaptive) throw std::invalid_argument("--adaptive-sampling and --adaptive exclude each other");
+    if (o.mip) throw std::invalid_argument("--adaptive-sampling is for DVR, not --mip");
+    p.sampling.adaptiveSampling = AdaptiveSampling{};
+    p.sampling.adaptiveSampling->levels = *o.adaptiveSampling;
+    p.sampling.adaptiveSampling->rayLevels =
+        o.rayLevels.value_or(std::max(*o.adaptiveSampling, p.sampling.adaptiveSampling->rayLevels));
+    if (p.sampling.adaptiveSampling->rayLevels < *o.adaptiveSampling)
+      throw std::invalid_argument("--ray-levels must be at least --adaptive-sampling");
+    if (o.oracleTolerance) p.sampling.adaptiveSampling->tolerance = *o.oracleTolerance;
+  }
   if (o.shading) p.shading.enabled = *o.shading == "on";
   if (o.ka) p.shading.ka = *o.ka;
   if (o.kd) p.shading.kd = *o.kd;
@@ -80,6 +93,9 @@ RenderRecipe sidecarFrom(const RenderOptions& o) {
   if (s.vesselGlyph && o.mip) throw std::invalid_argument("--mip cannot be combined with --centerlines");
   if (s.vesselGlyph && o.adaptive)
     throw std::invalid_argument("--adaptive cannot be combined with --centerlines (VesselGlyph)");
+  if (s.vesselGlyph && o.adaptiveSampling)
+    throw std::invalid_argument(
+        "--adaptive-sampling cannot be combined with --centerlines (VesselGlyph)");
   s.dataset = absolutePath(o.volume);
   s.labels = absolutePath(o.labels);
   s.quality = parseQuality(o.quality);

@@ -17,7 +17,13 @@ PreintegratedTable::PreintegratedTable(const TfTable& table, double osd)
   }
 }
 
-glm::vec4 PreintegratedTable::crossing(float front, float back, int f, int b) const {
+glm::vec4 PreintegratedTable::within(int entry, double length) const {
+  const glm::vec4 post = post_[entry];
+  if (post.a <= 0.f) return glm::vec4(0.f);
+  return glm::vec4(glm::vec3(post), 1.f - float(std::exp(-length * entries_[entry].tau)));
+}
+
+glm::vec4 PreintegratedTable::crossing(float front, float back, int f, int b, double length) const {
   if (visibleBelow_[std::max(f, b) + 1] - visibleBelow_[std::min(f, b)] == 0) return glm::vec4(0.f);
   // The integrals from density -0.5 up to each end: an entry holds for densities within half a
   // unit of it, so an end's position in its entry is s - d + 0.5.
@@ -32,7 +38,7 @@ glm::vec4 PreintegratedTable::crossing(float front, float back, int f, int b) co
   const glm::dvec3 emitted =
       (eb.emissionBelow + ub * eb.emission) - (ef.emissionBelow + uf * ef.emission);
   const glm::vec3 rgb = glm::clamp(glm::vec3(emitted) * (1.f / integral), 0.f, 1.f);
-  return glm::vec4(rgb, 1.f - std::exp(-float(osd_) * meanTau));
+  return glm::vec4(rgb, 1.f - std::exp(-float(length) * meanTau));
 }
 
 PreintegratedTables preintegratedTables(const RegionTables& tables, double osd) {

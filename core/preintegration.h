@@ -40,7 +40,15 @@ class PreintegratedTable {
   glm::vec4 segment(float front, float back) const {
     const int f = tableIndex(front), b = tableIndex(back);
     if (f == b) return post_[f];
-    return crossing(front, back, f, b);
+    return crossing(front, back, f, b, osd_);
+  }
+  // The same for a segment `samples` * osd long (adaptive sampling's skipped samples): the mean
+  // extinction does not depend on the length, only the opacity does.
+  glm::vec4 segment(float front, float back, int samples) const {
+    if (samples == 1) return segment(front, back);
+    const int f = tableIndex(front), b = tableIndex(back);
+    if (f == b) return within(f, osd_ * samples);
+    return crossing(front, back, f, b, osd_ * samples);
   }
 
  private:
@@ -52,7 +60,8 @@ class PreintegratedTable {
     glm::dvec3 emissionBelow{0.0}, emission{0.0};
   };
 
-  glm::vec4 crossing(float front, float back, int f, int b) const;
+  glm::vec4 crossing(float front, float back, int f, int b, double length) const;
+  glm::vec4 within(int entry, double length) const;
 
   double osd_ = 1.0;
   SampleTable post_{};          // post-classification at osd: the segment within one entry

@@ -36,6 +36,15 @@ std::string samplingProblem(const Sampling& s) {
       return "the adaptive integration's steps must satisfy 0.001 <= min step <= initial step <= 64 "
              "voxels";
   }
+  if (const auto& a = s.adaptiveSampling) {
+    if (s.adaptive) return "adaptive sampling and adaptive integration exclude each other";
+    if (a->levels < 0 || a->levels > kMaxAdaptiveLevels || a->rayLevels < a->levels ||
+        a->rayLevels > kMaxAdaptiveLevels)
+      return "the adaptive sampling's levels must satisfy 0 <= levels <= ray levels <= " +
+             std::to_string(kMaxAdaptiveLevels);
+    if (!(std::isfinite(a->tolerance) && a->tolerance >= 0))
+      return "the adaptive sampling's tolerance must be a number >= 0";
+  }
   return "";
 }
 

@@ -22,6 +22,19 @@ struct AdaptiveIntegration {
   friend bool operator==(const AdaptiveIntegration&, const AdaptiveIntegration&) = default;
 };
 
+// Adaptive sampling in three dimensions (core/adaptive_sampling.h; seed 003): an oracle's distance
+// to the nearest change of the TF's opacity or colour lets samples along rays and rays across the
+// image be up to 2^levels apart; skipped rays are synthesised, the segments between samples
+// pre-integrated.
+struct AdaptiveSampling {
+  int levels = 3;           // l_max: rays at most 2^l_max apart in the image
+  int rayLevels = 6;        // samples at most 2^rayLevels apart along rays (>= levels)
+  double tolerance = 0.02;  // the oracle's: a block whose densities change the TF's opacity or
+                            // opacity-weighted colour (per voxel unit) by more is an edge
+
+  friend bool operator==(const AdaptiveSampling&, const AdaptiveSampling&) = default;
+};
+
 struct Sampling {
   double isd = 1.0;  // image sampling distance, voxel units
   double osd = 1.0;  // object sampling distance, voxel units
@@ -30,7 +43,8 @@ struct Sampling {
   // Pre-integrated classification of the segments between samples (rendering model,
   // "Approximations"; core/preintegration.h) instead of the TF at each sample.
   bool preintegrated = false;
-  std::optional<AdaptiveIntegration> adaptive;  // none: samples every osd (exact)
+  std::optional<AdaptiveIntegration> adaptive;       // none: samples every osd (exact)
+  std::optional<AdaptiveSampling> adaptiveSampling;  // none: every ray, every sample (exact)
 
   friend bool operator==(const Sampling&, const Sampling&) = default;
 };
@@ -38,6 +52,9 @@ struct Sampling {
 // The finest sampling distance anything may ask for (voxel units): a thousand samples per voxel,
 // far past what any filter resolves; finer is a mistake that would take hours, not a better image.
 constexpr double kMinSamplingDistance = 1e-3;
+
+// The most levels adaptive sampling may use: 256 apart along rays, a band of 256 rows in the image.
+constexpr int kMaxAdaptiveLevels = 8;
 
 // Why `sampling` cannot be rendered (a distance not finite or below kMinSamplingDistance, an ERT
 // threshold outside [0, 1]), or "".

@@ -210,6 +210,9 @@ ViewportOverlay App::viewportOverlay() const {
   if (s.adaptive && doc().mode == Compositing::dvr)
     std::snprintf(along, sizeof along, "adaptive %.2g from %.2g", s.adaptive->tolerance,
                   s.adaptive->initialStep);
+  else if (s.adaptiveSampling && doc().mode == Compositing::dvr)
+    std::snprintf(along, sizeof along, "osd %.2g 3-D adaptive L%d/%d", s.osd, s.adaptiveSampling->levels,
+                  s.adaptiveSampling->rayLevels);
   else std::snprintf(along, sizeof along, "osd %.2g", s.osd);
   char label[128];
   std::snprintf(label, sizeof label, "%s  %dx%d  isd %.2g %s %s%s", toString(shown_->level),

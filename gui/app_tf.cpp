@@ -32,7 +32,7 @@ void App::adjustByDrag(glm::vec2 px) {
     const TransferFunction& tf = doc().tf;
     commit(RenderingEdit{doc().mode, doc().shading, std::max(1.0, tf.mipWindow + px.x * kWindowPerPx),
                          tf.mipLevel - px.y * kLevelPerPx, levelsPreintegrated(doc()),
-                         doc().levels[0].adaptive});
+                         doc().levels[0].adaptive, doc().levels[0].adaptiveSampling});
     return;
   }
   TransferFunction tf = editedTf();

@@ -234,12 +234,28 @@ struct SessionReader {
     return settings;
   }
 
+  // A level's adaptive sampling: null (off) or its levels and oracle tolerance.
+  std::optional<AdaptiveSampling> adaptiveSampling(const Json& a) const {
+    if (a.is_null()) return std::nullopt;
+    if (!a.is_object()) fail("levels adaptive_sampling is not an object or null");
+    AdaptiveSampling settings;
+    settings.levels = int(number(a, "levels", 0, kMaxAdaptiveLevels, settings.levels));
+    settings.rayLevels = int(number(a, "ray_levels", settings.levels, kMaxAdaptiveLevels,
+                                    std::max(settings.levels, settings.rayLevels)));
+    settings.tolerance = number(a, "tolerance", 0, 1e6, settings.tolerance);
+    return settings;
+  }
+
   Sampling sampling(const Json& s, Sampling sampling) const {
     sampling.isd = number(s, "isd", 1e-3, 100, sampling.isd);
     sampling.osd = number(s, "osd", 1e-3, 100, sampling.osd);
     sampling.ert = number(s, "ert", 0, 1, sampling.ert);
     sampling.preintegrated = flag(s, "preintegrated", sampling.preintegrated);
     if (s.contains("adaptive")) sampling.adaptive = adaptive(s["adaptive"]);
+    if (s.contains("adaptive_sampling"))
+      sampling.adaptiveSampling = adaptiveSampling(s["adaptive_sampling"]);
+    if (sampling.adaptive && sampling.adaptiveSampling)
+      fail("levels adaptive and adaptive_sampling exclude each other");
     if (s.contains("filter")) {
       const auto filter = parseFilter(text(s, "filter"));
       if (!filter) fail("levels filter is not nearest, trilinear or mean");

@@ -48,6 +48,7 @@ void change(Document& d, const RenderingEdit& edit) {
   for (Sampling& level : d.levels) {
     level.preintegrated = edit.preintegrated;
     level.adaptive = edit.adaptive;
+    level.adaptiveSampling = edit.adaptiveSampling;
   }
 }
 void change(Document& d, const VesselGlyphEdit& edit) { d.vesselGlyph = edit.vesselGlyph; }

@@ -39,6 +39,7 @@ struct RenderingEdit {
   double mipWindow = 0, mipLevel = 0;
   bool preintegrated = false;  // every level's classification (rendering model, Approximations)
   std::optional<AdaptiveIntegration> adaptive;  // every level's integration (none: samples every osd)
+  std::optional<AdaptiveSampling> adaptiveSampling;  // every level's (none: every ray, every sample)
   friend bool operator==(const RenderingEdit&, const RenderingEdit&) = default;
 };
 // On when every quality level pre-integrates (the Rendering panel switches them together).

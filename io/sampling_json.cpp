@@ -13,7 +13,12 @@ nlohmann::ordered_json samplingJson(const Sampling& sampling) {
           {"adaptive", adaptive ? Json{{"tolerance", adaptive->tolerance},
                                        {"initial_step", adaptive->initialStep},
                                        {"min_step", adaptive->minStep}}
-                                : Json(nullptr)}};
+                                : Json(nullptr)},
+          {"adaptive_sampling", sampling.adaptiveSampling
+                                    ? Json{{"levels", sampling.adaptiveSampling->levels},
+                                           {"ray_levels", sampling.adaptiveSampling->rayLevels},
+                                           {"tolerance", sampling.adaptiveSampling->tolerance}}
+                                    : Json(nullptr)}};
 }
 
 }  // namespace angio

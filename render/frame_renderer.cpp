@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "core/adaptive_integration.h"
+#include "core/adaptive_sampling.h"
 #include "core/reference_raycaster.h"
 
 namespace angio {
@@ -62,6 +63,14 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
     s = {};
     s.samples = adaptive.nodes;
     s.cancelled = adaptive.cancelled;
+  } else if (params.sampling.adaptiveSampling && params.compositing == Compositing::dvr) {
+    AdaptiveSamplingStats adaptive;
+    image = renderAdaptiveSampling(volume_, tables,
+                                   oracleFor(scene, tables, params.sampling.adaptiveSampling->tolerance),
+                                   params, &adaptive, control.cancel, control.rowsDone);
+    s = {};
+    s.samples = adaptive.samples;
+    s.cancelled = adaptive.cancelled;
   } else if (scene->recipe().raycaster == Raycaster::reference) {
     s = {};
     image = renderReference(volume_, tables, params, control.progress);
@@ -75,6 +84,16 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
   }
   if (!s.cancelled) scene->finish(view, regions_, image);
   return image;
+}
+
+const SamplingOracle& FrameRenderer::oracleFor(const std::shared_ptr<const PreparedScene>& scene,
+                                               const RegionTables& tables, double tolerance) {
+  OracleKey key{scene, tolerance};
+  if (!(key == oracleKey_)) {
+    oracle_ = makeSamplingOracle(volume_, tables, tolerance);
+    oracleKey_ = std::move(key);
+  }
+  return oracle_;
 }
 
 Image renderRecipe(const Volume& volume, const Centerlines& centerlines, const RenderRecipe& recipe,

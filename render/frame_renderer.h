@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "core/fast_raycaster.h"
+#include "core/sampling_oracle.h"
 #include "core/image.h"
 #include "core/region_intervals.h"
 #include "core/render_params.h"
@@ -68,6 +69,17 @@ class FrameRenderer {
   std::shared_ptr<const PreparedScene> classifiedScene_;
   std::optional<TileClassification> classification_;
   RayRegions regions_;  // the view's, buffers reused from render to render
+  // Adaptive sampling's oracle (core/sampling_oracle.h).
+  // Made again for another scene (TF, labels) or tolerance; shared by the levels.
+  struct OracleKey {
+    std::shared_ptr<const PreparedScene> scene;
+    double tolerance = 0;
+    friend bool operator==(const OracleKey&, const OracleKey&) = default;
+  };
+  const SamplingOracle& oracleFor(const std::shared_ptr<const PreparedScene>& scene,
+                                  const RegionTables& tables, double tolerance);
+  OracleKey oracleKey_;
+  SamplingOracle oracle_;
 };
 
 // One image of a recipe, for callers with one view: prepare, then render.

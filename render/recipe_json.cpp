@@ -249,6 +249,21 @@ RenderParams readParams(const Reader& r, const Json& json) {
                                               r.number(adaptive, "initial_step", "sampling.adaptive."),
                                               r.number(adaptive, "min_step", "sampling.adaptive.")};
   }
+  // Absent in sidecars from before adaptive sampling existed.
+  if (sampling.contains("adaptive_sampling") && !sampling["adaptive_sampling"].is_null()) {
+    const Json& adaptive = r.at(sampling, "adaptive_sampling", "sampling.");
+    const auto whole = [&](const char* key) {
+      const double value = r.number(adaptive, key, "sampling.adaptive_sampling.");
+      if (value != std::floor(value) || value < 0 || value > kMaxAdaptiveLevels)
+        throw InputError(r.source, std::string("\"sampling.adaptive_sampling.") + key +
+                                       "\" must be a whole number 0.." +
+                                       std::to_string(kMaxAdaptiveLevels));
+      return int(value);
+    };
+    p.sampling.adaptiveSampling =
+        AdaptiveSampling{whole("levels"), whole("ray_levels"),
+                         r.number(adaptive, "tolerance", "sampling.adaptive_sampling.")};
+  }
   if (const std::string problem = samplingProblem(p.sampling); !problem.empty())
     throw InputError(r.source, "\"sampling\": " + problem);
   const Json& shading = r.at(json, "shading", "");
@@ -284,6 +299,12 @@ ImageMetadata viewMetadata(const RenderRecipe& s) {
                           ? "adaptive, tolerance " + numberText(p.sampling.adaptive->tolerance) +
                                 ", initial step " + numberText(p.sampling.adaptive->initialStep)
                           : "samples every osd"},
+      {"adaptive_sampling", p.sampling.adaptiveSampling
+                                ? std::to_string(p.sampling.adaptiveSampling->levels) + " levels, " +
+                                      std::to_string(p.sampling.adaptiveSampling->rayLevels) +
+                                      " along rays, tolerance " +
+                                      numberText(p.sampling.adaptiveSampling->tolerance)
+                                : "off"},
   };
   if (s.quality) metadata["quality"] = toString(*s.quality);
   if (p.compositing == Compositing::mip) {

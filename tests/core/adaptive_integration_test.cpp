@@ -9,19 +9,14 @@
 #include "core/adaptive_integration.h"
 #include "core/reference_raycaster.h"
 #include "core/view_geometry.h"
-#include "phantom/phantom.h"
 #include "io/tf_file.h"
+#include "phantom/phantom.h"
+#include "tests/support/filled_volume.h"
 
 namespace angio {
 namespace {
 
-Volume filled(glm::ivec3 dims, int density) {
-  Volume volume;
-  volume.dims = dims;
-  volume.spacing = glm::dvec3(1.0);
-  volume.voxels.assign(std::size_t(dims.x) * dims.y * dims.z, Voxel(density));
-  return volume;
-}
+using test_support::filledVolume;
 
 // Visible (opacity `a`, colour `color`) from density 1000 up, transparent below.
 TfTable stepTf(double a, glm::vec3 color) {
@@ -41,7 +36,7 @@ RenderParams adaptiveParams(double tolerance, double initialStep, Filter filter 
 }
 
 TEST(AdaptiveIntegration, AConstantMediumNeedsNoRefinementAndIntegratesInClosedForm) {
-  const Volume volume = filled({24, 24, 8}, 1500);
+  const Volume volume = filledVolume({24, 24, 8}, 1500);
   const glm::vec3 color(0.8f, 0.5f, 0.2f);
   const double a = 0.05;  // per voxel unit
   const TfTable table = stepTf(a, color);
@@ -74,7 +69,7 @@ TEST(AdaptiveIntegration, AConstantMediumNeedsNoRefinementAndIntegratesInClosedF
 // initial step 4 the nodes are 2 apart along every ray, so every ray that crosses the slab sees it;
 // with the initial step 8 (nodes 4 apart) some miss it, as the seed warns.
 TEST(AdaptiveIntegration, AShellAsThickAsTheNodeSpacingIsNeverMissed) {
-  Volume volume = filled({48, 48, 4}, 0);
+  Volume volume = filledVolume({48, 48, 4}, 0);
   for (int k = 0; k < 4; ++k)
     for (int i = 0; i < 48; ++i)
       for (int j : {23, 24}) volume.voxels[volume.indexOf(i, j, k)] = Voxel(2000);
@@ -140,7 +135,7 @@ TEST(AdaptiveIntegration, ATighterToleranceComesCloserToTheConvergedImageWithMor
 }
 
 TEST(AdaptiveIntegration, IsRefusedForMipAndVesselGlyphRegions) {
-  const Volume volume = filled({8, 8, 8}, 1500);
+  const Volume volume = filledVolume({8, 8, 8}, 1500);
   const TfTable table = stepTf(0.1, glm::vec3(1.f));
   RenderParams p = adaptiveParams(0.01, 4.0);
   p.compositing = Compositing::mip;

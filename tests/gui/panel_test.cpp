@@ -193,26 +193,52 @@ TEST_F(GuiPanels, ThePreintegratedCheckboxSwitchesEveryLevel) {
   for (const Sampling& level : workstation.document().levels) EXPECT_FALSE(level.preintegrated);
 }
 
-// Row 2, after "pre-integrated" and its "(?)": adaptive integration with its default tolerance
-// and first step, for every level.
-TEST_F(GuiPanels, TheAdaptiveIntegrationCheckboxSwitchesEveryLevel) {
+// Row 2, after "pre-integrated" and its "(?)": where rays are sampled, a choice of every sample,
+// adaptive integration and adaptive sampling, each with its defaults, for every level; choosing
+// one drops the other.
+TEST_F(GuiPanels, TheAlongRaysChoiceSwitchesEveryLevelToOneAdaptiveScheme) {
   Workstation workstation;
-  float afterPreintegrated = 0;  // measured while drawing, when the font is set
+  float afterPreintegrated = 0, line = 0;  // measured while drawing, when the font is set
   const auto draw = [&] {
     const ImGuiStyle& style = ImGui::GetStyle();
     afterPreintegrated = style.WindowPadding.x + ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
                          ImGui::CalcTextSize("pre-integrated").x + style.ItemSpacing.x +
                          ImGui::CalcTextSize("(?)").x + style.ItemSpacing.x;
+    line = ImGui::GetTextLineHeightWithSpacing();
     return drawRenderingPanel(workstation.document());
   };
   frame(draw);
-  const ImVec2 checkbox(afterPreintegrated + 8, rowCentreY(2));
-  const std::optional<RenderingEdit> edit = click(draw, checkbox);
-  ASSERT_TRUE(edit);
-  ASSERT_TRUE(edit->adaptive);
-  EXPECT_EQ(*edit->adaptive, AdaptiveIntegration{});
-  workstation.apply(*edit);
-  for (const Sampling& level : workstation.document().levels) EXPECT_EQ(level.adaptive, edit->adaptive);
+  const ImVec2 combo(afterPreintegrated + 20, rowCentreY(2));
+  // The popup lists the choices under the combo, one text line each.
+  const auto choose = [&](int item) {
+    EXPECT_FALSE(click(draw, combo));  // opens the list
+    const float top = rowCentreY(2) + ImGui::GetFrameHeight() / 2 + ImGui::GetStyle().WindowPadding.y;
+    return click(draw, ImVec2(combo.x, top + (item + 0.5f) * line));
+  };
+  const std::optional<RenderingEdit> integrating = choose(1);
+  ASSERT_TRUE(integrating);
+  ASSERT_TRUE(integrating->adaptive);
+  EXPECT_EQ(*integrating->adaptive, AdaptiveIntegration{});
+  EXPECT_FALSE(integrating->adaptiveSampling);
+  workstation.apply(*integrating);
+  for (const Sampling& level : workstation.document().levels)
+    EXPECT_EQ(level.adaptive, integrating->adaptive);
+
+  const std::optional<RenderingEdit> sampling = choose(2);
+  ASSERT_TRUE(sampling);
+  EXPECT_FALSE(sampling->adaptive);
+  ASSERT_TRUE(sampling->adaptiveSampling);
+  EXPECT_EQ(*sampling->adaptiveSampling, AdaptiveSampling{});
+  workstation.apply(*sampling);
+  for (const Sampling& level : workstation.document().levels) {
+    EXPECT_FALSE(level.adaptive);
+    EXPECT_EQ(level.adaptiveSampling, sampling->adaptiveSampling);
+  }
+
+  const std::optional<RenderingEdit> exact = choose(0);
+  ASSERT_TRUE(exact);
+  EXPECT_FALSE(exact->adaptive);
+  EXPECT_FALSE(exact->adaptiveSampling);
 }
 
 TEST_F(GuiPanels, TheVesselGlyphPanelAsksForItsFileAndTurnsVesselGlyphOn) {

@@ -67,6 +67,7 @@ Document unusualSession() {
   s.levels[2] = {0.25, 0.125, Filter::mean, 1.0};
   s.levels[2].preintegrated = true;
   s.levels[1].adaptive = AdaptiveIntegration{0.005, 3.0, 0.25};
+  s.levels[0].adaptiveSampling = AdaptiveSampling{2, 5, 0.07};
   s.cpr = {.shown = true,
            .mode = CprMode::projected,
            .path = 1,
@@ -164,6 +165,7 @@ TEST_F(SessionFileTest, SavedSessionLoadsBackFieldForField) {
     EXPECT_EQ(loaded.levels[q].filter, saved.levels[q].filter) << q;
     EXPECT_EQ(loaded.levels[q].preintegrated, saved.levels[q].preintegrated) << q;
     EXPECT_EQ(loaded.levels[q].adaptive, saved.levels[q].adaptive) << q;
+    EXPECT_EQ(loaded.levels[q].adaptiveSampling, saved.levels[q].adaptiveSampling) << q;
     EXPECT_DOUBLE_EQ(loaded.levels[q].ert, saved.levels[q].ert) << q;
   }
   EXPECT_TRUE(loaded.cpr.shown);
