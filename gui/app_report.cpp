@@ -4,6 +4,7 @@
 
 #include "gui/app.h"
 #include "gui/study_banner.h"
+#include "io/sampling_json.h"
 #include "vessel/vessel_glyph_spec.h"
 
 namespace angio {
@@ -42,13 +43,11 @@ nlohmann::json App::report() const {
              {"height", shown_->image->height},
              {"angle_deg", shown_->params.angleDeg},
              {"axis", toString(shown_->params.axis)},
-             {"isd", s.isd},
-             {"osd", s.osd},
-             {"filter", toString(s.filter)},
-             {"preintegrated", s.preintegrated},
              {"render_ms", shown_->renderMs},
              {"samples", shown_->samples},
              {"checksum", std::to_string(checksum(shown_->display->levels.front().rgb))}};
+    // isd, osd, filter, ert and the approximations, named as sidecars and sessions name them.
+    shown.update(nlohmann::json(samplingJson(s)));
   }
   const ProgressiveStatus status = renderer_->status();
   nlohmann::json levels = nlohmann::json::object();

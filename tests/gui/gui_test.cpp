@@ -377,6 +377,38 @@ TEST_F(Gui, ExportWritesTheShownHighImageAndASidecar) {
   EXPECT_EQ(sidecar["tf"]["points"].size(), end["state"]["transfer_function"]["points"].size());
 }
 
+// A session that turns adaptive sampling on for every level: the shown image says so and the
+// export (the shown image's bytes) records it in its sidecar, from which `render --params` renders
+// it again (ApproximationsCli checks those bytes; this phantom exists only in memory).
+TEST_F(Gui, AdaptiveSamplingFromASessionIsShownAndExportedWithItsSettings) {
+  const Json adaptive = {{"levels", 2}, {"ray_levels", 5}, {"tolerance", 0.05}};
+  const Json session = {{"format", "angioray-session"},
+                        {"version", 1},
+                        {"levels",
+                         {{"fast", {{"adaptive_sampling", adaptive}}},
+                          {"medium", {{"adaptive_sampling", adaptive}}},
+                          {"high", {{"adaptive_sampling", adaptive}}}}}};
+  std::ofstream(file("session.json")) << session.dump();
+  // Its settings row in the Rendering panel moves the export section: the layout with the session.
+  const GuiRun first = runScript(R"([{"wait_level": "high"}])", " --session " + file("session.json"));
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  const Json withSession = readJson(dir / "end.json");
+  const Json& layout = withSession["runtime"]["layout"];
+  const Rect path = rectOf(layout["export_path"]), button = rectOf(layout["export_button"]);
+  const std::string steps = R"([{"wait_level": "high"},
+    {"click": )" + point(path.midX(), path.midY()) +
+                            R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("view.png") +
+                            R"("}, {"key": "Enter"}, {"click": )" + point(button.midX(), button.midY()) +
+                            R"(}, {"wait_level": "high"}])";
+  const GuiRun run = runScript(steps, " --session " + file("session.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const Json end = readJson(dir / "end.json");
+  EXPECT_EQ(end["runtime"]["shown"]["adaptive_sampling"], adaptive);
+  ASSERT_TRUE(fs::exists(dir / "view.png")) << end["runtime"]["message"];
+  EXPECT_EQ(checksumOfRgb8(dir / "view.png"), end["runtime"]["shown"]["checksum"]);
+  EXPECT_EQ(readJson(dir / "view.png.json")["sampling"]["adaptive_sampling"], adaptive);
+}
+
 // "..." beside the export file opens the browser at the field's folder with its name typed in; a
 // new name typed there fills the field, and Export writes that file.
 TEST_F(Gui, TheExportFieldsBrowserChoosesWhereTheImageGoes) {
