@@ -62,6 +62,12 @@ struct Ray {
   long front = 0;            // the slice of the last update
   long first = 1, last = 0;  // the ray's samples (clipped)
   bool done = false;         // missed the volume, behind its last sample, or terminated
+
+  void moveFront(long slice, float density, float shade) {
+    front = slice;
+    frontDensity = density;
+    frontShade = shade;
+  }
 };
 
 class Band {
@@ -172,8 +178,10 @@ class Band {
   // shading factor is NaN ("not taken"), synthesis passes that on, and compositing takes the
   // gradient at level 0 only for the ends of segments that turn out visible.
   Point pointAt(int l, int x, int row, long k, AdaptiveSamplingStats& stats) const {
+    return pointAt(positionQ(l, x, row, k), stats);
+  }
+  Point pointAt(const glm::dvec3& q, AdaptiveSamplingStats& stats) const {
     ++stats.samples;
-    const glm::dvec3 q = positionQ(l, x, row, k);
     Point point{sampleDensity(s_.volume, q, s_.params.sampling.filter, s_.read), 1.f};
     if (s_.params.shading.enabled)
       point.shade = s_.table.rgba[tableIndex(point.density)].a > 0.f ? shadeAt(q) : kNotTaken;
@@ -190,10 +198,11 @@ class Band {
 
   // Fig. 5's SAMPLE and ORACLE.
   void sample(Level& level, int l, int p, int x, int row, long k, AdaptiveSamplingStats& stats) {
-    const Point point = pointAt(l, x, row, k, stats);
+    const glm::dvec3 q = positionQ(l, x, row, k);
+    const Point point = pointAt(q, stats);
     level.density[p] = point.density;
     level.shade[p] = point.shade;
-    level.distance[p] = float(s_.oracle.distanceAt(positionQ(l, x, row, k)) / s_.unit);
+    level.distance[p] = float(s_.oracle.distanceAt(q) / s_.unit);
   }
 
   // Biquadratic B-spline subdivision from level l + 1 (Fig. 4, 5): per axis 3/4 of the nearer
@@ -228,31 +237,24 @@ class Band {
   // the reference takes them (the seed's slices outside the volume read transparent; ours would
   // read the clamped faces and stretch them over a whole skip): entering, the samples first - 1
   // and first make the first segment; leaving, the segment ends at the last sample, taken.
-  void composite(const Level& level, int p, long k, AdaptiveSamplingStats& stats) {
+  void composite(const Level& level, int p, int x, int row, long k, AdaptiveSamplingStats& stats) {
     Ray& ray = rays_[p];
     const Point now{level.density[p], level.shade[p]};
-    const int x = p % level.width(), row = level.rowBegin + p / level.width();
     if (ray.front <= ray.first - 1 && k >= ray.first) {
       if (ray.front < ray.first - 1) {
         const Point before = pointAt(0, x, row, ray.first - 1, stats);
-        ray.frontDensity = before.density;
-        ray.frontShade = before.shade;
-        ray.front = ray.first - 1;
+        ray.moveFront(ray.first - 1, before.density, before.shade);
       }
       if (k > ray.first) {
         const Point first = pointAt(0, x, row, ray.first, stats);
         add(ray, first, x, row, ray.first, stats);
-        ray.frontDensity = first.density;
-        ray.frontShade = first.shade;
-        ray.front = ray.first;
+        ray.moveFront(ray.first, first.density, first.shade);
       }
     }
     const long to = std::min(k, ray.last);
     if (ray.front >= ray.first - 1 && to > ray.front)
       add(ray, to < k ? pointAt(0, x, row, to, stats) : now, x, row, to, stats);
-    ray.front = k;
-    ray.frontDensity = now.density;
-    ray.frontShade = now.shade;
+    ray.moveFront(k, now.density, now.shade);
     ray.done = k >= ray.last || ray.accumulated.opacity >= s_.params.sampling.ert;
     raysLeft_ -= ray.done;
   }
@@ -267,7 +269,7 @@ class Band {
     level.updated[p] = k;
     if (l == 0) {
       if (sliceLevel == s_.rayLevels || level.distance[p] < float(2L << sliceLevel))
-        composite(level, p, k, stats);
+        composite(level, p, x, row, k, stats);
       if (rays_[p].done) return -1;
     }
     return waitLevel(level.distance[p], l);
@@ -312,7 +314,7 @@ Scene makeScene(const Volume& volume, const TfTable& table, const PreintegratedT
                 const ViewGeometry& view) {
   Scene s{volume, table, segments, oracle, read, params, view};
   s.levels = params.sampling.adaptiveSampling->levels;
-  s.rayLevels = std::max(s.levels, params.sampling.adaptiveSampling->rayLevels);
+  s.rayLevels = params.sampling.adaptiveSampling->rayLevels;  // >= levels (samplingProblem)
   s.unit = std::max(params.sampling.isd, params.sampling.osd);
   s.stepQ = RaySamples(volume, view, view.centre).stepQ;
   s.viewDir = glm::vec3(view.viewDir);
