@@ -106,7 +106,7 @@ int runGui(const GuiOptions& options) {
   AppStart start = initialState(effective, dataset, session);
   {
     ProgressLine progress("preparing the view");
-    dataset.tiles = std::make_shared<const SliceTiles>(
+    dataset.tiles.tiles = std::make_shared<SliceTiles>(
         buildSliceTiles(dataset.volume, start.document.view.axis, std::ref(progress)));
   }
   RenderThreads threads;  // the renderer's arenas and priorities, once for the program

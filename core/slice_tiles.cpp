@@ -1,8 +1,10 @@
 #include "core/slice_tiles.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <mutex>
+#include <numeric>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -181,33 +183,97 @@ void summariseSlice(const Volume& volume, SliceTiles& tiles, int slice, SliceScr
   pack(tiles, slice, scratch.wideTiles, tiles.wide);
 }
 
+// Summarises `slices` (indices along the axis) into the allocated ranges of `tiles`.
 template <class Summary>
-void summariseTiles(const Volume& volume, SliceTiles& tiles,
-                    const std::function<void(double)>& progress) {
-  allocate(tiles, tiles.cells);
-  allocate(tiles, tiles.wide);
+void summariseSlices(const Volume& volume, SliceTiles& tiles, const std::vector<int>& slices,
+                     const std::function<void(double)>& progress) {
   std::mutex reporting;  // progress is called one at a time, with growing fractions
-  int slicesDone = 0;
-  tbb::parallel_for(tbb::blocked_range<int>(0, tiles.slices), [&](const tbb::blocked_range<int>& range) {
-    SliceScratch<Summary> scratch;
-    for (int slice = range.begin(); slice != range.end(); ++slice)
-      summariseSlice(volume, tiles, slice, scratch);
-    if (!progress) return;
-    const std::lock_guard<std::mutex> lock(reporting);
-    slicesDone += int(range.size());
-    progress(double(slicesDone) / tiles.slices);
-  });
+  std::size_t slicesDone = 0;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slices.size()),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      SliceScratch<Summary> scratch;
+                      for (std::size_t n = range.begin(); n != range.end(); ++n)
+                        summariseSlice(volume, tiles, slices[n], scratch);
+                      if (!progress) return;
+                      const std::lock_guard<std::mutex> lock(reporting);
+                      slicesDone += range.size();
+                      progress(double(slicesDone) / double(slices.size()));
+                    });
 }
 
+void summariseSlices(const Volume& volume, SliceTiles& tiles, const std::vector<int>& slices,
+                     const std::function<void(double)>& progress = {}) {
+  if (tiles.labelled) summariseSlices<LabelledSummary>(volume, tiles, slices, progress);
+  else summariseSlices<PlainSummary>(volume, tiles, slices, progress);
+}
+
+// The label parts of ranges whose slices hold no label: no labelled voxel (an empty range in an
+// empty group, as packSlice writes it) and only bit 0 (every tile has voxels).
+void fillWithoutLabels(TileRanges& ranges) {
+  const std::size_t count = ranges.unlabelled.minOffset.size();
+  ranges.labelled.minOffset.assign(count, PackedRanges::kEmptyMin);
+  ranges.labelled.maxOffset.assign(count, PackedRanges::kEmptyMax);
+  ranges.labelled.scale.assign(ranges.unlabelled.scale.size(), PackedRanges::Scale{});
+  ranges.labelBits.assign(count, std::uint16_t(1));
+}
+
+void dropLabels(TileRanges& ranges) {
+  ranges.labelled = {};
+  ranges.labelBits = {};
+}
+
+// Whether some voxel carries a label; stops at the first one found (a labelled volume has them
+// in most slices), in blocks so that the threads see each other's find.
 bool anyLabel(const Volume& volume) {
+  constexpr std::size_t kBlock = std::size_t(1) << 16;
+  std::atomic<bool> found{false};
+  const std::size_t blocks = (volume.voxels.size() + kBlock - 1) / kBlock;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, blocks), [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t block = range.begin(); block != range.end() && !found.load(); ++block) {
+          const std::size_t end = std::min((block + 1) * kBlock, volume.voxels.size());
+          Voxel bits = 0;
+          for (std::size_t n = block * kBlock; n != end; ++n) bits |= volume.voxels[n];
+          if (labelOf(bits) != 0) found.store(true);
+        }
+      });
+  return found.load();
+}
+
+// Whether a voxel of `slices` carries a label.
+bool anyLabelIn(const Volume& volume, const SliceTiles& tiles, const std::vector<int>& slices) {
   return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, volume.voxels.size()), false,
+      tbb::blocked_range<std::size_t>(0, slices.size()), false,
       [&](const tbb::blocked_range<std::size_t>& range, bool found) {
-        Voxel bits = 0;
-        for (std::size_t n = range.begin(); n != range.end(); ++n) bits |= volume.voxels[n];
-        return found || labelOf(bits) != 0;
+        for (std::size_t n = range.begin(); n != range.end() && !found; ++n) {
+          const SliceLayout slice = sliceLayout(volume, tiles, slices[n]);
+          Voxel bits = 0;
+          for (int c = 0; c < slice.nc; ++c)
+            for (int b = 0; b < slice.nb; ++b)
+              bits |= slice.first[c * slice.strideC + b * slice.strideB];
+          found = labelOf(bits) != 0;
+        }
+        return found;
       },
       [](bool a, bool b) { return a || b; });
+}
+
+// Whether the tiles of a slice other than `slices` (ascending) know of a label.
+bool anyLabelOutside(const SliceTiles& tiles, const std::vector<int>& slices) {
+  if (!tiles.labelled) return false;
+  const std::size_t perSlice = std::size_t(tiles.tilesPerSlice());
+  auto stale = slices.begin();
+  for (int slice = 0; slice < tiles.slices; ++slice) {
+    if (stale != slices.end() && *stale == slice) {
+      ++stale;
+      continue;
+    }
+    const auto first = tiles.cells.labelBits.begin() + std::ptrdiff_t(slice * perSlice);
+    if (std::any_of(first, first + std::ptrdiff_t(perSlice),
+                    [](std::uint16_t bits) { return bits > 1; }))
+      return true;
+  }
+  return false;
 }
 
 std::size_t bytesOf(const TileRanges& r) {
@@ -227,9 +293,46 @@ SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
   tiles.tilesB = (volume.dims[tiles.axisB] + kTileSize - 1) / kTileSize;
   tiles.tilesC = (volume.dims[tiles.axisC] + kTileSize - 1) / kTileSize;
   tiles.labelled = anyLabel(volume);
-  if (tiles.labelled) summariseTiles<LabelledSummary>(volume, tiles, progress);
-  else summariseTiles<PlainSummary>(volume, tiles, progress);
+  allocate(tiles, tiles.cells);
+  allocate(tiles, tiles.wide);
+  std::vector<int> slices(std::size_t(tiles.slices));
+  std::iota(slices.begin(), slices.end(), 0);
+  summariseSlices(volume, tiles, slices, progress);
   return tiles;
+}
+
+void refreshSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vector<int>& slices) {
+  if (slices.empty()) return;
+  // The voxels outside `slices` are as the tiles know them: no need to read them.
+  const bool labelled = anyLabelOutside(tiles, slices) || anyLabelIn(volume, tiles, slices);
+  // A change between "no label anywhere" and "some label": the slices not refreshed hold no
+  // label either way, so their density ranges stay and their label parts are the empty ones.
+  if (labelled != tiles.labelled) {
+    tiles.labelled = labelled;
+    for (TileRanges* ranges : {&tiles.cells, &tiles.wide}) {
+      if (labelled) fillWithoutLabels(*ranges);
+      else dropLabels(*ranges);
+    }
+  }
+  summariseSlices(volume, tiles, slices);
+}
+
+std::vector<int> slicesHolding(const Volume& volume, Axis axis, const std::vector<std::size_t>& voxels) {
+  const glm::ivec3 dims = volume.dims;
+  const std::size_t stride[3] = {1, std::size_t(dims.x), std::size_t(dims.x) * dims.y};
+  const std::size_t along = stride[int(axis)], count = std::size_t(dims[int(axis)]);
+  std::vector<int> slices;
+  if (axis == Axis::k) {  // the slices of ascending voxels ascend: one search per slice held
+    for (auto voxel = voxels.begin(); voxel != voxels.end();
+         voxel = std::lower_bound(voxel, voxels.end(), (std::size_t(slices.back()) + 1) * along))
+      slices.push_back(int(*voxel / along));
+    return slices;
+  }
+  std::vector<char> holds(count, 0);
+  for (const std::size_t voxel : voxels) holds[voxel / along % count] = 1;
+  for (std::size_t slice = 0; slice < count; ++slice)
+    if (holds[slice]) slices.push_back(int(slice));
+  return slices;
 }
 
 std::size_t SliceTiles::memoryBytes() const { return bytesOf(cells) + bytesOf(wide); }

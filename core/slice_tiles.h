@@ -122,6 +122,15 @@ struct SliceTiles {
 SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
                            const std::function<void(double)>& progress = {});
 
+// Summarises `slices` of `tiles` again from `volume`, whose voxels in no other slice changed since
+// the tiles were built (e.g. a label change in those slices): the tiles are then equal to
+// buildSliceTiles(volume, tiles.axis), in a time proportional to the slices refreshed.
+void refreshSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vector<int>& slices);
+
+// The slices along `axis` that hold any of `voxels` (ascending indices into Volume::voxels),
+// ascending.
+std::vector<int> slicesHolding(const Volume& volume, Axis axis, const std::vector<std::size_t>& voxels);
+
 // The cell base along one axis of n voxels: min(floor(clamp(q)), n - 2), as cellAt computes it.
 int cellBase(double q, int n);
 

@@ -48,14 +48,13 @@ App::App(LoadedDataset dataset, AppStart start, const GlApi& gl, RenderThreads& 
 }
 
 // The renderer of the shown dataset: each frame's display image made on its worker, the UI woken
-// when one is published. The slice tiles built with the load go to the first renderer only: a
-// later one follows a label change, which changes what the tiles hold.
+// when one is published, with the slice tiles made ahead (by the load, or kept over a label change).
 std::unique_ptr<ProgressiveRenderer> App::makeRenderer() {
   ProgressiveCallbacks callbacks;
   callbacks.makeDisplay = makeDisplayImage;
   callbacks.afterPublish = wakeUi_;
   return std::make_unique<ProgressiveRenderer>(data_.volume, threads_, std::move(callbacks),
-                                               std::exchange(data_.tiles, nullptr));
+                                               std::exchange(data_.tiles, {}));
 }
 
 App::~App() {

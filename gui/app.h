@@ -58,9 +58,10 @@ struct LoadedDataset {
   std::string description;  // e.g. "MetaImage float32"
   StudyInfo study;          // the patient and study of a DICOM series
   // The volume's slice tiles for the axis the view starts with, built as part of the load so that
-  // the first frame is as interruptible as any (null: the renderer builds them itself). Handed to
-  // the first renderer of the dataset.
-  std::shared_ptr<const SliceTiles> tiles;
+  // the first frame is as interruptible as any (none: the renderer builds them itself); after a
+  // label change, those of the renderer before it with the slices it touched stale. Handed to the
+  // next renderer.
+  TilesAhead tiles;
 };
 
 // A volume read from `name` (a file or a DICOM folder) as the app holds it.
@@ -316,6 +317,10 @@ class App {
   std::deque<std::pair<std::uint64_t, Clock::time_point>> requestTimes_;
   // Request -> its first image on screen: the start-up request (slice tiles built first) apart.
   double startupImageMs_ = -1, lastFirstImageMs_ = -1, lastUploadMs_ = 0, maxUploadMs_ = 0;
+  // The newest renderer's first image: from its replacing the one before (a label change: from
+  // before the labels are written; its slice tiles are refreshed in the first frame).
+  Clock::time_point rendererSince_ = Clock::now();
+  double rendererFirstImageMs_ = -1;
   FrameTimes::Stats firstImage_;
   LatencyTrace latency_;          // input -> image on screen, stage by stage
   Clock::time_point frameStart_;  // this UI frame's: the platform applied its input just before

@@ -33,9 +33,10 @@ LoadedDataset loadInBackground(const std::string& path, Axis axis, JobControl& c
   read.progress = [&report](double fraction) { report(kReadShare * fraction); };
   read.warn = printWarning;
   LoadedDataset dataset = loadedDataset(readVolume(path, read), path);
-  dataset.tiles = std::make_shared<const SliceTiles>(
-      buildSliceTiles(dataset.volume, axis,
-                      [&report](double fraction) { report(kReadShare + (1 - kReadShare) * fraction); }));
+  dataset.tiles.tiles =
+      std::make_shared<SliceTiles>(buildSliceTiles(dataset.volume, axis, [&report](double fraction) {
+        report(kReadShare + (1 - kReadShare) * fraction);
+      }));
   return dataset;
 }
 
@@ -119,6 +120,7 @@ void App::replaceDataset(LoadedDataset dataset) {
   if (histogramJob_.valid()) histogramJob_.wait();
   histogramJob_ = {};
   resetTracer();  // it reads the old volume
+  rendererSince_ = Clock::now();
   renderer_.reset();
   shown_.reset();
   incoming_.reset();

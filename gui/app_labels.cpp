@@ -183,13 +183,21 @@ void App::pollLabelJobs() {
 }
 
 void App::changeLabels(const LabelChange& change, bool undo) {
+  rendererSince_ = Clock::now();
   seriesJob_.stop();
   cprView_.job.stop();
   vessels_.job.stop();  // the tracer reads the label bits
   if (export_.job.valid()) export_.job.wait();
-  renderer_.reset();  // joins its worker: nothing reads the voxels now
+  // Joins its worker (nothing reads the voxels now); the next renderer refreshes the slices of
+  // its tiles the change touched, not the whole volume's (a grown region: a few of them).
+  TilesAhead tiles = renderer_->stopAndReleaseTiles();
+  renderer_.reset();
   lastRequest_.reset();
+  requestTimes_.clear();  // the old renderer's ids: the new one counts from 1 again
+  latency_.restart();
   apply(change, undo, data_.volume, labels_.voxels);
+  if (tiles.tiles) tiles.markStale(slicesHolding(data_.volume, tiles.tiles->axis, change.voxels));
+  data_.tiles = std::move(tiles);
   labels_.dirty = true;
   std::uint16_t present = 0;  // the labels the change gives
   for (const std::uint8_t label : undo ? change.before : change.after)

@@ -55,8 +55,12 @@ void App::pollRenderer() {
                                   [&](const auto& entry) { return entry.first == shown_->request; });
   if (asked != requestTimes_.end()) {
     lastFirstImageMs_ = Ms(Clock::now() - asked->second).count();
-    if (asked->first == 1) startupImageMs_ = lastFirstImageMs_;
-    else firstImage_.add(lastFirstImageMs_);
+    if (asked->first == 1) {
+      if (startupImageMs_ < 0) startupImageMs_ = lastFirstImageMs_;
+      rendererFirstImageMs_ = Ms(Clock::now() - rendererSince_).count();
+    } else {
+      firstImage_.add(lastFirstImageMs_);
+    }
     requestTimes_.erase(requestTimes_.begin(), asked + 1);
   }
 }

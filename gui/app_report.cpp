@@ -73,6 +73,7 @@ nlohmann::json App::report() const {
         {"levels", levels},
         {"last_interrupt_ms", status.lastInterruptMs},
         {"startup_to_first_image_ms", startupImageMs_},
+        {"renderer_first_image_ms", rendererFirstImageMs_},
         {"input_to_first_image_ms",
          {{"last", lastFirstImageMs_},
           {"count", firstImage_.frames},

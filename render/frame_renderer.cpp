@@ -1,6 +1,9 @@
 #include "render/frame_renderer.h"
 
+#include <algorithm>
+#include <iterator>
 #include <stdexcept>
+#include <utility>
 
 #include "core/adaptive_integration.h"
 #include "core/adaptive_sampling.h"
@@ -18,10 +21,23 @@ bool fits(const SliceTiles& tiles, const Volume& volume) {
 
 }  // namespace
 
-FrameRenderer::FrameRenderer(const Volume& volume, std::shared_ptr<const SliceTiles> tiles)
-    : volume_(volume), tiles_(std::move(tiles)) {
+void TilesAhead::markStale(const std::vector<int>& slices) {
+  std::vector<int> merged;
+  std::set_union(staleSlices.begin(), staleSlices.end(), slices.begin(), slices.end(),
+                 std::back_inserter(merged));
+  staleSlices = std::move(merged);
+}
+
+FrameRenderer::FrameRenderer(const Volume& volume, TilesAhead ahead)
+    : volume_(volume), tiles_(std::move(ahead.tiles)), staleSlices_(std::move(ahead.staleSlices)) {
   if (tiles_ && !fits(*tiles_, volume_))
     throw std::invalid_argument("FrameRenderer: the slice tiles given are of another volume");
+}
+
+TilesAhead FrameRenderer::releaseTiles() {
+  classification_.reset();
+  classifiedScene_.reset();
+  return {std::exchange(tiles_, nullptr), std::exchange(staleSlices_, {})};
 }
 
 void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
@@ -30,7 +46,15 @@ void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
   if (!tiles_ || tiles_->axis != axis) {
     classification_.reset();
     tiles_.reset();  // free the old tiles before building the new ones
-    tiles_ = std::make_shared<const SliceTiles>(buildSliceTiles(volume_, axis));
+    staleSlices_.clear();
+    tiles_ = std::make_shared<SliceTiles>(buildSliceTiles(volume_, axis));
+  }
+  if (!staleSlices_.empty()) {
+    classification_.reset();
+    // Copied if someone else still reads them (tiles() handed them out).
+    if (tiles_.use_count() > 1) tiles_ = std::make_shared<SliceTiles>(*tiles_);
+    refreshSliceTiles(*tiles_, volume_, staleSlices_);
+    staleSlices_.clear();
   }
   if (classification_ && classifiedScene_ == scene && (!mip || classification_->hasMaxima())) return;
   // The classification needs the region TFs only, not the regions: any non-null regions stand

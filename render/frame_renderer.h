@@ -30,12 +30,23 @@ struct RenderControl {
   std::function<void(double)> progress;       // the reference raycaster's progress in [0, 1]
 };
 
+// Slice tiles for some axis made before a frame needs them: by a load, for the axis the view
+// starts with, or kept from the renderer before a label change, which makes the slices it touched
+// stale: they are summarised again (refreshSliceTiles) before the tiles' first use.
+struct TilesAhead {
+  std::shared_ptr<SliceTiles> tiles;
+  std::vector<int> staleSlices;  // ascending
+
+  // Adds `slices` (ascending) to the stale ones.
+  void markStale(const std::vector<int>& slices);
+};
+
 class FrameRenderer {
  public:
-  // `tiles`, if given, are the volume's slice tiles for some axis, built ahead (a load builds them
-  // for the axis the view starts with, so the first frame need not); renders about another axis
-  // build their own. Throws std::invalid_argument when they do not fit the volume.
-  explicit FrameRenderer(const Volume& volume, std::shared_ptr<const SliceTiles> tiles = {});
+  // `ahead`: the volume's slice tiles for some axis, so that the first frame need not build them
+  // (a refresh of their stale slices is all it does); renders about another axis build their own.
+  // Throws std::invalid_argument when they do not fit the volume.
+  explicit FrameRenderer(const Volume& volume, TilesAhead ahead = {});
 
   // The image of `scene` seen with `params` (view, sampling, shading, compositing): the scene's
   // recipe's raycaster with its TFs and regions, then its finish step (the hybrid) unless the
@@ -57,7 +68,9 @@ class FrameRenderer {
   // Memory of the slice tiles (packed ranges, core/slice_tiles.h) and their classification, MiB.
   double structureMiB() const;
   // The slice tiles of the last prepared axis (or those given to the constructor); null: none yet.
-  const std::shared_ptr<const SliceTiles>& tiles() const { return tiles_; }
+  std::shared_ptr<const SliceTiles> tiles() const { return tiles_; }
+  // Gives up the slice tiles with the slices still stale in them (the renderer has none after).
+  TilesAhead releaseTiles();
 
   // Which of the fast raycaster's techniques run (the bench switches them; the image is the same).
   // Its cancel, recycle and rowsDone come from each render's RenderControl.
@@ -65,7 +78,8 @@ class FrameRenderer {
 
  private:
   const Volume& volume_;
-  std::shared_ptr<const SliceTiles> tiles_;
+  std::shared_ptr<SliceTiles> tiles_;
+  std::vector<int> staleSlices_;  // of tiles_, to refresh before their first use
   std::shared_ptr<const PreparedScene> classifiedScene_;
   std::optional<TileClassification> classification_;
   RayRegions regions_;  // the view's, buffers reused from render to render

@@ -39,12 +39,19 @@ double ProgressiveStatus::estimatedProgress() const {
 }
 
 ProgressiveRenderer::ProgressiveRenderer(const Volume& volume, RenderThreads& threads,
-                                         ProgressiveCallbacks callbacks,
-                                         std::shared_ptr<const SliceTiles> tiles)
+                                         ProgressiveCallbacks callbacks, TilesAhead tiles)
     : volume_(volume), threads_(threads), callbacks_(std::move(callbacks)),
       frames_(volume, std::move(tiles)), worker_([this] { workerLoop(); }) {}
 
-ProgressiveRenderer::~ProgressiveRenderer() {
+ProgressiveRenderer::~ProgressiveRenderer() { stopWorker(); }
+
+TilesAhead ProgressiveRenderer::stopAndReleaseTiles() {
+  stopWorker();
+  return frames_.releaseTiles();
+}
+
+void ProgressiveRenderer::stopWorker() {
+  if (!worker_.joinable()) return;
   {
     std::lock_guard lock(mutex_);
     quit_ = true;

@@ -124,8 +124,12 @@ class ProgressiveRenderer {
   // `tiles`: the volume's slice tiles built ahead (FrameRenderer), so that the first frame need
   // not build them: that build cannot be interrupted (0.4-0.7 s at 512x512x1200).
   ProgressiveRenderer(const Volume& volume, RenderThreads& threads, ProgressiveCallbacks callbacks = {},
-                      std::shared_ptr<const SliceTiles> tiles = {});
+                      TilesAhead tiles = {});
   ~ProgressiveRenderer();  // interrupts and joins the worker
+
+  // Interrupts and joins the worker for good (no request after it) and gives up the slice tiles
+  // it built, e.g. for the next renderer after a label change to refresh the slices it touched.
+  TilesAhead stopAndReleaseTiles();
   ProgressiveRenderer(const ProgressiveRenderer&) = delete;
   ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
 
@@ -153,6 +157,7 @@ class ProgressiveRenderer {
     RequestTimeline timeline;  // up to pickedUp
   };
 
+  void stopWorker();
   void workerLoop();
   void runJob(const Job& job);
   void prepare(const Job& job);

@@ -1,5 +1,6 @@
 // The Labels section end to end in the headless app: labels read at start and counted, automatic
-// removal hides bone and table, undo gives the labels back, a saved .seg.nrrd reads back the same.
+// removal hides bone and table, undo gives the labels back, a saved .seg.nrrd reads back the same,
+// and the images after a change are those of a fresh start with its labels.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -121,6 +122,42 @@ TEST_F(GuiLabels, AnExportWithUnsavedLabelsWritesThemBesideItAndItsSidecarRender
       runAngioray("render --params " + file("view.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_EQ(test_support::fileContents(file("view.png")), test_support::fileContents(file("again.png")));
+}
+
+// A label change keeps the renderer's slice tiles and refreshes the slices it touched
+// (render/frame_renderer.h TilesAhead): the images shown after it are those of a fresh start with
+// the same labels. Removal hides bone and table; its undo gives them back, which tiles that missed
+// the undo would skip as hidden.
+TEST_F(GuiLabels, ImagesAfterARemovalAndItsUndoAreThoseOfAFreshStart) {
+  const Json layout = openLayout("");
+  const Json fresh = readJson("open.json")["runtime"]["shown"];
+  ASSERT_EQ(fresh["level"], "high");
+  const std::string removal = "[" + openClick + R"(, {"wait_level": "high"}, {"click": )" +
+                              middleOf(layout["labels_remove_bone"]) +
+                              R"(}, {"wait_ms": 300}, {"wait_level": "high"}, {"state": ")" +
+                              file("removed.json") + "\"}";
+  const auto removing = run(removal + "]");
+  ASSERT_EQ(removing.exitCode, 0) << removing.output;
+  const Json removed = readJson("removed.json")["runtime"];  // the label list grew: a new layout
+  const Json& after = removed["layout"];
+  const auto changes = run(removal + R"(, {"click": )" + middleOf(after["labels_path"]) +
+                           R"(}, {"key": "Ctrl+A"}, {"text": ")" + file("removed.seg.nrrd") +
+                           R"("}, {"key": "Enter"}, {"click": )" + middleOf(after["labels_save"]) +
+                           R"(}, {"wait_ms": 100}, {"click": )" + middleOf(after["labels_undo"]) +
+                           R"(}, {"wait_level": "high"}, {"state": ")" + file("undone.json") + "\"}]");
+  ASSERT_EQ(changes.exitCode, 0) << changes.output;
+  const Json undone = readJson("undone.json")["runtime"];
+  ASSERT_EQ(undone["labels"]["redo"], 1) << undone["labels"];
+  ASSERT_EQ(removed["shown"]["level"], "high");
+  ASSERT_EQ(undone["shown"]["level"], "high");
+  EXPECT_NE(removed["shown"]["checksum"], fresh["checksum"]);  // the bone went
+  EXPECT_EQ(undone["shown"]["checksum"], fresh["checksum"]);
+
+  ASSERT_TRUE(std::filesystem::exists(file("removed.seg.nrrd"))) << undone["message"];
+  openLayout(" --labels " + file("removed.seg.nrrd"));
+  const Json startedRemoved = readJson("open.json")["runtime"]["shown"];
+  ASSERT_EQ(startedRemoved["level"], "high");
+  EXPECT_EQ(startedRemoved["checksum"], removed["shown"]["checksum"]);
 }
 
 }  // namespace

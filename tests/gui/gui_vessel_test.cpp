@@ -306,7 +306,12 @@ TEST_F(GuiVessel, CprPaneZoomsAboutThePointerSetsTheWindowAndPutsTheCursorWithIt
   const Json before = readJson("before.json"), zoomed = readJson("zoomed.json");
   const Json &hoveredBefore = before["runtime"]["vessel_glyph"]["cpr"]["hovered"],
              &hoveredZoomed = zoomed["runtime"]["vessel_glyph"]["cpr"]["hovered"];
-  ASSERT_TRUE(hoveredBefore.is_object() && hoveredZoomed.is_object()) << hoveredZoomed;
+  // (On failure, everything that decides the hover: the pane's runtime, zoom and layout.)
+  ASSERT_TRUE(hoveredBefore.is_object() && hoveredZoomed.is_object())
+      << "before: " << before["runtime"]["vessel_glyph"]["cpr"]
+      << "\nzoomed: " << zoomed["runtime"]["vessel_glyph"]["cpr"] << "\n"
+      << zoomed["state"]["cpr"] << "\n"
+      << zoomed["runtime"]["layout"] << "\npointer at " << at;
   EXPECT_NEAR(zoomed["state"]["cpr"]["zoom"].get<double>(), 1.2 * 1.2 * 1.2, 1e-9);
   const Box zoomedImage(zoomed["runtime"]["layout"]["cpr_image"]);
   EXPECT_NEAR((zoomedImage.x1 - zoomedImage.x0) / (image.x1 - image.x0), 1.728, 0.01);

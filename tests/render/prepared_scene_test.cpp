@@ -10,6 +10,7 @@
 #include "phantom/phantom.h"
 #include "render/frame_renderer.h"
 #include "render/prepared_scene.h"
+#include "core/slice_tiles.h"
 #include "tests/support/phantom_in_volume_frame.h"
 
 namespace angio {
@@ -92,8 +93,8 @@ TEST(FrameRenderer, OneRendererAcrossScenesAndAxesGivesEachRecipesImage) {
 // the image it gives with its own, and give way to new ones for another axis.
 TEST(FrameRenderer, TilesBuiltAheadAreUsedForTheirAxisOnly) {
   const PhantomInVolumeFrame& data = testData();
-  const auto ahead = std::make_shared<const SliceTiles>(buildSliceTiles(data.volume, Axis::k));
-  FrameRenderer frames(data.volume, ahead);
+  const auto ahead = std::make_shared<SliceTiles>(buildSliceTiles(data.volume, Axis::k));
+  FrameRenderer frames(data.volume, TilesAhead{ahead, {}});
   EXPECT_EQ(frames.tiles(), ahead);
   RenderRecipe recipe = vesselGlyphRecipe();
   const auto scene = PreparedScene::prepare(data.volume, data.centerlines, recipe);
@@ -109,8 +110,49 @@ TEST(FrameRenderer, TilesBuiltAheadAreUsedForTheirAxisOnly) {
 
 TEST(FrameRenderer, TilesOfAnotherVolumeAreRefused) {
   const Volume other = generatePhantom(PhantomOptions{{32, 32, 40}}).volume;
-  const auto tiles = std::make_shared<const SliceTiles>(buildSliceTiles(other, Axis::k));
-  EXPECT_THROW(FrameRenderer(testData().volume, tiles), std::invalid_argument);
+  const auto tiles = std::make_shared<SliceTiles>(buildSliceTiles(other, Axis::k));
+  EXPECT_THROW(FrameRenderer(testData().volume, TilesAhead{tiles, {}}), std::invalid_argument);
+}
+
+// After a label change the next renderer takes the tiles of the one before with the slices the
+// change touched marked stale: its image is the one of tiles built from scratch. The change gives
+// back voxels of a hidden label, which stale tiles would skip as hidden.
+TEST(FrameRenderer, TilesKeptOverALabelChangeRefreshTheSlicesItTouched) {
+  const PhantomInVolumeFrame& data = testData();
+  Volume volume = data.volume;
+  std::vector<std::size_t> box;
+  for (int k = 40; k < 90; ++k)
+    for (int j = 0; j < volume.dims.y; ++j)
+      for (int i = 0; i < volume.dims.x; ++i) box.push_back(volume.indexOf(i, j, k));
+  for (const std::size_t n : box) volume.voxels[n] = Voxel(volume.voxels[n] | (1 << 12));
+  RenderRecipe recipe;
+  recipe.tf = loadPresetOrFile("cta-vessels-bone");
+  recipe.tf.labels = {LabelStyle{1, "removed", LabelMode::hidden}};
+  recipe.params.angleDeg = 30;
+  const Image withLabel = renderRecipe(volume, data.centerlines, recipe);
+
+  FrameRenderer before(volume);
+  before.render(PreparedScene::prepare(volume, data.centerlines, recipe));
+  TilesAhead tiles = before.releaseTiles();
+  ASSERT_NE(tiles.tiles, nullptr);
+  EXPECT_EQ(before.tiles(), nullptr);
+  for (const std::size_t n : box) volume.voxels[n] = Voxel(densityOf(volume.voxels[n]));
+  tiles.markStale(slicesHolding(volume, Axis::k, box));
+  ASSERT_EQ(tiles.staleSlices.size(), 50u);
+
+  const SliceTiles* kept = tiles.tiles.get();
+  FrameRenderer after(volume, std::move(tiles));
+  const Image image = after.render(PreparedScene::prepare(volume, data.centerlines, recipe));
+  EXPECT_EQ(after.tiles().get(), kept);  // refreshed in place, not built again
+  EXPECT_NE(image.pixels, withLabel.pixels);
+  EXPECT_EQ(image.pixels, renderRecipe(volume, data.centerlines, recipe).pixels);
+}
+
+TEST(TilesAhead, StaleSlicesMergeAscendingWithoutRepeats) {
+  TilesAhead tiles;
+  tiles.markStale({2, 5, 9});
+  tiles.markStale({1, 5, 12});
+  EXPECT_EQ(tiles.staleSlices, (std::vector<int>{1, 2, 5, 9, 12}));
 }
 
 // The fast raycaster gives the reference's image (core/fast_raycaster.h), with regions too.
