@@ -66,6 +66,23 @@ class GuiPanels : public ::testing::Test {
     return frame(draw, at, false);
   }
 
+  // Ctrl+click at `at` (a slider takes typed text then, all of it selected) and types `text`;
+  // returns the last edit `draw` returned.
+  template <class Draw>
+  auto typeInto(Draw draw, ImVec2 at, const std::string& text) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = true;
+    decltype(draw()) edit = frame(draw, at);
+    frame(draw, at, true);
+    frame(draw, at, false);
+    io.KeyCtrl = false;
+    for (const char c : text) {
+      io.AddInputCharacter(static_cast<unsigned char>(c));
+      if (auto typed = frame(draw, at)) edit = typed;
+    }
+    return edit;
+  }
+
   // Where the next widget would go after `draw`: what sits below a section does not move while
   // this stays the same.
   template <class Draw>
@@ -173,6 +190,22 @@ TEST_F(GuiPanels, TheMipCheckboxSwitchesToMipKeepingTheWindow) {
   EXPECT_EQ(edit->mode, Compositing::mip);
   EXPECT_DOUBLE_EQ(edit->mipWindow, document.tf.mipWindow);
   EXPECT_EQ(edit->shading, document.shading);
+}
+
+// A value typed into a slider (Ctrl+click) stays within the slider's range: a MIP window of 0 or
+// a level far beyond the density scale never reaches the document (rows 1 and 2 in MIP mode).
+TEST_F(GuiPanels, ValuesTypedIntoSlidersAreClampedToTheirRange) {
+  Document document;
+  document.mode = Compositing::mip;
+  const auto draw = [&] { return drawRenderingPanel(document); };
+  const float x = ImGui::GetStyle().WindowPadding.x + 100;
+  const std::optional<RenderingEdit> window = typeInto(draw, ImVec2(x, rowCentreY(1)), "0");
+  ASSERT_TRUE(window);
+  EXPECT_DOUBLE_EQ(window->mipWindow, 1);
+  const std::optional<RenderingEdit> level = typeInto(draw, ImVec2(x, rowCentreY(2)), "99999");
+  ASSERT_TRUE(level);
+  EXPECT_DOUBLE_EQ(level->mipLevel, 3071);
+  EXPECT_DOUBLE_EQ(level->mipWindow, document.tf.mipWindow);
 }
 
 // Row 2 (under MIP and shading): pre-integrated classification, for every level at once.
