@@ -1,7 +1,6 @@
 #include "core/slice_tiles.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <numeric>
@@ -137,11 +136,17 @@ struct SliceLayout {
   int nb = 0, nc = 0;
 };
 
+// The step in Volume::voxels between neighbours along `axis` (0 = i, 1 = j, 2 = k).
+std::size_t strideAlong(const Volume& volume, int axis) {
+  return axis == 0   ? 1
+         : axis == 1 ? std::size_t(volume.dims.x)
+                     : std::size_t(volume.dims.x) * volume.dims.y;
+}
+
 SliceLayout sliceLayout(const Volume& volume, const SliceTiles& tiles, int slice) {
-  const glm::ivec3 dims = volume.dims;
-  const std::size_t stride[3] = {1, std::size_t(dims.x), std::size_t(dims.x) * dims.y};
-  return {volume.voxels.data() + slice * stride[int(tiles.axis)], stride[tiles.axisB],
-          stride[tiles.axisC], dims[tiles.axisB], dims[tiles.axisC]};
+  return {volume.voxels.data() + slice * strideAlong(volume, int(tiles.axis)),
+          strideAlong(volume, tiles.axisB), strideAlong(volume, tiles.axisC), volume.dims[tiles.axisB],
+          volume.dims[tiles.axisC]};
 }
 
 // Adds line c's voxels to the column summaries (contiguous when rotating about k: vectorised).
@@ -222,22 +227,15 @@ void dropLabels(TileRanges& ranges) {
   ranges.labelBits = {};
 }
 
-// Whether some voxel carries a label; stops at the first one found (a labelled volume has them
-// in most slices), in blocks so that the threads see each other's find.
 bool anyLabel(const Volume& volume) {
-  constexpr std::size_t kBlock = std::size_t(1) << 16;
-  std::atomic<bool> found{false};
-  const std::size_t blocks = (volume.voxels.size() + kBlock - 1) / kBlock;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, blocks), [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t block = range.begin(); block != range.end() && !found.load(); ++block) {
-          const std::size_t end = std::min((block + 1) * kBlock, volume.voxels.size());
-          Voxel bits = 0;
-          for (std::size_t n = block * kBlock; n != end; ++n) bits |= volume.voxels[n];
-          if (labelOf(bits) != 0) found.store(true);
-        }
-      });
-  return found.load();
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, volume.voxels.size()), false,
+      [&](const tbb::blocked_range<std::size_t>& range, bool found) {
+        Voxel bits = 0;
+        for (std::size_t n = range.begin(); n != range.end(); ++n) bits |= volume.voxels[n];
+        return found || labelOf(bits) != 0;
+      },
+      [](bool a, bool b) { return a || b; });
 }
 
 // Whether a voxel of `slices` carries a label.
@@ -318,9 +316,7 @@ void refreshSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vecto
 }
 
 std::vector<int> slicesHolding(const Volume& volume, Axis axis, const std::vector<std::size_t>& voxels) {
-  const glm::ivec3 dims = volume.dims;
-  const std::size_t stride[3] = {1, std::size_t(dims.x), std::size_t(dims.x) * dims.y};
-  const std::size_t along = stride[int(axis)], count = std::size_t(dims[int(axis)]);
+  const std::size_t along = strideAlong(volume, int(axis)), count = std::size_t(volume.dims[int(axis)]);
   std::vector<int> slices;
   if (axis == Axis::k) {  // the slices of ascending voxels ascend: one search per slice held
     for (auto voxel = voxels.begin(); voxel != voxels.end();

@@ -150,7 +150,8 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
     throw InputError(file,
                      "names no voxel data (ElementDataFile is missing or empty; LOCAL or a file name)");
   // MetaIO reads the name as a C string: a control byte (a NUL) in it leaves it empty, as above.
-  if (std::any_of(data.begin(), data.end(), [](char c) { return (unsigned char)c < 0x20 || c == 0x7F; }))
+  if (std::any_of(data.begin(), data.end(),
+                  [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; }))
     throw InputError(file, "names its voxel data file with control bytes (ElementDataFile = " +
                                shown(data) + "; a damaged header)");
   if (data == "LIST" || data.find('%') != std::string::npos)
