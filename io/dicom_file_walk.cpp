@@ -22,11 +22,20 @@ namespace fs = std::filesystem;
 // The headers before the pixel data lie in the first kilobytes; a multi-frame file's are walked
 // up to here (its pixel data's length is checked against the whole file).
 constexpr std::uint64_t kMaxWalkedBytes = 64 << 20;
-constexpr std::uint64_t kOpen = ~std::uint64_t(0);  // a sequence of undefined length
+constexpr std::uint64_t kOpen = ~std::uint64_t(0);  // the end of a container of undefined length
 
 struct Syntax {
   bool explicitVr = true;
   bool bigEndian = false;
+};
+
+// What the walk is inside: a sequence (its items hold elements), an item (one of undefined length
+// ends at an item delimiter) or encapsulated pixel data (its items are compressed fragments,
+// stepped over whole).
+struct Container {
+  enum class Kind { sequence, item, fragments };
+  Kind kind;
+  std::uint64_t end;  // kOpen: at its delimiter
 };
 
 class ElementWalk {
@@ -44,10 +53,10 @@ class ElementWalk {
     Syntax syntax{firstGroup == 0x0002 || at == 132, false};
     std::string transferSyntax;
     bool inMeta = firstGroup == 0x0002;
-    // Where the open sequences end (kOpen: at their delimiter); an item belongs inside one.
-    std::vector<std::uint64_t> open;
+    // The sequences, items and encapsulated pixel data the walk is inside, innermost last.
+    std::vector<Container> open;
     while (at + 8 <= bytes_.size()) {
-      while (!open.empty() && open.back() != kOpen && at >= open.back()) open.pop_back();
+      while (!open.empty() && open.back().end != kOpen && at >= open.back().end) open.pop_back();
       if (inMeta && read16(at, false) != 0x0002) {
         inMeta = false;
         syntax = syntaxOf(transferSyntax);
@@ -61,30 +70,25 @@ class ElementWalk {
       const Syntax current = inMeta ? Syntax{} : syntax;
       const std::uint16_t group = read16(at, current.bigEndian);
       const std::uint16_t elementNumber = read16(at + 2, current.bigEndian);
-      std::size_t header = 8;
-      if (group == 0xfffe) {  // item and delimiters: always tag + 4-byte length
-        if (open.empty() ||
-            (elementNumber != 0xe000 && elementNumber != 0xe00d && elementNumber != 0xe0dd))
-          fail(group, elementNumber, "is an item tag outside a sequence");
-        if (elementNumber == 0xe0dd) {
-          if (open.back() != kOpen) fail(group, elementNumber, "ends a sequence that has a length");
-          open.pop_back();
-        }
-        at += 8;  // an item's contents are walked as elements
+      if (group == 0xfffe) {  // items and delimiters: always tag + 4-byte length
+        at = afterItemTag(at, elementNumber, read32(at + 4, current.bigEndian), open);
         continue;
       }
+      std::size_t header = 8;
       const DicomElementHeader element = headerAt(at, current, inMeta, open.empty(), header);
       checkElement(element, at + header);
       std::uint64_t length = element.length;
       const bool sequence =
           current.explicitVr ? element.vr == "SQ" : dicomDictionarySequence(group, elementNumber);
       if (sequence && length != 0xffffffffu && length <= fileSize_ - at - header) {
-        open.push_back(at + header + length);  // walked into
+        open.push_back({Container::Kind::sequence, at + header + length});  // walked into
         length = 0;
       }
       if (length == 0xffffffffu) {  // undefined: a sequence or encapsulated data, walked into
         if (inMeta) fail(group, elementNumber, "has an undefined length in the file meta group");
-        open.push_back(kOpen);
+        const bool pixels = group == 0x7fe0 && elementNumber == 0x0010;
+        open.push_back({pixels ? Container::Kind::fragments : Container::Kind::sequence, kOpen});
+        if (open.size() == 1) noteTopLevel(group, elementNumber, at + header, 0);
         at += header;
         continue;
       }
@@ -98,6 +102,7 @@ class ElementWalk {
       at += header + length;
     }
     requireWholeElements(at, inMeta);
+    requireClosed(open);
     return facts_;
   }
 
@@ -134,6 +139,55 @@ class ElementWalk {
       element.length = read16(at + 6, syntax.bigEndian);
     }
     return element;
+  }
+  // Steps over the item or delimiter tag at `at` (its 4-byte length is `length`); returns where the
+  // walk goes on. GDCM asserts on an item of undefined length the file ends in, and allocates an
+  // item's length before it reads it.
+  std::uint64_t afterItemTag(std::uint64_t at, std::uint16_t elementNumber, std::uint32_t length,
+                             std::vector<Container>& open) const {
+    const auto fail = [&](const std::string& problem) { this->fail(0xfffe, elementNumber, problem); };
+    const auto innermost = [&](Container::Kind kind) {
+      return !open.empty() && open.back().kind == kind;
+    };
+    const bool undefined = length == 0xffffffffu;
+    switch (elementNumber) {
+      case 0xe000: {  // an item
+        if (open.empty() || innermost(Container::Kind::item)) fail("is an item tag outside a sequence");
+        if (!undefined && length > fileSize_ - at - 8)
+          fail("claims " + std::to_string(length) + " bytes where the file has " +
+               std::to_string(fileSize_ - at - 8) + " left");
+        if (innermost(Container::Kind::fragments)) {
+          if (undefined) fail("is a pixel data fragment of undefined length");
+          return at + 8 + length;
+        }
+        open.push_back({Container::Kind::item, undefined ? kOpen : at + 8 + length});
+        return at + 8;  // its elements are walked
+      }
+      case 0xe00d:  // an item's end (GDCM refuses a stray one itself, without asserting)
+        if (innermost(Container::Kind::item) && open.back().end == kOpen) open.pop_back();
+        return at + 8;
+      case 0xe0dd:  // a sequence's end
+        // GDCM asserts when it meets one in an item of undefined length (in implicit VR at least).
+        if (innermost(Container::Kind::item) && open.back().end == kOpen)
+          fail("ends a sequence inside an item that was not ended");
+        if (open.empty() || innermost(Container::Kind::item)) fail("ends a sequence outside a sequence");
+        if (open.back().end != kOpen) fail("ends a sequence that has a length");
+        open.pop_back();
+        return at + 8;
+      default: this->fail(0xfffe, elementNumber, "is an item tag outside a sequence");
+    }
+  }
+  // GDCM asserts when the file ends inside an item of undefined length; a sequence or encapsulated
+  // pixel data without its delimiter is as damaged.
+  void requireClosed(const std::vector<Container>& open) const {
+    if (bytes_.size() < fileSize_) return;  // only the first kMaxWalkedBytes were walked
+    for (auto container = open.rbegin(); container != open.rend(); ++container)  // innermost first
+      if (container->end == kOpen)
+        failFile(container->kind == Container::Kind::item
+                     ? "the file ends inside an item of undefined length"
+                 : container->kind == Container::Kind::fragments
+                     ? "the file ends inside its encapsulated pixel data"
+                     : "the file ends inside a sequence of undefined length");
   }
   // The walk stopped less than a header before the end: GDCM asserts on a file that ends inside its
   // meta group (it reads on for the first data set element) or inside an element header.

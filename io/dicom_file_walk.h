@@ -2,7 +2,7 @@
 // Walking a DICOM file's element headers ourselves before GDCM reads it. GDCM trusts what it reads:
 // it allocates (and zeroes) as many bytes as an element's length field says before it finds the
 // file is shorter, and it asserts (aborting the process) on a file that ends inside its file meta
-// group or inside an element header. The walk refuses those files with a message, and collects what
+// group, an element header or an item of undefined length. The walk refuses those files with a message, and collects what
 // a folder of slices is grouped by, so GDCM never scans a folder itself.
 #include <filesystem>
 #include <optional>

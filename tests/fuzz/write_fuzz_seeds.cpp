@@ -15,6 +15,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/volume.h"
@@ -27,6 +28,7 @@
 #include "io/volume_writer.h"
 #include "render/recipe_json.h"
 #include "tests/fuzz/reader_inputs.h"
+#include "tests/support/dicom_recompress.h"
 #include "tests/support/dicom_series_writer.h"
 
 namespace fs = std::filesystem;
@@ -271,6 +273,17 @@ void writeDicomSeeds(const SeedWriter& out) {
     series += fileBytes(slice);
   }
   out.seed("dicom_series", "three-slices", series);
+  // Encapsulated pixel data: the walk's fragments and GDCM's decoders get fuzzed too.
+  for (const auto& [name, syntax] :
+       {std::pair{"jpeg-lossless", gdcm::TransferSyntax::JPEGLosslessProcess14_1},
+        std::pair{"jpeg-ls", gdcm::TransferSyntax::JPEGLSLossless},
+        std::pair{"jpeg-2000", gdcm::TransferSyntax::JPEG2000Lossless},
+        std::pair{"rle", gdcm::TransferSyntax::RLELossless}}) {
+    const fs::path slice = folder / (std::string(name) + ".dcm");
+    fs::copy_file(slices.front(), slice);
+    test_support::recompressDicomSlice(slice, syntax);
+    out.seed("dicom_slice", slice.filename().string(), fileBytes(slice));
+  }
 }
 
 }  // namespace

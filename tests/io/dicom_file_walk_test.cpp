@@ -94,5 +94,78 @@ TEST_F(DicomFileWalkTest, ADeflatedDataSetIsRefusedByName) {
             std::string::npos);
 }
 
+// Nesting in an implicit VR data set without a meta group (GDCM reads one from byte 0): a tag and a
+// 4-byte length, then the value.
+std::string implicitElement(std::uint16_t group, std::uint16_t element, std::uint32_t length,
+                            const std::string& value = "") {
+  return littleEndian(group, 2) + littleEndian(element, 2) + littleEndian(length, 4) + value;
+}
+constexpr std::uint32_t kUndefined = 0xffffffffu;
+const std::string kOpenSequence = implicitElement(0x0008, 0x1115, kUndefined);  // ReferencedSeries
+const std::string kOpenItem = implicitElement(0xfffe, 0xe000, kUndefined);
+const std::string kItemEnd = implicitElement(0xfffe, 0xe00d, 0);
+const std::string kSequenceEnd = implicitElement(0xfffe, 0xe0dd, 0);
+const std::string kModality = implicitElement(0x0008, 0x0060, 2, "CT");
+
+// walkDicomFile's refusal of `bytes` ("" if it walks them).
+std::string walkRefusal(const fs::path& file, const std::string& bytes) {
+  overwrite(file, bytes);
+  try {
+    walkDicomFile(file, file);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST_F(DicomFileWalkTest, SequencesAndItemsMustBeClosedBeforeTheFileEnds) {
+  const fs::path file = dir_ / "nested.dcm";
+  const std::string closed = kModality + kOpenSequence + kOpenItem + kModality + kItemEnd + kSequenceEnd;
+  EXPECT_EQ(walkRefusal(file, closed), "");
+  // GDCM asserts on an item it reaches the end of the file in.
+  EXPECT_NE(walkRefusal(file, kModality + kOpenSequence + kOpenItem + kModality)
+                .find("the file ends inside an item of undefined length"),
+            std::string::npos);
+  EXPECT_NE(walkRefusal(file, kModality + kOpenSequence + kOpenItem + kModality + kItemEnd)
+                .find("the file ends inside a sequence of undefined length"),
+            std::string::npos);
+  // GDCM asserts on a sequence's delimiter inside an item of undefined length too.
+  EXPECT_NE(walkRefusal(file, kModality + kOpenSequence + kOpenItem + kSequenceEnd)
+                .find("element (fffe,e0dd) ends a sequence inside an item that was not ended"),
+            std::string::npos);
+}
+
+TEST_F(DicomFileWalkTest, AnItemLongerThanTheFileIsRefusedBeforeGdcmAllocatesIt) {
+  const fs::path file = dir_ / "long-item.dcm";
+  const std::string item = implicitElement(0xfffe, 0xe000, 0xffffff00u);
+  EXPECT_NE(walkRefusal(file, kModality + kOpenSequence + item + kModality + kSequenceEnd)
+                .find("element (fffe,e000) claims 4294967040 bytes where the file has 18 left"),
+            std::string::npos);
+  EXPECT_NE(
+      walkRefusal(file, kModality + kOpenItem + kModality).find("is an item tag outside a sequence"),
+      std::string::npos);
+}
+
+TEST_F(DicomFileWalkTest, EncapsulatedPixelDataIsSteppedOverFragmentByFragment) {
+  const fs::path file = dir_ / "fragments.dcm";
+  const std::string pixels = implicitElement(0x7fe0, 0x0010, kUndefined);
+  const std::string offsets = implicitElement(0xfffe, 0xe000, 0);
+  // Fragment bytes that would read as a broken element header if the walk went into them.
+  const std::string fragment = implicitElement(0xfffe, 0xe000, 8, "\xff\xd8\xff\xc3\xff\xff\xff\xff");
+  const auto facts = [&](const std::string& bytes) {
+    overwrite(file, bytes);
+    return walkDicomFile(file, file);
+  };
+  const auto walked = facts(kModality + pixels + offsets + fragment + fragment + kSequenceEnd);
+  ASSERT_TRUE(walked.has_value());
+  EXPECT_TRUE(walked->hasPixelData);
+  EXPECT_NE(walkRefusal(file, kModality + pixels + offsets + fragment)
+                .find("the file ends inside its encapsulated pixel data"),
+            std::string::npos);
+  EXPECT_NE(walkRefusal(file, kModality + pixels + kOpenItem + kSequenceEnd)
+                .find("is a pixel data fragment of undefined length"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace angio
