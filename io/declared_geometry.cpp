@@ -134,6 +134,7 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
   const std::string dims = header.field("NDims");
   if (dims.empty())
     throw InputError(file, "is not a valid MetaImage file (corrupt or truncated header)");
+  if (header.unreadableLine) throw InputError(file, *header.unreadableLine + " (a damaged header)");
   char* end = nullptr;
   const long ndims = std::strtol(dims.c_str(), &end, 10);
   if (dims.empty() || *end != '\0' || ndims < 1 || ndims > 8)

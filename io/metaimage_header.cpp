@@ -1,15 +1,35 @@
 #include "io/metaimage_header.h"
 
 #include <fstream>
+#include <optional>
+#include <string>
 
 namespace angio {
 
 namespace {
 
+constexpr std::size_t kMaxLineBytes = 500;  // MetaIO's getline buffer
+constexpr std::size_t kMaxKeyBytes = 255;   // MET_FieldRecordType::name
+
 std::string trimmed(const std::string& text) {
   const auto first = text.find_first_not_of(" \t\r");
   const auto last = text.find_last_not_of(" \t\r");
   return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+}
+
+// Why MetaIO would not read `line` (the header's `number`th, its field name `key`) as one field,
+// or nullopt. A line without a separator makes MetaIO look for the next '=' or ':' further on (past
+// ElementDataFile, into the voxels, where a long name overflows its 255-byte buffer).
+std::optional<std::string> unreadableBy(const std::string& line, const std::string& key, int number) {
+  const std::string where = "header line " + std::to_string(number);
+  if (line.size() >= kMaxLineBytes)
+    return where + " has " + std::to_string(line.size()) + " characters (MetaIO reads " +
+           std::to_string(kMaxLineBytes - 1) + ")";
+  if (key.empty()) return where + " is not 'Key = Value'";
+  if (key.size() >= kMaxKeyBytes)
+    return where + " has a field name of " + std::to_string(key.size()) + " characters (MetaIO reads " +
+           std::to_string(kMaxKeyBytes - 1) + ")";
+  return std::nullopt;
 }
 
 }  // namespace
@@ -24,12 +44,15 @@ MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
   MetaImageHeader header;
   std::string line;
   // A header is a few dozen lines; the limit keeps a binary file from being scanned to its end.
-  for (int lines = 0; lines < 4096 && std::getline(in, line); ++lines) {
-    const auto equals = line.find('=');
-    if (equals == std::string::npos) continue;
-    const std::string key = trimmed(line.substr(0, equals));
+  for (int lines = 1; lines <= 4096 && std::getline(in, line); ++lines) {
+    if (trimmed(line).empty()) continue;
+    // MetaIO ends a field's name at '=' or ':'; it reads a value with getline into 500 bytes.
+    const auto separator = line.find_first_of("=:");
+    const std::string key = separator == std::string::npos ? "" : trimmed(line.substr(0, separator));
+    if (!header.unreadableLine) header.unreadableLine = unreadableBy(line, key, lines);
+    if (separator == std::string::npos) continue;
     if (header.fields.count(key)) header.repeated.insert(key);
-    header.fields[key] = trimmed(line.substr(equals + 1));
+    header.fields[key] = trimmed(line.substr(separator + 1));
     if (key != "ElementDataFile") continue;
     if (in) header.dataStart = std::uint64_t(in.tellg());
     header.dataLineEndsWithCr = !line.empty() && line.back() == '\r';

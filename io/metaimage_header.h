@@ -1,6 +1,7 @@
 #pragma once
-// A MetaImage (.mha/.mhd) header as text fields: "Key = Value" lines up to ElementDataFile, which
-// MetaIO requires to be the last field; LOCAL voxel data starts on the line after it.
+// A MetaImage (.mha/.mhd) header as text fields: "Key = Value" (or "Key: Value") lines up to
+// ElementDataFile, which MetaIO requires to be the last field; LOCAL voxel data starts on the line
+// after it.
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -16,6 +17,9 @@ struct MetaImageHeader {
   // Offset of the byte after the ElementDataFile line; empty if the header has no such line.
   std::optional<std::uint64_t> dataStart;
   bool dataLineEndsWithCr = false;  // a CRLF header: where MetaIO starts its data is less certain
+  // The first line MetaIO would not read as one "Key = Value" field, and why ("header line 4 is
+  // not 'Key = Value'"); MetaIO's reading goes astray there (and its buffers overflow).
+  std::optional<std::string> unreadableLine;
 
   // The field's value, or "" if the header does not have it.
   std::string field(const std::string& key) const;

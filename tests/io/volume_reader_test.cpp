@@ -642,6 +642,20 @@ void writeMetaImage(const fs::path& file, const std::string& dimSize, const std:
                       "\nElementType = MET_SHORT\nElementDataFile = LOCAL\n" + std::string(16, '\0'));
 }
 
+// A line MetaIO cannot read as one field sends it looking for the next '=' past ElementDataFile,
+// into the voxels, where a name of 255 characters or more overflows its buffer (an abort).
+TEST_F(VolumeReaderTest, MetaImageHeaderLinesMetaIoCannotReadAreRefusedBeforeIt) {
+  writeMetaImage(dir_ / "colon.mha", "2 2 2", "1 1 1", "Comment: written by hand\n");
+  EXPECT_EQ(readVolume(dir_ / "colon.mha").volume.dims, glm::ivec3(2, 2, 2));
+  writeMetaImage(dir_ / "bare.mha", "2 2 2", "1 1 1", "Orientation\n");
+  expectInputError(dir_ / "bare.mha", "header line 5 is not 'Key = Value' (a damaged header)");
+  writeMetaImage(dir_ / "name.mha", "2 2 2", "1 1 1", std::string(300, 'K') + " = 1\n");
+  expectInputError(dir_ / "name.mha",
+                   "header line 5 has a field name of 300 characters (MetaIO reads 254)");
+  writeMetaImage(dir_ / "long.mha", "2 2 2", "1 1 1", "Comment = " + std::string(600, 'v') + "\n");
+  expectInputError(dir_ / "long.mha", "header line 5 has 610 characters (MetaIO reads 499)");
+}
+
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
   writeMetaImage(dir_ / "zero.mha", "2 2 2", "1 0 1");
   expectInputError(dir_ / "zero.mha", "spacing");
