@@ -4,18 +4,21 @@
 #include <functional>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include <gdcmReader.h>
 #include <itkGDCMImageIO.h>
 
 #include "io/dicom_file_walk.h"
 #include "io/shown_text.h"
 #include "io/dicom_slice_check.h"
 #include "io/input_error.h"
+#include "io/slices_in_child.h"
 #include "io/volume_conversion.h"
 #include "io/volume_formats.h"
 #include "io/volume_memory.h"
@@ -104,14 +107,23 @@ itk::GDCMImageIO::Pointer readSliceHeader(const std::filesystem::path& folder, c
   return io;
 }
 
-// The patient and study tags of a slice (all slices of a series share them).
-StudyInfo studyOf(itk::GDCMImageIO& io) {
-  const auto tag = [&](const char* key) {
-    std::string value;
-    return io.GetValueFromTag(key, value) ? trimmedDicomValue(value) : std::string();
+// The patient and study tags of a slice (all slices of a series share them), read up to its pixel
+// data: GDCM's image reader would decode compressed pixels (io/slices_in_child.h).
+StudyInfo studyOf(const std::string& file) {
+  gdcm::Reader reader;
+  reader.SetFileName(file.c_str());
+  const gdcm::Tag pixelData(0x7fe0, 0x0010);
+  if (!reader.ReadUpToTag(pixelData, {pixelData})) return {};
+  const gdcm::DataSet& data = reader.GetFile().GetDataSet();
+  const auto tag = [&](std::uint16_t group, std::uint16_t element) {
+    const gdcm::Tag key(group, element);
+    if (!data.FindDataElement(key)) return std::string();
+    const gdcm::ByteValue* bytes = data.GetDataElement(key).GetByteValue();
+    return bytes ? trimmedDicomValue(std::string(bytes->GetPointer(), bytes->GetLength()))
+                 : std::string();
   };
-  return {readablePersonName(tag("0010|0010")), tag("0010|0020"), readableDate(tag("0008|0020")),
-          tag("0008|103e"), tag("0008|0060")};
+  return {readablePersonName(tag(0x0010, 0x0010)), tag(0x0010, 0x0020),
+          readableDate(tag(0x0008, 0x0020)), tag(0x0008, 0x103e), tag(0x0008, 0x0060)};
 }
 
 // Reads a slice's pixels (rescale slope/intercept applied by GDCM) as encoded voxels into `out`
@@ -261,7 +273,9 @@ DicomSeries scanDicomSeries(const std::filesystem::path& folder, const ReadOptio
     geometry.origin = first.position;
     geometry.direction = glm::dmat3(glm::normalize(first.row), glm::normalize(first.column), normal);
     for (const Slice& slice : slices) result.files.push_back(slice.file);
-    result.study = studyOf(*readSliceHeader(folder, result.files.front()));
+    result.study = studyOf(result.files.front());
+    result.compressed = std::any_of(slices.begin(), slices.end(),
+                                    [](const Slice& slice) { return slice.tags.encapsulated; });
     result.description =
         "DICOM series " + shownUid(series.uid) + " (" + std::to_string(slices.size()) + " slices)";
     return result;
@@ -273,20 +287,28 @@ DicomSeries scanDicomSeries(const std::filesystem::path& folder, const ReadOptio
 std::size_t readDicomSlices(const std::filesystem::path& folder, const DicomSeries& series,
                             const std::function<void(int, const Voxel*)>& slice,
                             const ReadOptions& options) {
-  try {
-    const glm::ivec3 dims = series.geometry.dims;
-    std::vector<Voxel> voxels(std::size_t(dims.x) * dims.y);
-    std::vector<double> scratch;
-    std::size_t nonFinite = 0;
-    for (int k = 0; k < dims.z; ++k) {
-      nonFinite += readSlicePixels(folder, series.files[k], dims, scratch, voxels.data());
-      slice(k, voxels.data());
-      if (options.progress) options.progress(0.1 + 0.85 * double(k + 1) / double(dims.z));
+  const glm::ivec3 dims = series.geometry.dims;
+  std::vector<double> scratch;
+  const SliceDecode decode = [&](int k, Voxel* voxels) {
+    try {
+      return readSlicePixels(folder, series.files[k], dims, scratch, voxels);
+    } catch (const itk::ExceptionObject& error) {
+      throw InputError(folder, "cannot read the DICOM series: " + oneLine(error));
     }
-    return nonFinite;
-  } catch (const itk::ExceptionObject& error) {
-    throw InputError(folder, "cannot read the DICOM series: " + oneLine(error));
+  };
+  const SliceTake take = [&](int k, const Voxel* voxels) {
+    slice(k, voxels);
+    if (options.progress) options.progress(0.1 + 0.85 * double(k + 1) / double(dims.z));
+  };
+  if (series.compressed)
+    return decodeSlicesInChild(folder, series.files, std::size_t(dims.x) * dims.y, decode, take);
+  std::vector<Voxel> voxels(std::size_t(dims.x) * dims.y);
+  std::size_t nonFinite = 0;
+  for (int k = 0; k < dims.z; ++k) {
+    nonFinite += decode(k, voxels.data());
+    take(k, voxels.data());
   }
+  return nonFinite;
 }
 
 }  // namespace angio

@@ -22,6 +22,7 @@ struct DicomSeries {
   std::vector<std::string> files;  // the slices in position order
   std::string description;         // "DICOM series <uid> (<n> slices)"
   StudyInfo study;                 // from the first slice's tags
+  bool compressed = false;         // a slice has encapsulated pixel data: decoded in a child process
 };
 
 // Chooses the series and reads every slice's header: orientation, size, positions (no gaps, no
@@ -30,6 +31,7 @@ DicomSeries scanDicomSeries(const std::filesystem::path& folder, const ReadOptio
 
 // Reads the slices' pixels in position order, each as encoded voxels (i fastest, columns x rows),
 // handing slice k to slice(k, voxels) (valid during the call): one slice in memory at a time.
+// Compressed slices are decoded in a child process (io/slices_in_child.h).
 // Returns how many pixel values were NaN/Inf (float pixel data; stored as -1024 HU).
 std::size_t readDicomSlices(const std::filesystem::path& folder, const DicomSeries& series,
                             const std::function<void(int, const Voxel*)>& slice,

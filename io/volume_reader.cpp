@@ -11,7 +11,6 @@
 #include <optional>
 #include <string>
 
-#include <itkGDCMImageIO.h>
 #include <tbb/parallel_for.h>
 
 #include "io/dicom_series.h"
@@ -78,8 +77,6 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
       throw InputError(
           file, std::string("is not a valid ") + formatLabel + " file (corrupt or truncated header)");
   } else {
-    io = itk::GDCMImageIO::New().GetPointer();
-    formatLabel = "DICOM";
     // Before GDCM sees the file: it takes almost anything for DICOM and trusts its length fields,
     // and its image reader (CanReadFile reads the image) asserts on some tags' values.
     if (!walkDicomFile(file, file))
@@ -87,7 +84,10 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
                        "unknown volume format (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, "
                        ".mhd or a folder of DICOM slices)");
     checkDicomSlice(file, file, false);
-    if (!io->CanReadFile(file.c_str())) throw InputError(file, "is not a DICOM image GDCM can read");
+    // Multi-frame images were refused by the checks: the file is one slice. GDCM's image reader is
+    // not asked to confirm it, as it would decode compressed pixels in this process
+    // (io/slices_in_child.h).
+    throw InputError(file, "is a single DICOM slice; open its folder to load the series");
   }
   io->SetFileName(file.string());
   io->ReadImageInformation();
@@ -95,8 +95,7 @@ itk::ImageIOBase::Pointer openHeader(const std::filesystem::path& file, std::str
 }
 
 // Checks the header describes a 3-D scalar volume with sane spacing, and returns where it sits.
-VolumeGeometry storedGeometry(const std::filesystem::path& file, const itk::ImageIOBase& io,
-                              const std::string& formatLabel) {
+VolumeGeometry storedGeometry(const std::filesystem::path& file, const itk::ImageIOBase& io) {
   const unsigned dimensions = io.GetNumberOfDimensions();
   std::vector<std::size_t> dims;
   for (unsigned d = 0; d < dimensions; ++d) dims.push_back(io.GetDimensions(d));
@@ -108,12 +107,9 @@ VolumeGeometry storedGeometry(const std::filesystem::path& file, const itk::Imag
   if (used > 3)
     throw InputError(file, "is " + std::to_string(used) + "-D (" + dimsText(dims) +
                                " voxels); need a 3-D scalar volume");
-  if (used < 3 || extent < 3) {
-    if (formatLabel == "DICOM")
-      throw InputError(file, "is a single DICOM slice; open its folder to load the series");
+  if (used < 3 || extent < 3)
     throw InputError(file, "is " + std::to_string(std::max<std::size_t>(extent, 1)) + "-D (" +
                                dimsText(dims) + " voxels); need a 3-D scalar volume");
-  }
   if (io.GetNumberOfComponents() != 1 || io.GetPixelType() != itk::IOPixelEnum::SCALAR)
     throw InputError(file, "has " + std::to_string(io.GetNumberOfComponents()) + "-component " +
                                itk::ImageIOBase::GetPixelTypeAsString(io.GetPixelType()) +
@@ -199,7 +195,7 @@ OpenedVolume openVolume(const std::filesystem::path& file) {
   OpenedVolume opened;
   std::string formatLabel;
   opened.io = openHeader(file, formatLabel);
-  opened.geometry = storedGeometry(file, *opened.io, formatLabel);
+  opened.geometry = storedGeometry(file, *opened.io);
   opened.componentType = opened.io->GetComponentType();
   opened.description = formatLabel + " " + componentTypeName(opened.componentType);
   withComponentType(opened.componentType, [](auto) { return 0; });  // rejects unusual types
