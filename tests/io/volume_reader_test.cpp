@@ -465,13 +465,15 @@ TEST_F(VolumeReaderTest, DicomSeriesLoadsInPositionOrderWithRescaleApplied) {
         ASSERT_EQ(v.densityAt(i, j, k), sliceHu(k, i, j) + 1024) << i << " " << j << " " << k;
 }
 
-// Every codec a series may come in (the lossy JPEG and JPEG 2000 encodings GDCM makes of these
-// smooth slices are exact too): the walk before GDCM steps over the encapsulated pixel data's
-// fragments, GDCM's codecs decode them in a child process and the values come back exactly.
+// Every codec a series may come in (GDCM's JPEG 2000 encoding under the lossy syntax is exact too;
+// its 12-bit lossy JPEG of these signed 16-bit slices is not DICOM-conformant data, so not here):
+// the walk before GDCM steps over the encapsulated pixel data's fragments, GDCM's codecs decode
+// them in a child process and the values come back exactly.
 TEST_F(VolumeReaderTest, CompressedDicomSeriesLoadsTheSameValuesAsNative) {
   for (const auto syntax :
-       {gdcm::TransferSyntax::JPEGLosslessProcess14_1, gdcm::TransferSyntax::JPEGLSLossless,
-        gdcm::TransferSyntax::JPEG2000Lossless, gdcm::TransferSyntax::RLELossless}) {
+       {gdcm::TransferSyntax::JPEG2000, gdcm::TransferSyntax::JPEGLosslessProcess14_1,
+        gdcm::TransferSyntax::JPEGLSLossless, gdcm::TransferSyntax::JPEG2000Lossless,
+        gdcm::TransferSyntax::RLELossless}) {
     const std::string uid = gdcm::TransferSyntax::GetTSString(syntax);
     SCOPED_TRACE(uid);
     const fs::path folder = dir_ / ("codec" + std::to_string(int(syntax)));
