@@ -16,6 +16,7 @@
 #include "io/volume_writer.h"
 #include "render/recipe_json.h"
 #include "tests/support/bad_input_case.h"
+#include "tests/support/dicom_recompress.h"
 #include "tests/support/dicom_series_writer.h"
 #include "tests/support/dicom_tag_patch.h"
 
@@ -137,6 +138,20 @@ void dicomTilted(const fs::path& dir) {
 void dicomMissingSlice(const fs::path& dir) {
   fs::create_directories(dir / "ct");
   test_support::writeDicomSeries(dir / "ct", {0, 1, 3, 4}, "1.2.3.4", 7);
+}
+// The series in JPEG lossless; slice IM2-4.dcm's stream makes GDCM's codec abort.
+void dicomJpegDecoderAborts(const fs::path& dir) {
+  const fs::path damaged = dicomSeries(dir);
+  for (const auto& slice : fs::directory_iterator(dir / "ct"))
+    test_support::recompressDicomSlice(slice.path(), gdcm::TransferSyntax::JPEGLosslessProcess14_1);
+  test_support::strayBytesBeforeJpegFrameHeader(damaged);
+}
+// The series in RLE; slice IM2-4.dcm ends inside its compressed fragments.
+void dicomRleCutShort(const fs::path& dir) {
+  const fs::path damaged = dicomSeries(dir);
+  for (const auto& slice : fs::directory_iterator(dir / "ct"))
+    test_support::recompressDicomSlice(slice.path(), gdcm::TransferSyntax::RLELossless);
+  test_support::truncateBy(damaged, 100);
 }
 void emptyFolder(const fs::path& dir) { fs::create_directories(dir / "ct"); }
 void folderOfText(const fs::path& dir) {
@@ -298,6 +313,9 @@ const BadInput kFiles[] = {
     {RENDER("ct"), "IM2-4.dcm", "RescaleSlope", nullptr, nullptr, dicomSlopeZero},
     {RENDER("ct"), "IM2-4.dcm", "claims 512 bytes", nullptr, nullptr, dicomTruncated},
     {RENDER("ct"), "ct", "gantry tilt", nullptr, nullptr, dicomTilted},
+    {RENDER("ct"), "IM2-4.dcm", "compressed pixel data cannot be decoded", nullptr, nullptr,
+     dicomJpegDecoderAborts},
+    {RENDER("ct"), "IM2-4.dcm", "claims", nullptr, nullptr, dicomRleCutShort},
     {RENDER("ct"), "ct", "gap in slice positions", nullptr, nullptr, dicomMissingSlice},
     {RENDER("ct"), "ct", "no DICOM", nullptr, nullptr, emptyFolder},
     {RENDER("ct"), "ct", "no DICOM", nullptr, nullptr, folderOfText},

@@ -499,18 +499,7 @@ TEST_F(VolumeReaderTest, ACompressedSliceTheDecoderAbortsOnFailsTheLoadNotThePro
   writeDicomSeries(dir_, {0, 1, 2, 3}, "1.2.826.0.1.3680043.2.1125.777.1", 42);
   for (const auto& slice : fs::directory_iterator(dir_))
     test_support::recompressDicomSlice(slice.path(), gdcm::TransferSyntax::JPEGLosslessProcess14_1);
-  const fs::path damaged = dir_ / "IM2-1.dcm";
-  std::string bytes = test_support::fileContents(damaged);
-  const std::size_t frameHeader = bytes.find("\xff\xc3");
-  const std::size_t fragment = bytes.rfind(std::string("\xfe\xff\x00\xe0", 4), frameHeader);
-  ASSERT_NE(frameHeader, std::string::npos);
-  ASSERT_NE(fragment, std::string::npos);
-  bytes.insert(frameHeader, "\x12\x34", 2);
-  std::uint32_t length = 0;
-  std::memcpy(&length, bytes.data() + fragment + 4, 4);
-  length += 2;
-  std::memcpy(bytes.data() + fragment + 4, &length, 4);
-  writeText(damaged, bytes);
+  test_support::strayBytesBeforeJpegFrameHeader(dir_ / "IM2-1.dcm");
   expectInputError(dir_,
                    "slice IM2-1.dcm: its compressed pixel data cannot be decoded (the decoder was "
                    "killed by signal 6");
