@@ -217,7 +217,10 @@ TEST(GuiWorkstation, RegionTfsFollowTheMainTfUntilSetAndAgainWhenAsked) {
 
 TEST(GuiWorkstation, RenderingEditsKeepTheMipWindowInTheMainTf) {
   Workstation workstation;
-  RenderingEdit edit{Compositing::mip, {}, 1500, 500};
+  RenderingEdit edit;
+  edit.mode = Compositing::mip;
+  edit.mipWindow = 1500;
+  edit.mipLevel = 500;
   workstation.apply(edit);
   EXPECT_EQ(workstation.document().mode, Compositing::mip);
   EXPECT_DOUBLE_EQ(workstation.document().tf.mipWindow, 1500);
