@@ -35,7 +35,8 @@ struct Syntax {
 struct Container {
   enum class Kind { sequence, item, fragments };
   Kind kind;
-  std::uint64_t end;  // kOpen: at its delimiter
+  std::uint64_t end;        // kOpen: at its delimiter
+  bool implicitVr = false;  // its data set is implicit VR little endian (inside a UN sequence)
 };
 
 class ElementWalk {
@@ -67,7 +68,8 @@ class ElementWalk {
         if (const std::string problem = dicomTransferSyntaxProblem(transferSyntax); !problem.empty())
           refuse("its data set " + problem);
       }
-      const Syntax current = inMeta ? Syntax{} : syntax;
+      const bool implicitInside = !open.empty() && open.back().implicitVr;
+      const Syntax current = inMeta ? Syntax{} : implicitInside ? Syntax{false, false} : syntax;
       const std::uint16_t group = read16(at, current.bigEndian);
       const std::uint16_t elementNumber = read16(at + 2, current.bigEndian);
       if (group == 0xfffe) {  // items and delimiters: always tag + 4-byte length
@@ -81,13 +83,17 @@ class ElementWalk {
       const bool sequence =
           current.explicitVr ? element.vr == "SQ" : dicomDictionarySequence(group, elementNumber);
       if (sequence && length != 0xffffffffu && length <= fileSize_ - at - header) {
-        open.push_back({Container::Kind::sequence, at + header + length});  // walked into
+        open.push_back(
+            {Container::Kind::sequence, at + header + length, implicitInside});  // walked into
         length = 0;
       }
       if (length == 0xffffffffu) {  // undefined: a sequence or encapsulated data, walked into
         if (inMeta) fail(group, elementNumber, "has an undefined length in the file meta group");
         const bool pixels = group == 0x7fe0 && elementNumber == 0x0010;
-        open.push_back({pixels ? Container::Kind::fragments : Container::Kind::sequence, kOpen});
+        // A sequence of unknown VR holds an implicit VR little endian data set (PS3.5 6.2.2).
+        const bool unknown = current.explicitVr && element.vr == "UN";
+        open.push_back({pixels ? Container::Kind::fragments : Container::Kind::sequence, kOpen,
+                        implicitInside || unknown});
         if (open.size() == 1) noteTopLevel(group, elementNumber, at + header, 0);
         at += header;
         continue;
@@ -160,7 +166,8 @@ class ElementWalk {
           if (undefined) fail("is a pixel data fragment of undefined length");
           return at + 8 + length;
         }
-        open.push_back({Container::Kind::item, undefined ? kOpen : at + 8 + length});
+        open.push_back(
+            {Container::Kind::item, undefined ? kOpen : at + 8 + length, open.back().implicitVr});
         return at + 8;  // its elements are walked
       }
       case 0xe00d:  // an item's end (GDCM refuses a stray one itself, without asserting)

@@ -12,6 +12,7 @@
 
 #include "io/input_error.h"
 #include "io/volume_reader.h"
+#include "tests/support/dicom_recompress.h"
 #include "tests/support/dicom_series_writer.h"
 #include "tests/support/dicom_tag_patch.h"
 #include "tests/support/dicom_folder_test.h"
@@ -165,6 +166,38 @@ TEST_F(DicomFileWalkTest, EncapsulatedPixelDataIsSteppedOverFragmentByFragment) 
   EXPECT_NE(walkRefusal(file, kModality + pixels + kOpenItem + kSequenceEnd)
                 .find("is a pixel data fragment of undefined length"),
             std::string::npos);
+}
+
+// A private sequence stored as UN of undefined length (what a converter makes of a sequence whose
+// tag it does not know) holds an implicit VR data set even in an explicit VR file (PS3.5 6.2.2):
+// the walk reads its items so, and the series loads.
+TEST_F(DicomFileWalkTest, AnUnknownSequenceInAnExplicitVrSliceIsWalkedAsImplicitVr) {
+  const fs::path slice = series();
+  for (const auto& file : fs::directory_iterator(dir_))
+    test_support::recompressDicomSlice(file.path(), gdcm::TransferSyntax::ExplicitVRLittleEndian);
+  std::string bytes = fileBytes(slice);
+  // The first top-level element after group 0008 (explicit VR: 2- or 4-byte lengths by VR).
+  std::size_t at = metaGroupEnd(bytes);
+  while ((std::uint8_t(bytes[at]) | std::uint8_t(bytes[at + 1]) << 8) <= 0x0008) {
+    const std::string vr = bytes.substr(at + 4, 2);
+    const bool longForm = vr == "OB" || vr == "OW" || vr == "SQ" || vr == "UN" || vr == "UT";
+    const auto number = [&](std::size_t from, int size) {
+      std::uint32_t value = 0;
+      for (int n = size - 1; n >= 0; --n) value = value << 8 | std::uint8_t(bytes[from + n]);
+      return value;
+    };
+    at += longForm ? 12 + number(at + 8, 4) : 8 + number(at + 6, 2);
+  }
+  const std::string privateCreator =
+      littleEndian(0x0009, 2) + littleEndian(0x0010, 2) + "LO" + littleEndian(8, 2) + "ANGIOTST";
+  const std::string unknownSequence = littleEndian(0x0009, 2) + littleEndian(0x1010, 2) + "UN" +
+                                      std::string(2, '\0') + littleEndian(0xffffffffu, 4);
+  const std::string implicitItem = implicitElement(0xfffe, 0xe000, 0xffffffffu) +
+                                   implicitElement(0x0008, 0x0100, 4, "ABCD") + kItemEnd;
+  bytes.insert(at, privateCreator + unknownSequence + implicitItem + kSequenceEnd);
+  overwrite(slice, bytes);
+  EXPECT_EQ(refusal(), "");
+  EXPECT_EQ(loaded_.volume.dims, glm::ivec3(16, 16, 4));
 }
 
 }  // namespace
