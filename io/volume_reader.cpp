@@ -331,11 +331,14 @@ Volume volumeFromDicom(const std::filesystem::path& folder, const ReadOptions& o
   warnIfOblique(folder, plan, options);
   const glm::dvec3 dims(series.geometry.dims);
   requireMemory(folder, dims, dims.x * dims.y * dims.z * sizeof(Voxel));
-  // Each slice goes straight to its place in the reoriented volume: no stack of slices.
-  Volume volume = volumeOn(reorientedGeometry(series.geometry, plan));
+  // Each slice goes straight to its place in the reoriented volume: no stack of slices. The volume
+  // is made at the first slice, after a compressed series' decoder process started: pages it shared
+  // with that process would be copied as they are written (twice the memory).
+  Volume volume;
   const std::size_t nonFinite = readDicomSlices(
       folder, series,
       [&](int k, const Voxel* slice) {
+        if (k == 0) volume = volumeOn(reorientedGeometry(series.geometry, plan));
         reorientSlab(slice, series.geometry.dims, k, 1, plan, volume.voxels.data(), CopyRow{});
       },
       options);
