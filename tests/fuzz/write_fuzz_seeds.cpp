@@ -266,23 +266,32 @@ void writeDicomSeeds(const SeedWriter& out) {
   std::vector<fs::path> slices;
   for (const fs::directory_entry& entry : fs::directory_iterator(folder)) slices.push_back(entry.path());
   std::sort(slices.begin(), slices.end());
-  std::string series;
-  for (const fs::path& slice : slices) {
+  const auto seriesOf = [](const std::vector<fs::path>& files) {
+    std::string series;
+    for (const fs::path& file : files) {
+      if (!series.empty()) series += fuzz::kSliceSeparator;
+      series += fileBytes(file);
+    }
+    return series;
+  };
+  for (const fs::path& slice : slices)
     out.seed("dicom_slice", slice.filename().string(), fileBytes(slice));
-    if (!series.empty()) series += fuzz::kSliceSeparator;
-    series += fileBytes(slice);
-  }
-  out.seed("dicom_series", "three-slices", series);
-  // Encapsulated pixel data: the walk's fragments and GDCM's decoders get fuzzed too.
+  out.seed("dicom_series", "three-slices", seriesOf(slices));
+  // Encapsulated pixel data: the walk's fragments and, in a series, GDCM's decoders (in the
+  // decoder process, io/slices_in_child.h) get fuzzed too.
   for (const auto& [name, syntax] :
        {std::pair{"jpeg-lossless", gdcm::TransferSyntax::JPEGLosslessProcess14_1},
         std::pair{"jpeg-ls", gdcm::TransferSyntax::JPEGLSLossless},
         std::pair{"jpeg-2000", gdcm::TransferSyntax::JPEG2000Lossless},
         std::pair{"rle", gdcm::TransferSyntax::RLELossless}}) {
-    const fs::path slice = folder / (std::string(name) + ".dcm");
-    fs::copy_file(slices.front(), slice);
-    test_support::recompressDicomSlice(slice, syntax);
-    out.seed("dicom_slice", slice.filename().string(), fileBytes(slice));
+    std::vector<fs::path> compressed;
+    for (const fs::path& slice : slices) {
+      compressed.push_back(folder / (std::string(name) + "-" + slice.filename().string()));
+      fs::copy_file(slice, compressed.back());
+      test_support::recompressDicomSlice(compressed.back(), syntax);
+    }
+    out.seed("dicom_slice", std::string(name) + ".dcm", fileBytes(compressed.front()));
+    out.seed("dicom_series", std::string("three-slices-") + name, seriesOf(compressed));
   }
 }
 
