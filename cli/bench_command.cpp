@@ -6,6 +6,7 @@
 #include "bench/approximation_bench.h"
 #include "bench/frame_bench.h"
 #include "bench/slice_bench.h"
+#include "bench/tile_bench.h"
 #include "bench/trace_bench.h"
 #include "bench/vessel_glyph_bench.h"
 #include "phantom/phantom.h"
@@ -106,6 +107,15 @@ int runBench(const BenchOptionsCli& options) {
   }
   if (options.slices) {
     std::printf("%s", formatSliceBench(runSliceBench(volume, options.angles)).c_str());
+    return 0;
+  }
+  if (options.tiles) {
+    Volume plain = volume;
+    for (Voxel& v : plain.voxels) v = Voxel(densityOf(v));
+    const Volume labelled = options.labels.empty() ? labelledAbove(volume, 300) : volume;
+    std::printf("%s",
+                formatTileBench(runTileBench(plain, labelled, *parseAxis(options.axis), options.angles))
+                    .c_str());
     return 0;
   }
   if (options.trace) {

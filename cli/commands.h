@@ -124,6 +124,7 @@ struct BenchOptionsCli {
       false;                  // time only VesselGlyph interval construction (bench/vessel_glyph_bench.h)
   bool trace = false;         // time only vessel tracing (bench/trace_bench.h)
   bool slices = false;        // time only the slice view's images (bench/slice_bench.h)
+  bool tiles = false;         // time only the slice tiles' summaries (bench/tile_bench.h)
   bool skipAdaptive = false;  // --approximations without the adaptive integration rows
   bool onlyAdaptiveSampling = false;  // --approximations: only the adaptive sampling rows
   bool approximations = false;  // time and compare the approximations (bench/approximation_bench.h)

@@ -246,6 +246,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--slices", o.slices,
                 "Time only the slice view's images: each orientation stepped through --angles "
                 "slices");
+  cmd->add_flag("--tiles", o.tiles,
+                "Time only the slice tiles' summaries (after a load, an axis or a label change): "
+                "plain, and with --labels or else every voxel above 300 HU labelled; --angles runs");
   cmd->add_flag("--skip-adaptive", o.skipAdaptive,
                 "With --approximations: leave out the adaptive integration rows (seconds to a minute "
                 "per frame at 512x512x1200)");

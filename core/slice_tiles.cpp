@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <numeric>
+#include <type_traits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -29,8 +30,6 @@ struct Range {
 // What a volume without labels keeps of a window of voxels: the density range.
 struct PlainSummary {
   Range densities;
-  void add(Voxel v) { densities.add(std::uint16_t(densityOf(v))); }
-  void add(const PlainSummary& s) { densities.add(s.densities); }
 };
 
 // With labels: the unlabelled and the labelled voxels' ranges apart, and the labels that occur.
@@ -38,16 +37,6 @@ struct LabelledSummary {
   Range densities;  // unlabelled
   Range labelled;
   std::uint16_t bits = 0;
-  void add(Voxel v) {
-    const int label = labelOf(v);
-    (label == 0 ? densities : labelled).add(std::uint16_t(densityOf(v)));
-    bits |= std::uint16_t(1u << label);
-  }
-  void add(const LabelledSummary& s) {
-    densities.add(s.densities);
-    labelled.add(s.labelled);
-    bits |= s.bits;
-  }
 };
 
 // Voxel window of tile t, clamped to [0, n - 1]: [t*T, t*T + T] for the cells of the tile
@@ -122,13 +111,6 @@ void pack(const SliceTiles& tiles, int slice, const std::vector<LabelledSummary>
   for (std::size_t n = 0; n < exact.size(); ++n) out.labelBits[first + n] = exact[n].bits;
 }
 
-template <class Summary>
-Summary summaryOver(const std::vector<Summary>& columns, std::pair<int, int> window) {
-  Summary summary;
-  for (int b = window.first; b <= window.second; ++b) summary.add(columns[b]);
-  return summary;
-}
-
 // Where one slice's voxels are: line c along b is voxels[first + c strideC + b strideB].
 struct SliceLayout {
   const Voxel* first = nullptr;
@@ -149,17 +131,74 @@ SliceLayout sliceLayout(const Volume& volume, const SliceTiles& tiles, int slice
           volume.dims[tiles.axisC]};
 }
 
-// Adds line c's voxels to the column summaries (contiguous when rotating about k: vectorised).
+// The summaries of every b column of one tile row, one array per quantity, so that adding a line
+// (contiguous when rotating about k) vectorises.
+struct PlainColumns {
+  std::vector<Range> densities;
+
+  void reset(int nb) { densities.assign(nb, Range{}); }
+  void addLine(const SliceLayout& slice, int c) {
+    const Voxel* line = slice.first + c * slice.strideC;
+    for (int b = 0; b < slice.nb; ++b)
+      densities[b].add(std::uint16_t(densityOf(line[b * slice.strideB])));
+  }
+  PlainSummary over(std::pair<int, int> window) const {
+    PlainSummary summary;
+    for (int b = window.first; b <= window.second; ++b) summary.densities.add(densities[b]);
+    return summary;
+  }
+};
+
+struct LabelledColumns {
+  std::vector<Range> densities, labelled;
+  std::vector<std::uint16_t> bits;
+
+  void reset(int nb) {
+    densities.assign(nb, Range{});
+    labelled.assign(nb, Range{});
+    bits.assign(nb, 0);
+  }
+  // Most lines hold no labelled voxel (labels mark organs, bone, the table): those add their
+  // densities as a volume without labels does, and only bit 0.
+  void addLine(const SliceLayout& slice, int c) {
+    const Voxel* line = slice.first + c * slice.strideC;
+    Voxel any = 0;
+    for (int b = 0; b < slice.nb; ++b) any |= line[b * slice.strideB];
+    if (labelOf(any) == 0) {
+      for (int b = 0; b < slice.nb; ++b) densities[b].add(line[b * slice.strideB]);  // density == voxel
+      for (int b = 0; b < slice.nb; ++b) bits[b] |= 1;
+      return;
+    }
+    // Branch-free, so that it vectorises too: a voxel adds its density to one range and the
+    // neutral value (an empty range's bound) to the other.
+    for (int b = 0; b < slice.nb; ++b) {
+      const Voxel v = line[b * slice.strideB];
+      const std::uint16_t density = std::uint16_t(densityOf(v));
+      const bool unlabelled = labelOf(v) == 0;
+      densities[b].add(Range{unlabelled ? density : Range{}.lo, unlabelled ? density : Range{}.hi});
+      labelled[b].add(Range{unlabelled ? Range{}.lo : density, unlabelled ? Range{}.hi : density});
+    }
+    for (int b = 0; b < slice.nb; ++b) bits[b] |= std::uint16_t(1u << labelOf(line[b * slice.strideB]));
+  }
+  LabelledSummary over(std::pair<int, int> window) const {
+    LabelledSummary summary;
+    for (int b = window.first; b <= window.second; ++b) {
+      summary.densities.add(densities[b]);
+      summary.labelled.add(labelled[b]);
+      summary.bits |= bits[b];
+    }
+    return summary;
+  }
+};
+
 template <class Summary>
-void addLine(const SliceLayout& slice, int c, std::vector<Summary>& columns) {
-  const Voxel* line = slice.first + c * slice.strideC;
-  for (int b = 0; b < slice.nb; ++b) columns[b].add(line[b * slice.strideB]);
-}
+using ColumnsOf =
+    std::conditional_t<std::is_same_v<Summary, PlainSummary>, PlainColumns, LabelledColumns>;
 
 // Scratch of one worker: per b column (for one tile row), per tile (for one slice).
 template <class Summary>
 struct SliceScratch {
-  std::vector<Summary> cellColumns, wideColumns;
+  ColumnsOf<Summary> cellColumns, wideColumns;
   std::vector<Summary> cellTiles, wideTiles;
 };
 
@@ -173,15 +212,15 @@ void summariseSlice(const Volume& volume, SliceTiles& tiles, int slice, SliceScr
   scratch.wideTiles.resize(tiles.tilesPerSlice());
   for (int tc = 0; tc < tiles.tilesC; ++tc) {
     const auto [lo, hi] = tileWindow(tc, layout.nc, 0);
-    cells.assign(layout.nb, Summary{});
-    for (int c = lo; c <= hi; ++c) addLine(layout, c, cells);
+    cells.reset(layout.nb);
+    for (int c = lo; c <= hi; ++c) cells.addLine(layout, c);
     wide = cells;
-    if (lo > 0) addLine(layout, lo - 1, wide);
-    if (hi < layout.nc - 1) addLine(layout, hi + 1, wide);
+    if (lo > 0) wide.addLine(layout, lo - 1);
+    if (hi < layout.nc - 1) wide.addLine(layout, hi + 1);
     for (int tb = 0; tb < tiles.tilesB; ++tb) {
       const std::size_t n = std::size_t(tc) * tiles.tilesB + tb;
-      scratch.cellTiles[n] = summaryOver(cells, tileWindow(tb, layout.nb, 0));
-      scratch.wideTiles[n] = summaryOver(wide, tileWindow(tb, layout.nb, 1));
+      scratch.cellTiles[n] = cells.over(tileWindow(tb, layout.nb, 0));
+      scratch.wideTiles[n] = wide.over(tileWindow(tb, layout.nb, 1));
     }
   }
   pack(tiles, slice, scratch.cellTiles, tiles.cells);

@@ -18,10 +18,12 @@ struct ExactRange {
   int lo = kDensityLevels, hi = -1;
 };
 
-// The voxels tile (tb, tc) of `slice` reads, grown by `reach` voxels (0: cells, 1: mean filter).
-ExactRange exactRange(const Volume& volume, const SliceTiles& t, int slice, int tc, int tb, int reach) {
+// Calls visit(voxel) for the voxels tile (tb, tc) of `slice` reads, grown by `reach` voxels (0: cells,
+// 1: mean filter).
+template <class Visit>
+void forEachVoxelOfTile(const Volume& volume, const SliceTiles& t, int slice, int tc, int tb, int reach,
+                        Visit&& visit) {
   const int nb = volume.dims[t.axisB], nc = volume.dims[t.axisC];
-  ExactRange r;
   for (int c = std::max(tc * kTileSize - reach, 0);
        c <= std::min(tc * kTileSize + kTileSize + reach, nc - 1); ++c)
     for (int b = std::max(tb * kTileSize - reach, 0);
@@ -30,10 +32,16 @@ ExactRange exactRange(const Volume& volume, const SliceTiles& t, int slice, int 
       v[int(t.axis)] = slice;
       v[t.axisB] = b;
       v[t.axisC] = c;
-      const int d = volume.densityAt(v.x, v.y, v.z);
-      r.lo = std::min(r.lo, d);
-      r.hi = std::max(r.hi, d);
+      visit(volume.voxels[volume.indexOf(v.x, v.y, v.z)]);
     }
+}
+
+ExactRange exactRange(const Volume& volume, const SliceTiles& t, int slice, int tc, int tb, int reach) {
+  ExactRange r;
+  forEachVoxelOfTile(volume, t, slice, tc, tb, reach, [&](Voxel voxel) {
+    r.lo = std::min(r.lo, densityOf(voxel));
+    r.hi = std::max(r.hi, densityOf(voxel));
+  });
   return r;
 }
 
@@ -105,6 +113,70 @@ void checkTiles(const Volume& volume, Axis axis, const std::vector<int>& spikes)
           if (table.anyVisible(wide.lo, wide.hi))
             ASSERT_TRUE(visibleBit(byGroup, Filter::mean, t, slice, tc, tb)) << density;
         }
+  }
+}
+
+// With labels: per tile the unlabelled and the labelled voxels' exact ranges and the labels that
+// occur (bit L for label L, bit 0 for unlabelled voxels).
+struct ExactLabelledTile {
+  ExactRange unlabelled, labelled;
+  std::uint16_t bits = 0;
+};
+
+ExactLabelledTile exactLabelledTile(const Volume& volume, const SliceTiles& t, int slice, int tc, int tb,
+                                    int reach) {
+  ExactLabelledTile tile;
+  forEachVoxelOfTile(volume, t, slice, tc, tb, reach, [&](Voxel voxel) {
+    ExactRange& range = labelOf(voxel) == 0 ? tile.unlabelled : tile.labelled;
+    range.lo = std::min(range.lo, densityOf(voxel));
+    range.hi = std::max(range.hi, densityOf(voxel));
+    tile.bits |= std::uint16_t(1u << labelOf(voxel));
+  });
+  return tile;
+}
+
+void expectHolds(const PackedRanges& packed, TileRef ref, const ExactRange& exact) {
+  if (exact.lo > exact.hi) {
+    EXPECT_TRUE(packed.empty(ref));
+    return;
+  }
+  EXPECT_LE(packed.lowest(ref), exact.lo);
+  EXPECT_GE(packed.highest(ref), exact.hi);
+  if (packed.scale[ref.group].shift == 0) {
+    EXPECT_EQ(packed.lowest(ref), exact.lo);
+    EXPECT_EQ(packed.highest(ref), exact.hi);
+  }
+}
+
+// Labels in some lines only (most lines of a scan hold none), several labels in a line, a label
+// everywhere in the last slice: the tiles keep both ranges and the labels exactly as the voxels are.
+TEST(TileClassification, LabelledTilesHoldTheExactRangesOfBothKindsAndTheirLabels) {
+  Volume volume = mixedVolume();
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> label(1, kMaxLabel);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 29; ++j)
+      for (int i = 0; i < 37; ++i) {
+        Voxel& v = volume.voxels[volume.indexOf(i, j, k)];
+        const bool labelled = k == 4 || (j % 7 == 3 && (i + k) % 3 == 0) || (i == 20 && j > 10);
+        if (labelled) v = Voxel(densityOf(v) | label(random) << 12);
+      }
+  for (const Axis axis : {Axis::k, Axis::j, Axis::i}) {
+    const SliceTiles t = buildSliceTiles(volume, axis);
+    ASSERT_TRUE(t.labelled);
+    for (int slice = 0; slice < t.slices; ++slice)
+      for (int tc = 0; tc < t.tilesC; ++tc)
+        for (int tb = 0; tb < t.tilesB; ++tb)
+          for (const int reach : {0, 1}) {
+            SCOPED_TRACE(testing::Message() << "axis " << int(axis) << " slice " << slice << " tile "
+                                            << tc << "," << tb << " reach " << reach);
+            const TileRanges& ranges = reach ? t.wide : t.cells;
+            const TileRef ref = t.ref(slice, tc, tb);
+            const ExactLabelledTile exact = exactLabelledTile(volume, t, slice, tc, tb, reach);
+            expectHolds(ranges.unlabelled, ref, exact.unlabelled);
+            expectHolds(ranges.labelled, ref, exact.labelled);
+            EXPECT_EQ(ranges.labelBits[ref.tile], exact.bits);
+          }
   }
 }
 
