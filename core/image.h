@@ -2,42 +2,16 @@
 // A rendered image: linear RGBA floats (accumulated color C and opacity A of the rendering model),
 // row 0 at the top.
 #include <cstdint>
-#include <memory>
-#include <new>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "core/uninitialised_allocator.h"
+
 namespace angio {
 
-// Allocates like std::allocator but leaves elements made without a value uninitialised, so that
-// growing a frame's pixels (resize) neither writes nor touches its memory: the pages are first
-// touched by the render threads that write the pixels, between their cancellation checks, instead
-// of in one uninterruptible zero fill before the first ray (a 39 MB high frame: tens of ms).
-template <class T>
-struct UninitialisedAllocator : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = UninitialisedAllocator<U>;
-  };
-  UninitialisedAllocator() = default;
-  template <class U>
-  UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
-
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
 // Row-major, row 0 at the top. resize() leaves new pixels unset; assign() sets them.
-using Pixels = std::vector<glm::vec4, UninitialisedAllocator<glm::vec4>>;
+using Pixels = UninitialisedVector<glm::vec4>;
 
 struct Image {
   int width = 0;

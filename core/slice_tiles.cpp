@@ -253,12 +253,23 @@ void summariseSlices(const Volume& volume, SliceTiles& tiles, const std::vector<
 
 // The label parts of ranges whose slices hold no label: no labelled voxel (an empty range in an
 // empty group, as packSlice writes it) and only bit 0 (every tile has voxels).
+// Filled in parallel, so that the threads touch the new pages (core/uninitialised_allocator.h).
 void fillWithoutLabels(TileRanges& ranges) {
   const std::size_t count = ranges.unlabelled.minOffset.size();
-  ranges.labelled.minOffset.assign(count, PackedRanges::kEmptyMin);
-  ranges.labelled.maxOffset.assign(count, PackedRanges::kEmptyMax);
-  ranges.labelled.scale.assign(ranges.unlabelled.scale.size(), PackedRanges::Scale{});
-  ranges.labelBits.assign(count, std::uint16_t(1));
+  PackedRanges& labelled = ranges.labelled;
+  labelled.minOffset.resize(count);
+  labelled.maxOffset.resize(count);
+  ranges.labelBits.resize(count);
+  labelled.scale.assign(ranges.unlabelled.scale.size(), PackedRanges::Scale{});
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, count), [&](const tbb::blocked_range<std::size_t>& part) {
+        const auto from = std::ptrdiff_t(part.begin()), to = std::ptrdiff_t(part.end());
+        std::fill(labelled.minOffset.begin() + from, labelled.minOffset.begin() + to,
+                  PackedRanges::kEmptyMin);
+        std::fill(labelled.maxOffset.begin() + from, labelled.maxOffset.begin() + to,
+                  PackedRanges::kEmptyMax);
+        std::fill(ranges.labelBits.begin() + from, ranges.labelBits.begin() + to, std::uint16_t(1));
+      });
 }
 
 void dropLabels(TileRanges& ranges) {

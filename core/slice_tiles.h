@@ -14,6 +14,7 @@
 
 #include "core/render_params.h"
 #include "core/transfer_function.h"
+#include "core/uninitialised_allocator.h"
 #include "core/volume.h"
 
 namespace angio {
@@ -47,8 +48,9 @@ struct PackedRanges {
   };
   static constexpr std::uint8_t kEmptyMin = 0xFF, kEmptyMax = 0;  // min > max: no voxel
 
-  std::vector<std::uint8_t> minOffset;  // per tile
-  std::vector<std::uint8_t> maxOffset;
+  // Per tile; resized without zeroing (every tile is written when its slice is summarised).
+  UninitialisedVector<std::uint8_t> minOffset;
+  UninitialisedVector<std::uint8_t> maxOffset;
   std::vector<Scale> scale;  // per group
 
   // The tile's range; an empty one is [kDensityLevels, -1].
@@ -82,7 +84,8 @@ struct TileRanges {
   PackedRanges unlabelled;  // all voxels, without labels
   // Only for a volume with labels (empty otherwise):
   PackedRanges labelled;
-  std::vector<std::uint16_t> labelBits;  // bit L: a voxel with label L occurs (bit 0: unlabelled)
+  // Bit L: a voxel with label L occurs (bit 0: unlabelled).
+  UninitialisedVector<std::uint16_t> labelBits;
 };
 
 struct SliceTiles {
