@@ -150,12 +150,14 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
   if (data.empty())
     throw InputError(file,
                      "names no voxel data (ElementDataFile is missing or empty; LOCAL or a file name)");
-  // MetaIO reads the name as a C string: a control byte (a NUL) in it leaves it empty, as above.
-  if (std::any_of(data.begin(), data.end(),
-                  [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; }))
+  // MetaIO reads the name as a C string: a control byte (a NUL) in it leaves it empty, as above;
+  // it also strips unprintable bytes from its end (a name of only such bytes is empty too).
+  const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; };
+  if (std::any_of(data.begin(), data.end(), control) || static_cast<unsigned char>(data.back()) >= 0x80)
     throw InputError(file, "names its voxel data file with control bytes (ElementDataFile = " +
                                shown(data) + "; a damaged header)");
-  if (data == "LIST" || data.find('%') != std::string::npos)
+  // MetaIO reads every name that starts with LIST as a list of files.
+  if (data.rfind("LIST", 0) == 0 || data.find('%') != std::string::npos)
     throw InputError(file, "keeps its voxels in a list of files (ElementDataFile = " + shown(data) +
                                "); only one data file (or LOCAL) is read: convert it to one .mha");
 }

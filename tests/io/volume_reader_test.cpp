@@ -670,6 +670,16 @@ TEST_F(VolumeReaderTest, MetaImageHeaderLinesMetaIoCannotReadAreRefusedBeforeIt)
                    "header line 5 has a field name of 300 characters (MetaIO reads 254)");
   writeMetaImage(dir_ / "long.mha", "2 2 2", "1 1 1", "Comment = " + std::string(600, 'v') + "\n");
   expectInputError(dir_ / "long.mha", "header line 5 has 610 characters (MetaIO reads 499)");
+  // What MetaIO reads differently from the name written: a list (any name starting with LIST), a
+  // name ending in bytes it strips.
+  writeText(dir_ / "list.mha",
+            "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\n"
+            "ElementType = MET_SHORT\nElementDataFile = LIST@L\n");
+  expectInputError(dir_ / "list.mha", "keeps its voxels in a list of files");
+  writeText(dir_ / "high.mha",
+            "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\n"
+            "ElementType = MET_SHORT\nElementDataFile = \x9a\n");
+  expectInputError(dir_ / "high.mha", "names its voxel data file with control bytes");
 }
 
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
