@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "io/input_error.h"
 #include "io/metaimage_header.h"
 #include "io/nifti_header.h"
+#include "io/shown_text.h"
 
 namespace angio {
 
@@ -50,26 +53,18 @@ bool allFinite(const std::vector<double>& values) {
   return true;
 }
 
-// A header value quoted in a message: control bytes shown as '?', at most 80 characters.
-std::string shown(const std::string& value) {
-  std::string text = value.size() > 80 ? value.substr(0, 77) + "..." : value;
-  for (char& c : text)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  return text;
-}
-
 void requireSpacing(const fs::path& file, const std::string& field, const std::vector<double>& spacing,
                     const std::string& text) {
   for (const double s : spacing)
     if (!(s > 0 && s <= kMaxHeaderMm))
-      throw InputError(
-          file, "has a zero, negative or unknown voxel spacing in " + field + " (" + shown(text) + ")");
+      throw InputError(file, "has a zero, negative or unknown voxel spacing in " + field + " (" +
+                                 shownText(text) + ")");
 }
 
 void requireFinite(const fs::path& file, const std::string& field, const std::vector<double>& values,
                    const std::string& text) {
   if (!allFinite(values))
-    throw InputError(file, "has a non-finite or absurd " + field + " (" + shown(text) + ")");
+    throw InputError(file, "has a non-finite or absurd " + field + " (" + shownText(text) + ")");
 }
 
 // Three axis vectors (column-wise) must span space.
@@ -83,8 +78,15 @@ void requireAxes(const fs::path& file, const std::string& field, const std::vect
   for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(axes[c]));
   if (!(std::abs(glm::determinant(axes)) > 1e-12 * scale * scale * scale))
     throw InputError(file, "has an invalid direction matrix: " + field + " does not span 3-D space (" +
-                               shown(text) + ")");
+                               shownText(text) + ")");
 }
+
+// Teem quotes a field line it cannot parse (an unknown field, a value it cannot read) in an error
+// message formatted into a fixed stack buffer of 1025 bytes (biffMsgAddVL, AIR_STRLEN_HUGE): a
+// longer line overflows it and the process aborts. Its messages add at most ~150 characters to the
+// line; real field lines (sizes, space directions, measurement frame) are under 200. Comments and
+// "key:=value" pairs (Slicer's segment metadata can be long) are never quoted.
+constexpr std::size_t kMaxNrrdFieldLine = 768;
 
 // NRRD: "field: value" lines up to the first empty line (or the end of a detached .nhdr).
 void checkNrrd(const fs::path& file) {
@@ -93,13 +95,17 @@ void checkNrrd(const fs::path& file) {
   std::vector<double> directions;
   std::string directionsText;
   for (int lines = 0; lines < 4096 && std::getline(in, line) && line != "" && line != "\r"; ++lines) {
-    if (line.size() > 65536) break;  // binary data, not a header
+    const bool comment = line[0] == '#', keyValue = line.find(":=") != std::string::npos;
+    if (comment || keyValue) continue;
+    if (line.size() > kMaxNrrdFieldLine)
+      throw InputError(file, "header line " + std::to_string(lines + 1) + " has " +
+                                 std::to_string(line.size()) + " characters (a NRRD field has at most " +
+                                 std::to_string(kMaxNrrdFieldLine) + "; a damaged header)");
     const auto colon = line.find(':');
-    if (colon == std::string::npos || line[0] == '#') continue;
+    if (colon == std::string::npos) continue;
     const std::string key = line.substr(0, colon);
     std::string value = line.substr(colon + 1);
     value.erase(0, value.find_first_not_of(" \t"));
-    if (!value.empty() && value[0] == '=') continue;  // "key:=value" pairs are not fields
     if (key == "spacings") {
       // Axes past the third are not spatial (NaN is NRRD's "no spacing" for them).
       std::vector<double> spacings = numbersIn(value);
@@ -119,18 +125,33 @@ void checkNrrd(const fs::path& file) {
       requireFinite(file, "space directions", directions, value);
       for (std::size_t axis = 0; axis + 3 <= directions.size() && directions.size() == 9; axis += 3)
         if (glm::length(glm::dvec3(directions[axis], directions[axis + 1], directions[axis + 2])) == 0)
-          throw InputError(file, "has a zero-length axis in space directions (" + shown(value) + ")");
+          throw InputError(file,
+                           "has a zero-length axis in space directions (" + shownText(value) + ")");
     }
   }
   if (directions.size() == 9) requireAxes(file, "space directions", directions, directionsText);
+}
+
+// MetaIO leaks its stream when it cannot open the data file a header names (relative to the
+// header's folder), so that is checked before it tries.
+void requireReadableDataFile(const fs::path& file, const std::string& dataFile) {
+  const fs::path data =
+      fs::path(dataFile).is_absolute() ? fs::path(dataFile) : file.parent_path() / dataFile;
+  std::error_code error;
+  if (fs::is_directory(data, error))
+    throw InputError(file, "its data file " + quotedText(dataFile) + " is a folder");
+  std::ifstream stream(data, std::ios::binary);
+  if (!stream)
+    throw InputError(
+        file, "its data file " + quotedText(dataFile) + " cannot be read: " + std::strerror(errno));
 }
 
 // MetaIO reads a list of slice files (LIST, or a printf pattern with a range) without saying when
 // one is missing; a CT arrives as one .mha or .mhd + .raw, so only those are read.
 void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
   if (!header.repeated.empty())
-    throw InputError(
-        file, "has the field " + shown(*header.repeated.begin()) + " more than once (a damaged header)");
+    throw InputError(file, "has the field " + shownText(*header.repeated.begin()) +
+                               " more than once (a damaged header)");
   const std::string dims = header.field("NDims");
   if (dims.empty())
     throw InputError(file, "is not a valid MetaImage file (corrupt or truncated header)");
@@ -138,12 +159,12 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
   char* end = nullptr;
   const long ndims = std::strtol(dims.c_str(), &end, 10);
   if (dims.empty() || *end != '\0' || ndims < 1 || ndims > 8)
-    throw InputError(file, "has NDims '" + shown(dims) + "'; need 3");
+    throw InputError(file, "has NDims '" + shownText(dims) + "'; need 3");
   const std::vector<double> sizes = numbersIn(header.field("DimSize"));
   bool whole = sizes.size() == std::size_t(ndims);
   for (const double n : sizes) whole = whole && n >= 1 && n == std::floor(n);
   if (!whole)
-    throw InputError(file, "has DimSize '" + shown(header.field("DimSize")) + "' that is not " +
+    throw InputError(file, "has DimSize '" + shownText(header.field("DimSize")) + "' that is not " +
                                std::to_string(ndims) + " whole numbers >= 1");
   const std::string data = header.field("ElementDataFile");
   // MetaIO takes an empty name for a data file of (size_t) -1 bytes and asks for that much memory.
@@ -155,11 +176,12 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
   const auto control = [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; };
   if (std::any_of(data.begin(), data.end(), control) || static_cast<unsigned char>(data.back()) >= 0x80)
     throw InputError(file, "names its voxel data file with control bytes (ElementDataFile = " +
-                               shown(data) + "; a damaged header)");
+                               shownText(data) + "; a damaged header)");
   // MetaIO reads every name that starts with LIST as a list of files.
   if (data.rfind("LIST", 0) == 0 || data.find('%') != std::string::npos)
-    throw InputError(file, "keeps its voxels in a list of files (ElementDataFile = " + shown(data) +
+    throw InputError(file, "keeps its voxels in a list of files (ElementDataFile = " + shownText(data) +
                                "); only one data file (or LOCAL) is read: convert it to one .mha");
+  if (data != "LOCAL") requireReadableDataFile(file, data);
 }
 
 void checkMetaImage(const fs::path& file) {

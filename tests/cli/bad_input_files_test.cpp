@@ -274,7 +274,7 @@ const BadInput kFiles[] = {
      "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\nElementDataFile = "
      "d%03d.raw 0 "
      "2000000000 1\n"},
-    {RENDER("v.mhd"), "v.mhd", "cannot", "v.mhd",
+    {RENDER("v.mhd"), "v.mhd", "its data file 'missing.raw' cannot be read: No such file", "v.mhd",
      "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\nElementDataFile = "
      "missing.raw\n"},
     {RENDER("v.mha"), "v.mha", "scalar volume", "v.mha",

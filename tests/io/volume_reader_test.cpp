@@ -680,6 +680,38 @@ TEST_F(VolumeReaderTest, MetaImageHeaderLinesMetaIoCannotReadAreRefusedBeforeIt)
             "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\n"
             "ElementType = MET_SHORT\nElementDataFile = \x9a\n");
   expectInputError(dir_ / "high.mha", "names its voxel data file with control bytes");
+  // MetaIO leaks its stream when it cannot open the data file (LeakSanitizer), so ours says it first.
+  const std::string detached =
+      "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_SHORT\n";
+  writeText(dir_ / "missing.mhd", detached + "ElementDataFile = LOCAL0 x = 1\n");
+  expectInputError(dir_ / "missing.mhd", "its data file 'LOCAL0 x = 1' cannot be read: No such file");
+  fs::create_directory(dir_ / "folder.raw");
+  writeText(dir_ / "folder.mhd", detached + "ElementDataFile = folder.raw\n");
+  expectInputError(dir_ / "folder.mhd", "its data file 'folder.raw' is a folder");
+  writeText(dir_ / "data.raw", std::string(16, '\0'));
+  writeText(dir_ / "data.mhd", detached + "ElementDataFile = " + (dir_ / "data.raw").string() + "\n");
+  EXPECT_EQ(readVolume(dir_ / "data.mhd").volume.dims, glm::ivec3(2, 2, 2));
+}
+
+// A 2x2x2 uint8 NRRD with the given extra header lines.
+void writeNrrd(const fs::path& file, const std::string& extra) {
+  writeText(file, "NRRD0004\ntype: unsigned char\ndimension: 3\nsizes: 2 2 2\n" + extra +
+                      "encoding: raw\n\n" + std::string(8, '\x40'));
+}
+
+// Teem quotes a field line it cannot parse in an error formatted into a 1025-byte stack buffer:
+// a long one aborted the process (buffer overflow detected). Long comments and key:=value pairs
+// are not quoted and still load.
+TEST_F(VolumeReaderTest, NrrdFieldLinesTeemWouldOverflowOnAreRefusedBeforeIt) {
+  const std::string longText(3000, 'a');
+  writeNrrd(dir_ / "pairs.nrrd", "# " + longText + "\nSegment0_Name:=" + longText + "\n");
+  EXPECT_EQ(readVolume(dir_ / "pairs.nrrd").volume.dims, glm::ivec3(2, 2, 2));
+  writeNrrd(dir_ / "unknown.nrrd", "not a field: " + longText + "\n");
+  expectInputError(dir_ / "unknown.nrrd",
+                   "header line 5 has 3013 characters (a NRRD field has at most 768; a damaged header)");
+  writeText(dir_ / "sizes.nrrd", "NRRD0004\ntype: unsigned char\ndimension: 3\nsizes: 2 2 2 " +
+                                     longText + "\nencoding: raw\n\n" + std::string(8, '\x40'));
+  expectInputError(dir_ / "sizes.nrrd", "header line 4 has 3013 characters");
 }
 
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
