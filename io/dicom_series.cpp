@@ -11,7 +11,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <gdcmReader.h>
 #include <itkGDCMImageIO.h>
 
 #include "io/dicom_file_walk.h"
@@ -105,25 +104,6 @@ itk::GDCMImageIO::Pointer readSliceHeader(const std::filesystem::path& folder, c
     throw InputError(folder,
                      "slice " + fileName(file) + " is a multi-frame image inside a series of slices");
   return io;
-}
-
-// The patient and study tags of a slice (all slices of a series share them), read up to its pixel
-// data: GDCM's image reader would decode compressed pixels (io/slices_in_child.h).
-StudyInfo studyOf(const std::string& file) {
-  gdcm::Reader reader;
-  reader.SetFileName(file.c_str());
-  const gdcm::Tag pixelData(0x7fe0, 0x0010);
-  if (!reader.ReadUpToTag(pixelData, {pixelData})) return {};
-  const gdcm::DataSet& data = reader.GetFile().GetDataSet();
-  const auto tag = [&](std::uint16_t group, std::uint16_t element) {
-    const gdcm::Tag key(group, element);
-    if (!data.FindDataElement(key)) return std::string();
-    const gdcm::ByteValue* bytes = data.GetDataElement(key).GetByteValue();
-    return bytes ? trimmedDicomValue(std::string(bytes->GetPointer(), bytes->GetLength()))
-                 : std::string();
-  };
-  return {readablePersonName(tag(0x0010, 0x0010)), tag(0x0010, 0x0020),
-          readableDate(tag(0x0008, 0x0020)), tag(0x0008, 0x103e), tag(0x0008, 0x0060)};
 }
 
 // Reads a slice's pixels (rescale slope/intercept applied by GDCM) as encoded voxels into `out`
@@ -273,7 +253,7 @@ DicomSeries scanDicomSeries(const std::filesystem::path& folder, const ReadOptio
     geometry.origin = first.position;
     geometry.direction = glm::dmat3(glm::normalize(first.row), glm::normalize(first.column), normal);
     for (const Slice& slice : slices) result.files.push_back(slice.file);
-    result.study = studyOf(result.files.front());
+    result.study = slices.front().tags.study;
     result.compressed = std::any_of(slices.begin(), slices.end(),
                                     [](const Slice& slice) { return slice.tags.encapsulated; });
     result.description =

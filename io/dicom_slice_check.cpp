@@ -125,6 +125,16 @@ void checkImagePixelModule(const gdcm::DataSet& data, const SliceProblem& proble
   tags.bitsAllocated = *bits;
 }
 
+// The patient and study tags, read with the slice's other tags (GDCM's image reader, which ITK
+// uses for them, would decode compressed pixels: io/slices_in_child.h).
+StudyInfo studyTags(const gdcm::DataSet& data) {
+  const auto tag = [&](std::uint16_t group, std::uint16_t element) {
+    return trimmedDicomValue(valueBytes(data, gdcm::Tag(group, element)).value_or(""));
+  };
+  return {readablePersonName(tag(0x0010, 0x0010)), tag(0x0010, 0x0020),
+          readableDate(tag(0x0008, 0x0020)), tag(0x0008, 0x103e), tag(0x0008, 0x0060)};
+}
+
 std::string trimmed(std::string text) {
   while (!text.empty() && (text.back() == ' ' || text.back() == '\0')) text.pop_back();
   return text;
@@ -290,6 +300,7 @@ DicomSliceTags checkDicomSlice(const fs::path& reported, const fs::path& slice, 
   checkImagePixelModule(data, problem, tags);
   checkRescale(data, problem);
   checkPlacement(data, problem, requirePlacement, tags);
+  tags.study = studyTags(data);
   const gdcm::TransferSyntax syntax = reader.GetFile().GetHeader().GetDataSetTransferSyntax();
   // A deflated data set's offsets are those of the inflated stream; encapsulated pixel data is
   // decoded (and its size checked) by GDCM's codecs.

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "io/study_info.h"
+
 namespace angio {
 
 // What a checked slice says of itself (the values the checks read).
@@ -19,6 +21,7 @@ struct DicomSliceTags {
   glm::dvec3 position{0.0};          // ImagePositionPatient (mm, LPS)
   glm::dvec3 row{0.0}, column{0.0};  // ImageOrientationPatient: direction cosines
   bool encapsulated = false;         // compressed pixel data, whose length cannot be checked up front
+  StudyInfo study;                   // patient and study tags (all slices of a series share them)
 };
 
 // The slice's tags, or an InputError naming `reported` (the folder or file the user gave) and the

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "io/input_error.h"
@@ -108,11 +109,16 @@ const std::string kItemEnd = implicitElement(0xfffe, 0xe00d, 0);
 const std::string kSequenceEnd = implicitElement(0xfffe, 0xe0dd, 0);
 const std::string kModality = implicitElement(0x0008, 0x0060, 2, "CT");
 
+// Writes `bytes` to `file` and walks it.
+std::optional<DicomFileFacts> walkBytes(const fs::path& file, const std::string& bytes) {
+  overwrite(file, bytes);
+  return walkDicomFile(file, file);
+}
+
 // walkDicomFile's refusal of `bytes` ("" if it walks them).
 std::string walkRefusal(const fs::path& file, const std::string& bytes) {
-  overwrite(file, bytes);
   try {
-    walkDicomFile(file, file);
+    walkBytes(file, bytes);
   } catch (const InputError& error) {
     return error.what();
   }
@@ -153,11 +159,7 @@ TEST_F(DicomFileWalkTest, EncapsulatedPixelDataIsSteppedOverFragmentByFragment) 
   const std::string offsets = implicitElement(0xfffe, 0xe000, 0);
   // Fragment bytes that would read as a broken element header if the walk went into them.
   const std::string fragment = implicitElement(0xfffe, 0xe000, 8, "\xff\xd8\xff\xc3\xff\xff\xff\xff");
-  const auto facts = [&](const std::string& bytes) {
-    overwrite(file, bytes);
-    return walkDicomFile(file, file);
-  };
-  const auto walked = facts(kModality + pixels + offsets + fragment + fragment + kSequenceEnd);
+  const auto walked = walkBytes(file, kModality + pixels + offsets + fragment + fragment + kSequenceEnd);
   ASSERT_TRUE(walked.has_value());
   EXPECT_TRUE(walked->hasPixelData);
   EXPECT_NE(walkRefusal(file, kModality + pixels + offsets + fragment)

@@ -4,14 +4,14 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 
 #include <gdcmImageChangeTransferSyntax.h>
 #include <gdcmImageReader.h>
 #include <gdcmImageWriter.h>
+
+#include "tests/support/dicom_tag_patch.h"
 
 namespace angio::test_support {
 
@@ -34,11 +34,7 @@ inline void recompressDicomSlice(const std::filesystem::path& file,
 // Puts two stray bytes before the JPEG frame header (SOF3) of a JPEG lossless slice and grows its
 // fragment to match: libjpeg warns ("Corrupt JPEG data"), and GDCM's codec asserts on the warning.
 inline void strayBytesBeforeJpegFrameHeader(const std::filesystem::path& file) {
-  std::string bytes;
-  {
-    std::ifstream in(file, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = fileBytes(file);
   const std::size_t frameHeader = bytes.find("\xff\xc3");
   const std::size_t fragment = bytes.rfind(std::string("\xfe\xff\x00\xe0", 4), frameHeader);
   if (frameHeader == std::string::npos || fragment == std::string::npos)
@@ -48,7 +44,7 @@ inline void strayBytesBeforeJpegFrameHeader(const std::filesystem::path& file) {
   std::memcpy(&length, bytes.data() + fragment + 4, 4);
   length += 2;
   std::memcpy(bytes.data() + fragment + 4, &length, 4);
-  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  overwrite(file, bytes);
 }
 
 }  // namespace angio::test_support
