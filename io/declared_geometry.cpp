@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -95,7 +96,11 @@ void checkNrrd(const fs::path& file) {
   std::vector<double> directions;
   std::string directionsText;
   for (int lines = 0; lines < 4096 && std::getline(in, line) && line != "" && line != "\r"; ++lines) {
-    const bool comment = line[0] == '#', keyValue = line.find(":=") != std::string::npos;
+    // A plain key/value pair: a ":=" before any ": " (else teem may take it for a field) and no
+    // NUL byte (teem's C strings would end there).
+    const std::size_t assign = line.find(":="), separator = line.find(": ");
+    const bool comment = line[0] == '#',
+               keyValue = assign < separator && line.find('\0') == std::string::npos;
     if (comment || keyValue) continue;
     if (line.size() > kMaxNrrdFieldLine)
       throw InputError(file, "header line " + std::to_string(lines + 1) + " has " +
@@ -106,6 +111,11 @@ void checkNrrd(const fs::path& file) {
     const std::string key = line.substr(0, colon);
     std::string value = line.substr(colon + 1);
     value.erase(0, value.find_first_not_of(" \t"));
+    // ITK keeps sizes as unsigned int; teem allocates what the header says.
+    if (key == "sizes")
+      for (const double size : numbersIn(value))
+        if (size > double(std::numeric_limits<int>::max()))
+          throw InputError(file, "has impossible dimensions (sizes: " + shownText(value) + ")");
     if (key == "spacings") {
       // Axes past the third are not spatial (NaN is NRRD's "no spacing" for them).
       std::vector<double> spacings = numbersIn(value);

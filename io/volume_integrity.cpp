@@ -1,5 +1,7 @@
 #include "io/volume_integrity.h"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <fstream>
@@ -62,9 +64,11 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
   if (found < expected) truncated(file, expected, found);
 }
 
-// Uncompressed length of a gzip file: the trailer's ISIZE (length mod 2^32) when it matches
-// `expected`, else counted by decompressing (multi-member files, truncation, trailing bytes).
-std::uint64_t gzipLength(const std::filesystem::path& file, std::uint64_t expected) {
+// Uncompressed length of the gzip stream from byte `offset` of `file` to its end: the trailer's
+// ISIZE (length mod 2^32) when it matches `expected`, else counted by decompressing (multi-member
+// files, truncation, trailing bytes).
+std::uint64_t gzipLength(const std::filesystem::path& file, std::uint64_t expected,
+                         std::uint64_t offset = 0) {
   {
     std::ifstream in(file, std::ios::binary | std::ios::ate);
     if (in && in.tellg() >= 4) {
@@ -76,8 +80,14 @@ std::uint64_t gzipLength(const std::filesystem::path& file, std::uint64_t expect
       if (in && length == std::uint32_t(expected)) return expected;
     }
   }
-  gzFile gz = gzopen(file.c_str(), "rb");
-  if (!gz) return 0;
+  const int descriptor = ::open(file.c_str(), O_RDONLY);
+  if (descriptor < 0) return 0;
+  gzFile gz = ::lseek(descriptor, off_t(offset), SEEK_SET) == off_t(offset) ? gzdopen(descriptor, "rb")
+                                                                            : nullptr;
+  if (!gz) {
+    ::close(descriptor);
+    return 0;
+  }
   gzbuffer(gz, 1 << 20);
   std::vector<char> chunk(1 << 20);
   std::uint64_t length = 0;
@@ -99,6 +109,22 @@ void requireCompleteNifti(const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+void requireCompleteNrrdData(const std::filesystem::path& file, const VoxelDataLayout& layout,
+                             std::uint64_t voxelBytes) {
+  std::uint64_t found = 0;
+  if (layout.encoding == VoxelEncoding::deflate) {
+    found = gzipLength(layout.dataFile, voxelBytes, layout.fileOffset);
+  } else {
+    std::error_code error;
+    const std::uint64_t size = std::filesystem::file_size(layout.dataFile, error);
+    if (error)
+      throw InputError(file, "its data file " + quotedText(layout.dataFile.filename().string()) +
+                                 " cannot be read: " + error.message());
+    found = size > layout.fileOffset ? size - layout.fileOffset : 0;
+  }
+  if (found < voxelBytes) truncated(file, voxelBytes, found);
+}
 
 void requireCompleteData(const std::filesystem::path& file, VolumeFormat format,
                          std::uint64_t voxelBytes) {

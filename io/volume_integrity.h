@@ -6,13 +6,19 @@
 #include <filesystem>
 
 #include "io/volume_formats.h"
+#include "io/voxel_data_layout.h"
 
 namespace angio {
 
 // Throws InputError naming `file` if it is truncated. `voxelBytes` is the size of the voxel data
 // as ITK reports it for the header (used for MetaImage, whose element sizes ITK knows best).
-// Layouts it cannot check (MetaImage file lists, NRRD, whose reader checks itself) pass.
+// Layouts it cannot check (MetaImage file lists; NRRD: requireCompleteNrrdData) pass.
 void requireCompleteData(const std::filesystem::path& file, VolumeFormat format,
                          std::uint64_t voxelBytes);
+
+// The same for NRRD data that io/ reads itself (raw or gzip, attached or in one data file): teem
+// checks only after allocating the volume, and its gzip reader decompresses up to the end first.
+void requireCompleteNrrdData(const std::filesystem::path& file, const VoxelDataLayout& layout,
+                             std::uint64_t voxelBytes);
 
 }  // namespace angio

@@ -214,6 +214,13 @@ void requireMemoryFor(const std::filesystem::path& file, const OpenedVolume& ope
   requireMemory(file, dims, dims.x * dims.y * dims.z * bytesPerVoxel + extraBytes);
 }
 
+// After the memory check (a header's claim the machine cannot hold is the first thing to say):
+// teem allocates the whole volume before it finds its data short.
+void requireCompleteNrrd(const std::filesystem::path& file, const OpenedVolume& opened) {
+  if (opened.layout && volumeFormatOf(file) == VolumeFormat::nrrd)
+    requireCompleteNrrdData(file, *opened.layout, opened.storedBytes());
+}
+
 // Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will
 // allocate on top of the raw data, for the memory check made before anything is allocated.
 StoredVolume readStoredVolume(const std::filesystem::path& file, double extraBytesPerVoxel,
@@ -221,6 +228,7 @@ StoredVolume readStoredVolume(const std::filesystem::path& file, double extraByt
   return namingFile(file, [&] {
     const OpenedVolume opened = openVolume(file);
     requireMemoryFor(file, opened, extraBytesPerVoxel, double(opened.storedBytes()));
+    requireCompleteNrrd(file, opened);
     report(options, 0.05);
     StoredVolume stored;
     stored.geometry = opened.geometry;
@@ -304,6 +312,7 @@ Volume volumeFromFile(const std::filesystem::path& file, const ReadOptions& opti
   if (opened.layout) {
     // The volume and one slab (1 % of the stored data, see voxel_slab_reader.h).
     requireMemoryFor(file, opened, sizeof(Voxel), 0.02 * double(opened.storedBytes()));
+    requireCompleteNrrd(file, opened);
     report(options, 0.05);
     Volume volume = volumeOn(reorientedGeometry(opened.geometry, plan));
     if (const auto nonFinite = streamIntoVolume(opened, plan, volume, options)) {

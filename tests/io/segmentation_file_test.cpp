@@ -163,7 +163,7 @@ TEST_F(SegmentationFileTest, CorruptOrTruncatedFilesAreErrors) {
   const std::string original = fileContents(file_);
   // Header intact, compressed data cut short.
   std::ofstream(file_, std::ios::binary) << original.substr(0, original.size() - 20);
-  expectLabelsError("cannot be read");
+  expectLabelsError("is truncated: its header promises 72 bytes of voxel data, the file holds 42");
   // A garbled header field.
   std::ofstream(file_, std::ios::binary) << original;
   editHeader("sizes: 6 4 3", "sizes: 6 four 3");
@@ -179,7 +179,7 @@ TEST_F(SegmentationFileTest, UncompressedFileWithShortDataIsAnError) {
   std::string text = header();
   text.replace(text.find("encoding: gzip"), 14, "encoding: raw");
   std::ofstream(file_, std::ios::binary) << text << "\n" << std::string(40, '\1');  // 72 voxels promised
-  expectLabelsError("cannot be read");
+  expectLabelsError("is truncated: its header promises 72 bytes of voxel data, the file holds 40");
 }
 
 TEST_F(SegmentationFileTest, CroppedSegmentationIsAnErrorSayingHowToFixItInSlicer) {

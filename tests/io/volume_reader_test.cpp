@@ -3,6 +3,7 @@
 #include "io/volume_reader.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -712,6 +713,37 @@ TEST_F(VolumeReaderTest, NrrdFieldLinesTeemWouldOverflowOnAreRefusedBeforeIt) {
   writeText(dir_ / "sizes.nrrd", "NRRD0004\ntype: unsigned char\ndimension: 3\nsizes: 2 2 2 " +
                                      longText + "\nencoding: raw\n\n" + std::string(8, '\x40'));
   expectInputError(dir_ / "sizes.nrrd", "header line 4 has 3013 characters");
+  // Teem takes a line for a field when its ": " comes first, and ends it at a NUL byte.
+  writeNrrd(dir_ / "late.nrrd", "content: " + longText + ":=\n");
+  expectInputError(dir_ / "late.nrrd", "header line 5 has 3011 characters");
+  writeNrrd(dir_ / "nul.nrrd", std::string("key\0", 4) + longText + ":=\n");
+  expectInputError(dir_ / "nul.nrrd", "header line 5 has 3006 characters");
+}
+
+// ITK keeps NRRD sizes as unsigned int (42999345910 became 49672950) while teem allocates what the
+// header says; and teem allocates the whole volume before it finds the data short.
+TEST_F(VolumeReaderTest, NrrdSizesAndDataAreCheckedBeforeTeemAllocates) {
+  writeText(dir_ / "huge.nrrd",
+            "NRRD0004\ntype: short\ndimension: 3\nsizes: 2 42999345910 4\n"
+            "encoding: raw\n\n" +
+                std::string(16, '\0'));
+  expectInputError(dir_ / "huge.nrrd", "has impossible dimensions (sizes: 2 42999345910 4)");
+  const std::string header = "NRRD0004\ntype: short\ndimension: 3\nsizes: 20 20 20\nendian: little\n";
+  writeText(dir_ / "short.nrrd", header + "encoding: raw\n\n" + std::string(100, '\0'));
+  expectInputError(dir_ / "short.nrrd",
+                   "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
+  writeText(dir_ / "short-gzip.nrrd", header + "encoding: gzip\n\n");
+  gzFile gz = gzopen((dir_ / "short-gzip.nrrd").c_str(), "ab");
+  ASSERT_NE(gz, nullptr);
+  ASSERT_EQ(gzwrite(gz, std::string(100, '\0').data(), 100), 100);
+  gzclose(gz);
+  expectInputError(dir_ / "short-gzip.nrrd",
+                   "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
+  writeText(dir_ / "whole-gzip.nrrd", header + "encoding: gzip\n\n");
+  gz = gzopen((dir_ / "whole-gzip.nrrd").c_str(), "ab");
+  ASSERT_EQ(gzwrite(gz, std::string(16000, '\0').data(), 16000), 16000);
+  gzclose(gz);
+  EXPECT_EQ(readVolume(dir_ / "whole-gzip.nrrd").volume.dims, glm::ivec3(20, 20, 20));
 }
 
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
