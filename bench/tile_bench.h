@@ -1,8 +1,9 @@
 #pragma once
 // Timing of the slice tiles' summaries (core/slice_tiles.h), which the renderer builds after a load,
 // an axis change or a label change: the whole volume without labels, then with labels (those of a
-// label volume, or "bone" = every voxel above 300 HU, roughly what bone removal marks), N runs each,
-// median, min and max of wall and process CPU time.
+// label volume, or "bone" = every voxel above 300 HU, roughly what bone removal marks), then the
+// same labels as a label change's overlay on the volume without them (what a label job builds
+// ahead; about j or k only), N runs each, median, min and max of wall and process CPU time.
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@
 namespace angio {
 
 struct TileBenchRow {
-  std::string what;  // "plain", "labelled"
+  std::string what;  // "plain", "labelled", "ahead" (the labels as a label change's overlay)
   double labelledPercent = 0;
   int runs = 0;
   double medianMs = 0, minMs = 0, maxMs = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
 #include <type_traits>
 
 #include <tbb/blocked_range.h>
@@ -131,6 +132,41 @@ SliceLayout sliceLayout(const Volume& volume, const SliceTiles& tiles, int slice
           volume.dims[tiles.axisC]};
 }
 
+// A slice about j or k is made of `count` runs of `length` voxels along i, run r starting at
+// Volume::voxels[first + r * step] (the rows j of a k slice, the rows i of each k of a j slice).
+struct SliceRuns {
+  std::size_t first = 0, step = 0;
+  int count = 0, length = 0;
+};
+
+SliceRuns sliceRuns(const Volume& volume, Axis axis, int slice) {
+  const std::size_t row = std::size_t(volume.dims.x), plane = row * volume.dims.y;
+  if (axis == Axis::k) return {slice * plane, row, volume.dims.y, volume.dims.x};
+  return {slice * row, plane, volume.dims.z, volume.dims.x};
+}
+
+// One slice as the volume will hold it once `overlay` is written, copied run after run into
+// `buffer`; the overlay's voxels of the slice are found by one search, then a walk.
+SliceLayout overlaidSlice(const Volume& volume, const SliceTiles& tiles, const LabelOverlay& overlay,
+                          int slice, std::vector<Voxel>& buffer) {
+  const SliceRuns runs = sliceRuns(volume, tiles.axis, slice);
+  const std::size_t length = std::size_t(runs.length);
+  buffer.resize(length * runs.count);
+  const std::vector<std::size_t>& changed = overlay.voxels;
+  auto next = std::lower_bound(changed.begin(), changed.end(), runs.first);
+  for (int r = 0; r < runs.count; ++r) {
+    const std::size_t start = runs.first + r * runs.step;
+    Voxel* run = buffer.data() + r * length;
+    std::copy_n(volume.voxels.data() + start, length, run);
+    if (next != changed.end() && *next < start) next = std::lower_bound(next, changed.end(), start);
+    for (; next != changed.end() && *next < start + length; ++next)
+      run[*next - start] = withLabel(run[*next - start], overlay.labels[next - changed.begin()]);
+  }
+  const auto stride = [&](int axis) { return axis == 0 ? std::size_t(1) : length; };
+  return {buffer.data(), stride(tiles.axisB), stride(tiles.axisC), volume.dims[tiles.axisB],
+          volume.dims[tiles.axisC]};
+}
+
 // The summaries of every b column of one tile row, one array per quantity, so that adding a line
 // (contiguous when rotating about k) vectorises.
 struct PlainColumns {
@@ -205,8 +241,8 @@ struct SliceScratch {
 // One slice's tiles, separably: per tile row, every b column over the row's c window, then each
 // tile over its b window; the mean filter's window adds one line before and after. Then packed.
 template <class Summary>
-void summariseSlice(const Volume& volume, SliceTiles& tiles, int slice, SliceScratch<Summary>& scratch) {
-  const SliceLayout layout = sliceLayout(volume, tiles, slice);
+void summariseSlice(const SliceLayout& layout, SliceTiles& tiles, int slice,
+                    SliceScratch<Summary>& scratch) {
   auto &cells = scratch.cellColumns, &wide = scratch.wideColumns;
   scratch.cellTiles.resize(tiles.tilesPerSlice());
   scratch.wideTiles.resize(tiles.tilesPerSlice());
@@ -227,17 +263,21 @@ void summariseSlice(const Volume& volume, SliceTiles& tiles, int slice, SliceScr
   pack(tiles, slice, scratch.wideTiles, tiles.wide);
 }
 
+// Where the voxels of a slice are read: in the volume, or in a buffer of the worker's.
+using SliceSource = std::function<SliceLayout(int slice, std::vector<Voxel>& buffer)>;
+
 // Summarises `slices` (indices along the axis) into the allocated ranges of `tiles`.
 template <class Summary>
-void summariseSlices(const Volume& volume, SliceTiles& tiles, const std::vector<int>& slices,
+void summariseSlices(const SliceSource& source, SliceTiles& tiles, const std::vector<int>& slices,
                      const std::function<void(double)>& progress) {
   std::mutex reporting;  // progress is called one at a time, with growing fractions
   std::size_t slicesDone = 0;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slices.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       SliceScratch<Summary> scratch;
+                      std::vector<Voxel> buffer;
                       for (std::size_t n = range.begin(); n != range.end(); ++n)
-                        summariseSlice(volume, tiles, slices[n], scratch);
+                        summariseSlice(source(slices[n], buffer), tiles, slices[n], scratch);
                       if (!progress) return;
                       const std::lock_guard<std::mutex> lock(reporting);
                       slicesDone += range.size();
@@ -245,10 +285,14 @@ void summariseSlices(const Volume& volume, SliceTiles& tiles, const std::vector<
                     });
 }
 
-void summariseSlices(const Volume& volume, SliceTiles& tiles, const std::vector<int>& slices,
+void summariseSlices(const SliceSource& source, SliceTiles& tiles, const std::vector<int>& slices,
                      const std::function<void(double)>& progress = {}) {
-  if (tiles.labelled) summariseSlices<LabelledSummary>(volume, tiles, slices, progress);
-  else summariseSlices<PlainSummary>(volume, tiles, slices, progress);
+  if (tiles.labelled) summariseSlices<LabelledSummary>(source, tiles, slices, progress);
+  else summariseSlices<PlainSummary>(source, tiles, slices, progress);
+}
+
+SliceSource volumeSlices(const Volume& volume, const SliceTiles& tiles) {
+  return [&](int slice, std::vector<Voxel>&) { return sliceLayout(volume, tiles, slice); };
 }
 
 // The label parts of ranges whose slices hold no label: no labelled voxel (an empty range in an
@@ -329,10 +373,8 @@ std::size_t bytesOf(const TileRanges& r) {
          r.labelBits.size() * sizeof(std::uint16_t);
 }
 
-}  // namespace
-
-SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
-                           const std::function<void(double)>& progress) {
+// Tiles of the volume's size about `axis`, allocated (with label parts if `labelled`), not filled.
+SliceTiles allocatedTiles(const Volume& volume, Axis axis, bool labelled) {
   SliceTiles tiles;
   tiles.axis = axis;
   tiles.axisB = (int(axis) + 1) % 3;
@@ -340,12 +382,46 @@ SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
   tiles.slices = volume.dims[int(axis)];
   tiles.tilesB = (volume.dims[tiles.axisB] + kTileSize - 1) / kTileSize;
   tiles.tilesC = (volume.dims[tiles.axisC] + kTileSize - 1) / kTileSize;
-  tiles.labelled = anyLabel(volume);
+  tiles.labelled = labelled;
   allocate(tiles, tiles.cells);
   allocate(tiles, tiles.wide);
+  return tiles;
+}
+
+std::vector<int> allSlices(const SliceTiles& tiles) {
   std::vector<int> slices(std::size_t(tiles.slices));
   std::iota(slices.begin(), slices.end(), 0);
-  summariseSlices(volume, tiles, slices, progress);
+  return slices;
+}
+
+}  // namespace
+
+SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
+                           const std::function<void(double)>& progress) {
+  SliceTiles tiles = allocatedTiles(volume, axis, anyLabel(volume));
+  summariseSlices(volumeSlices(volume, tiles), tiles, allSlices(tiles), progress);
+  return tiles;
+}
+
+bool overlaySummarisedAbout(Axis axis) { return axis != Axis::i; }
+
+SliceTiles buildSliceTiles(const Volume& volume, Axis axis, const LabelOverlay& overlay,
+                           const std::function<void(double)>& progress) {
+  if (!overlaySummarisedAbout(axis))
+    throw std::invalid_argument("buildSliceTiles: a label overlay is not summarised about i");
+  const bool overlayLabels = std::any_of(overlay.labels.begin(), overlay.labels.end(),
+                                         [](std::uint8_t label) { return label != 0; });
+  SliceTiles tiles = allocatedTiles(volume, axis, overlayLabels || anyLabel(volume));
+  const SliceSource source = [&](int slice, std::vector<Voxel>& buffer) {
+    return overlaidSlice(volume, tiles, overlay, slice, buffer);
+  };
+  summariseSlices(source, tiles, allSlices(tiles), progress);
+  // The overlay took the volume's last labels away: as a build of the volume without labels.
+  if (tiles.labelled && !anyLabelOutside(tiles, {})) {
+    tiles.labelled = false;
+    dropLabels(tiles.cells);
+    dropLabels(tiles.wide);
+  }
   return tiles;
 }
 
@@ -362,7 +438,7 @@ void refreshSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vecto
       else dropLabels(*ranges);
     }
   }
-  summariseSlices(volume, tiles, slices);
+  summariseSlices(volumeSlices(volume, tiles), tiles, slices);
 }
 
 std::vector<int> slicesHolding(const Volume& volume, Axis axis, const std::vector<std::size_t>& voxels) {

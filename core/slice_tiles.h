@@ -125,6 +125,22 @@ struct SliceTiles {
 SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
                            const std::function<void(double)>& progress = {});
 
+// Labels for some voxels, not yet written into the volume: a label change whose tiles are built
+// ahead, while renderers still read the volume as it is.
+struct LabelOverlay {
+  const std::vector<std::size_t>& voxels;   // ascending indices into Volume::voxels
+  const std::vector<std::uint8_t>& labels;  // the label of each
+};
+
+// Whether buildSliceTiles takes an overlay for `axis`: where a slice's voxels lie in runs along i
+// (rotation about j or k); about i each voxel of a slice would be looked up alone.
+bool overlaySummarisedAbout(Axis axis);
+
+// buildSliceTiles of the volume as it will be once `overlay`'s labels are written, read from
+// `volume` as it is (which is left alone). Needs overlaySummarisedAbout(axis).
+SliceTiles buildSliceTiles(const Volume& volume, Axis axis, const LabelOverlay& overlay,
+                           const std::function<void(double)>& progress = {});
+
 // Summarises `slices` of `tiles` again from `volume`, whose voxels in no other slice changed since
 // the tiles were built (e.g. a label change in those slices): the tiles are then equal to
 // buildSliceTiles(volume, tiles.axis), in a time proportional to the slices refreshed.

@@ -16,6 +16,7 @@ constexpr int kLabelCount = kMaxLabel + 1;  // label 0 (none) included
 
 constexpr int densityOf(Voxel v) { return v & 0x0FFF; }
 constexpr int labelOf(Voxel v) { return v >> 12; }
+constexpr Voxel withLabel(Voxel v, int label) { return Voxel(densityOf(v) | (label << 12)); }
 constexpr double huOfDensity(double d) { return d - kHuOffset; }
 
 // A voxel's density as every voxel reads when no label is hidden.

@@ -224,7 +224,9 @@ class App {
   void growOnClick();  // right after drawViewport: a click with the grow tool on
   void startLabelRead(const std::string& file);
   void saveLabels(const std::string& file);
-  void changeLabels(const LabelChange& change, bool undo);  // stops the renderer meanwhile
+  // Stops the renderer meanwhile; `tilesAfter`: the slice tiles of the changed volume, if a job
+  // built them ahead (else the renderer refreshes the slices the change touched).
+  void changeLabels(const LabelChange& change, bool undo, std::shared_ptr<SliceTiles> tilesAfter = {});
   void resetLabels();                   // a new dataset: its own labels, counted anew
   std::string exportLabelFile() const;  // the label file exports name ("" = none or unsaved)
   std::optional<UnsavedLabels> unsavedLabels() const;  // labels an export must write beside it

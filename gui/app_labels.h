@@ -5,26 +5,36 @@
 // is the document's (its main TF's label list). Drawn by gui/panel_labels.cpp, run by
 // gui/app_labels.cpp.
 #include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/slice_tiles.h"
 #include "gui/background_job.h"
 #include "gui/label_change.h"
 #include "gui/panel_labels.h"
 
 namespace angio {
 
+// A label job's change, with the slice tiles of the changed volume when the job built them
+// ahead (see tilesAheadOf in gui/app_labels.cpp), so that the renderer need not after it.
+struct LabelJobResult {
+  LabelChange change;
+  std::shared_ptr<SliceTiles> tiles;
+};
+
 struct LabelsPanel {
   LabelsPanelUi ui;
-  BackgroundJob<LabelChange> job;  // its result is applied as one undo step
-  std::string jobWhat;             // e.g. "removing bone and table"
-  std::string fileRead;            // the label file the job reads ("" = another job)
+  BackgroundJob<LabelJobResult> job;  // its change is applied as one undo step
+  std::string jobWhat;                // e.g. "removing bone and table"
+  std::string fileRead;               // the label file the job reads ("" = another job)
   std::vector<LabelChange> undo, redo;
   LabelCounts voxels{};
   std::future<LabelCounts> counting;  // after a dataset change
   bool counted = false;
-  bool dirty = false;       // changed since loaded or saved
-  std::string pendingFile;  // the start's label file, read once the dataset is there
+  bool dirty = false;            // changed since loaded or saved
+  bool tilesBuiltAhead = false;  // the last change applied came with its slice tiles
+  std::string pendingFile;       // the start's label file, read once the dataset is there
   std::string error;
 };
 

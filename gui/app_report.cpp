@@ -107,6 +107,7 @@ nlohmann::json App::labelsReport() const {
           {"dirty", labels_.dirty},
           {"undo", labels_.undo.size()},
           {"redo", labels_.redo.size()},
+          {"tiles_built_ahead", labels_.tilesBuiltAhead},
           {"error", labels_.error}};
 }
 

@@ -36,7 +36,7 @@ void apply(const LabelChange& change, bool undo, Volume& volume, LabelCounts& co
     Voxel& voxel = volume.voxels[change.voxels[m]];
     --counts[labelOf(voxel)];
     ++counts[to[m]];
-    voxel = Voxel(densityOf(voxel) | (to[m] << 12));
+    voxel = withLabel(voxel, to[m]);
   }
 }
 

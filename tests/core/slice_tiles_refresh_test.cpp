@@ -1,5 +1,6 @@
 // After a label change the renderer refreshes only the slices of its tiles that the change
-// touched (core/slice_tiles.h refreshSliceTiles). Checked against the tiles built from scratch
+// touched (core/slice_tiles.h refreshSliceTiles), or takes tiles built ahead with the change's
+// labels as an overlay. Checked against the tiles built from scratch
 // on the changed volume, array by array, for every rotation axis, for changes that add the first
 // label, add more, and take the last away.
 #include <gtest/gtest.h>
@@ -98,6 +99,35 @@ TEST(SliceTilesRefresh, ASliceLeftOutStaysAsItWas) {
                          built.cells.labelBits.begin()));
   EXPECT_FALSE(std::equal(tiles.cells.labelBits.begin() + firstOfSlice7, tiles.cells.labelBits.end(),
                           built.cells.labelBits.begin() + firstOfSlice7));
+}
+
+// Built ahead from the volume as it is and the change's labels (the volume left alone), the tiles
+// equal a build from scratch on the changed volume: the first labels, more, the last taken away.
+TEST(SliceTilesAhead, AnOverlayBuildEqualsABuildOfTheChangedVolume) {
+  for (const Axis axis : {Axis::j, Axis::k}) {
+    SCOPED_TRACE(toString(axis));
+    Volume volume = smallPhantom();
+    const std::vector<std::size_t> first = boxVoxels(volume, {3, 4, 5}, {9, 8, 7});
+    std::vector<std::size_t> second = boxVoxels(volume, {20, 10, 12}, {30, 25, 20});
+    std::vector<std::uint8_t> labels(second.size());
+    for (std::size_t n = 0; n < labels.size(); ++n) labels[n] = std::uint8_t(1 + n % 5);
+    for (const auto& [voxels, labelled] :
+         {std::pair{first, std::vector<std::uint8_t>(first.size(), 2)}, std::pair{second, labels},
+          std::pair{second, std::vector<std::uint8_t>(second.size(), 0)},
+          std::pair{first, std::vector<std::uint8_t>(first.size(), 0)}}) {
+      const std::vector<Voxel> before = volume.voxels;
+      const SliceTiles ahead = buildSliceTiles(volume, axis, LabelOverlay{voxels, labelled});
+      EXPECT_EQ(volume.voxels, before);
+      for (std::size_t n = 0; n < voxels.size(); ++n)
+        volume.voxels[voxels[n]] = withLabel(volume.voxels[voxels[n]], labelled[n]);
+      expectSameTiles(ahead, buildSliceTiles(volume, axis));
+    }
+    EXPECT_FALSE(buildSliceTiles(volume, axis).labelled);  // the last step took every label away
+  }
+  const std::vector<std::size_t> none;
+  const std::vector<std::uint8_t> noLabels;
+  EXPECT_THROW(buildSliceTiles(smallPhantom(), Axis::i, LabelOverlay{none, noLabels}),
+               std::invalid_argument);
 }
 
 TEST(SliceTilesRefresh, SlicesHoldingAreThoseOfTheVoxelsAlongEachAxis) {

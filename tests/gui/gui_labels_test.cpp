@@ -125,7 +125,8 @@ TEST_F(GuiLabels, AnExportWithUnsavedLabelsWritesThemBesideItAndItsSidecarRender
 }
 
 // A label change keeps the renderer's slice tiles and refreshes the slices it touched
-// (render/frame_renderer.h TilesAhead): the images shown after it are those of a fresh start with
+// (render/frame_renderer.h TilesAhead), or, over most slices, comes with tiles its job built
+// (core/slice_tiles.h LabelOverlay): the images shown after it are those of a fresh start with
 // the same labels. Removal hides bone and table; its undo gives them back, which tiles that missed
 // the undo would skip as hidden.
 TEST_F(GuiLabels, ImagesAfterARemovalAndItsUndoAreThoseOfAFreshStart) {
@@ -148,6 +149,9 @@ TEST_F(GuiLabels, ImagesAfterARemovalAndItsUndoAreThoseOfAFreshStart) {
   ASSERT_EQ(changes.exitCode, 0) << changes.output;
   const Json undone = readJson("undone.json")["runtime"];
   ASSERT_EQ(undone["labels"]["redo"], 1) << undone["labels"];
+  // The removal touched every slice: its job built the tiles; the undo's renderer refreshed them.
+  EXPECT_TRUE(removed["labels"]["tiles_built_ahead"].get<bool>());
+  EXPECT_FALSE(undone["labels"]["tiles_built_ahead"].get<bool>());
   ASSERT_EQ(removed["shown"]["level"], "high");
   ASSERT_EQ(undone["shown"]["level"], "high");
   EXPECT_NE(removed["shown"]["checksum"], fresh["checksum"]);  // the bone went
