@@ -227,6 +227,8 @@ class App {
   // Stops the renderer meanwhile; `tilesAfter`: the slice tiles of the changed volume, if a job
   // built them ahead (else the renderer refreshes the slices the change touched).
   void changeLabels(const LabelChange& change, bool undo, std::shared_ptr<SliceTiles> tilesAfter = {});
+  void stepLabels(bool undo);
+  void finishLabelStep(LabelJobResult result, bool cancelled);
   void resetLabels();                   // a new dataset: its own labels, counted anew
   std::string exportLabelFile() const;  // the label file exports name ("" = none or unsaved)
   std::optional<UnsavedLabels> unsavedLabels() const;  // labels an export must write beside it

@@ -36,35 +36,34 @@ void addStyle(std::vector<LabelStyle>& styles, int label) {
 // the rest (about 16 s and 1 s at 512x512x1200).
 constexpr double kSegmentationShare = 0.94;
 
-// The slice tiles of the volume as `change` leaves it, for rotation about `axis`, built in the job
-// that made the change, while the renderer still shows the volume as it is: for a change over
-// more than half of the slices (bone removal, a label file), which the renderer would otherwise
-// summarise again in the first frame after it, uncancellable (about 1-2 s at 512x512x1200).
-// A smaller change (a grown region) is refreshed there in a time proportional to its slices.
-std::shared_ptr<SliceTiles> tilesAheadOf(const Volume& volume, Axis axis, const LabelChange& change,
-                                         const std::function<void(double)>& progress = {}) {
-  if (!overlaySummarisedAbout(axis) ||
-      2 * slicesHolding(volume, axis, change.voxels).size() <= std::size_t(volume.dims[int(axis)]))
-    return nullptr;
-  return std::make_shared<SliceTiles>(
-      buildSliceTiles(volume, axis, LabelOverlay{change.voxels, change.after}, progress));
+// Whether a change's slice tiles are built ahead, in a job, while the renderer still shows the
+// volume as it is: for a change over more than half of the slices about `axis` (bone removal, a
+// label file, their undo), which the renderer would otherwise summarise again in the first frame
+// after it, uncancellable (1.5-2.3 s at 512x512x1200). A smaller change (a grown region) is
+// refreshed there in a time proportional to its slices.
+bool tilesBuiltAhead(const Volume& volume, Axis axis, const LabelChange& change) {
+  return overlaySummarisedAbout(axis) &&
+         2 * slicesHolding(volume, axis, change.voxels).size() > std::size_t(volume.dims[int(axis)]);
 }
 
 struct JobCancelled {};
 
-// A job's change with its tiles ahead, which fill the job's progress bar from `progressFrom` on;
-// nothing if the job is cancelled meanwhile.
+// A job's change with the tiles of the volume it leaves (its labels after; with `undo` before)
+// when tilesBuiltAhead; they fill the job's progress bar from `progressFrom` on. A cancel meanwhile
+// leaves the change without tiles.
 LabelJobResult withTilesAhead(const Volume& volume, Axis axis, LabelChange change, JobControl& control,
-                              double progressFrom = 0) {
+                              double progressFrom = 0, bool undo = false) {
+  if (!tilesBuiltAhead(volume, axis, change)) return {std::move(change), nullptr};
   const auto building = [&control, progressFrom](double fraction) {
     control.progress.store(progressFrom + (1 - progressFrom) * fraction);
     if (control.cancel.load()) throw JobCancelled();
   };
   try {
-    std::shared_ptr<SliceTiles> tiles = tilesAheadOf(volume, axis, change, building);
+    const LabelOverlay overlay{change.voxels, undo ? change.before : change.after};
+    auto tiles = std::make_shared<SliceTiles>(buildSliceTiles(volume, axis, overlay, building));
     return {std::move(change), std::move(tiles)};
   } catch (const JobCancelled&) {
-    return {};
+    return {std::move(change), nullptr};
   }
 }
 
@@ -104,21 +103,44 @@ void App::drawLabelsSection() {
   commit(result.edit);
   if (result.cancel) labels_.job.cancel();
   if (result.removeBoneAndTable) startBoneRemoval();
-  if (result.undo && !labels_.undo.empty()) {
-    LabelChange change = std::move(labels_.undo.back());
-    labels_.undo.pop_back();
-    changeLabels(change, true);
-    labels_.redo.push_back(std::move(change));
-  }
-  if (result.redo && !labels_.redo.empty()) {
-    LabelChange change = std::move(labels_.redo.back());
-    labels_.redo.pop_back();
-    changeLabels(change, false);
-    labels_.undo.push_back(std::move(change));
-  }
+  if (result.undo && !labels_.undo.empty()) stepLabels(true);
+  if (result.redo && !labels_.redo.empty()) stepLabels(false);
   if (result.save) saveLabels(labels_.ui.path);
   if (result.load) startLabelRead(labels_.ui.path);
   if (result.browse) browseFor(BrowserPurpose::labelsFile, labels_.ui.path);
+}
+
+// Undo or redo the last change: at once, or for a change whose tiles are built ahead, in a job
+// that builds them first (the change waits there, off both stacks, until it is applied).
+void App::stepLabels(bool undo) {
+  std::vector<LabelChange>& from = undo ? labels_.undo : labels_.redo;
+  auto change = std::make_shared<LabelChange>(std::move(from.back()));
+  from.pop_back();
+  const Axis axis = doc().view.axis;
+  if (!tilesBuiltAhead(data_.volume, axis, *change)) {
+    changeLabels(*change, undo);
+    (undo ? labels_.redo : labels_.undo).push_back(std::move(*change));
+    return;
+  }
+  labels_.error.clear();
+  labels_.jobWhat = (undo ? "undoing " : "redoing ") + change->what;
+  labels_.jobStep = undo ? LabelStep::undo : LabelStep::redo;
+  labels_.fileRead.clear();
+  labels_.job.start([this, axis, undo, change](JobControl& control) {
+    return withTilesAhead(data_.volume, axis, std::move(*change), control, 0, undo);
+  });
+}
+
+// An undo or redo job's end: the change applied with its tiles, or back on its stack if cancelled.
+void App::finishLabelStep(LabelJobResult result, bool cancelled) {
+  const bool undo = labels_.jobStep == LabelStep::undo;
+  if (cancelled) {
+    (undo ? labels_.undo : labels_.redo).push_back(std::move(result.change));
+    message_ = labels_.jobWhat + " cancelled";
+    return;
+  }
+  changeLabels(result.change, undo, std::move(result.tiles));
+  (undo ? labels_.redo : labels_.undo).push_back(std::move(result.change));
 }
 
 void App::startBoneRemoval() {
@@ -130,6 +152,7 @@ void App::startBoneRemoval() {
   }
   labels_.error = calibrationWarning(data_.volume);  // shown while it runs, and after
   labels_.jobWhat = "removing bone and table";
+  labels_.jobStep = LabelStep::change;
   labels_.fileRead.clear();
   const Axis axis = doc().view.axis;
   labels_.job.start([this, axis, protect = std::move(protect)](JobControl& control) {
@@ -163,6 +186,7 @@ void App::growOnClick() {
   labels_.error.clear();
   labels_.fileRead.clear();
   labels_.jobWhat = giveBack ? "giving back" : "growing";
+  labels_.jobStep = LabelStep::change;
   const Axis axis = doc().view.axis;
   labels_.job.start([this, seed, settings, giveBack, axis](JobControl& control) {
     if (giveBack)
@@ -182,6 +206,7 @@ void App::startLabelRead(const std::string& file) {
   labels_.error.clear();
   labels_.jobWhat = "reading " + fs::path(file).filename().string();
   labels_.fileRead = file;
+  labels_.jobStep = LabelStep::change;
   const Axis axis = doc().view.axis;
   labels_.job.start([this, file, axis](JobControl& control) {
     ReadOptions options;
@@ -213,6 +238,7 @@ void App::pollLabelJobs() {
   const bool cancelled = labels_.job.cancelRequested();
   try {
     LabelJobResult result = labels_.job.take();
+    if (labels_.jobStep != LabelStep::change) return finishLabelStep(std::move(result), cancelled);
     LabelChange& change = result.change;
     if (cancelled) {
       message_ = labels_.jobWhat + " cancelled";

@@ -17,17 +17,21 @@
 namespace angio {
 
 // A label job's change, with the slice tiles of the changed volume when the job built them
-// ahead (see tilesAheadOf in gui/app_labels.cpp), so that the renderer need not after it.
+// ahead (see tilesBuiltAhead in gui/app_labels.cpp), so that the renderer need not after it.
 struct LabelJobResult {
   LabelChange change;
   std::shared_ptr<SliceTiles> tiles;
 };
 
+// What the label job does: a new change (removal, growing, a file), or undoes or redoes one.
+enum class LabelStep { change, undo, redo };
+
 struct LabelsPanel {
   LabelsPanelUi ui;
-  BackgroundJob<LabelJobResult> job;  // its change is applied as one undo step
+  BackgroundJob<LabelJobResult> job;  // its change is applied as one undo step (or undone, redone)
   std::string jobWhat;                // e.g. "removing bone and table"
-  std::string fileRead;               // the label file the job reads ("" = another job)
+  LabelStep jobStep = LabelStep::change;
+  std::string fileRead;  // the label file the job reads ("" = another job)
   std::vector<LabelChange> undo, redo;
   LabelCounts voxels{};
   std::future<LabelCounts> counting;  // after a dataset change
