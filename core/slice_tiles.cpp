@@ -380,8 +380,8 @@ SliceTiles allocatedTiles(const Volume& volume, Axis axis, bool labelled) {
   tiles.axisB = (int(axis) + 1) % 3;
   tiles.axisC = (int(axis) + 2) % 3;
   tiles.slices = volume.dims[int(axis)];
-  tiles.tilesB = (volume.dims[tiles.axisB] + kTileSize - 1) / kTileSize;
-  tiles.tilesC = (volume.dims[tiles.axisC] + kTileSize - 1) / kTileSize;
+  tiles.tilesB = tilesAlong(volume.dims[tiles.axisB]);
+  tiles.tilesC = tilesAlong(volume.dims[tiles.axisC]);
   tiles.labelled = labelled;
   allocate(tiles, tiles.cells);
   allocate(tiles, tiles.wide);

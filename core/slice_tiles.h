@@ -23,6 +23,8 @@ namespace angio {
 // tiles near the vessels touch the TF's ramp somewhere; 4^2 tiles evaluate about half as many
 // samples (`angioray bench --profile`).
 constexpr int kTileSize = 4;
+// Tiles along an axis of `voxels` voxels (the last one may be partial).
+constexpr int tilesAlong(int voxels) { return (voxels + kTileSize - 1) / kTileSize; }
 // A tile group is kGroupTiles^2 tiles (32^2 voxels) of a slice: its tiles' visibility is one
 // 64-bit word, so a ray tests all the tiles it crosses in a group at once.
 constexpr int kGroupTiles = 8;

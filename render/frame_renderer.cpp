@@ -14,9 +14,9 @@ namespace angio {
 namespace {
 
 bool fits(const SliceTiles& tiles, const Volume& volume) {
-  const auto tilesAlong = [&](int axis) { return (volume.dims[axis] + kTileSize - 1) / kTileSize; };
-  return tiles.slices == volume.dims[int(tiles.axis)] && tiles.tilesB == tilesAlong(tiles.axisB) &&
-         tiles.tilesC == tilesAlong(tiles.axisC);
+  return tiles.slices == volume.dims[int(tiles.axis)] &&
+         tiles.tilesB == tilesAlong(volume.dims[tiles.axisB]) &&
+         tiles.tilesC == tilesAlong(volume.dims[tiles.axisC]);
 }
 
 }  // namespace
