@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <new>
 
 #include <imgui.h>
 
@@ -49,8 +50,9 @@ bool tilesBuiltAhead(const Volume& volume, Axis axis, const LabelChange& change)
 struct JobCancelled {};
 
 // A job's change with the tiles of the volume it leaves (its labels after; with `undo` before)
-// when tilesBuiltAhead; they fill the job's progress bar from `progressFrom` on. A cancel meanwhile
-// leaves the change without tiles.
+// when tilesBuiltAhead; they fill the job's progress bar from `progressFrom` on. A cancel meanwhile,
+// or too little memory for a second set of tiles, leaves the change without them (the renderer
+// refreshes its own then).
 LabelJobResult withTilesAhead(const Volume& volume, Axis axis, LabelChange change, JobControl& control,
                               double progressFrom = 0, bool undo = false) {
   if (!tilesBuiltAhead(volume, axis, change)) return {std::move(change), nullptr};
@@ -63,6 +65,8 @@ LabelJobResult withTilesAhead(const Volume& volume, Axis axis, LabelChange chang
     auto tiles = std::make_shared<SliceTiles>(buildSliceTiles(volume, axis, overlay, building));
     return {std::move(change), std::move(tiles)};
   } catch (const JobCancelled&) {
+    return {std::move(change), nullptr};
+  } catch (const std::bad_alloc&) {
     return {std::move(change), nullptr};
   }
 }
