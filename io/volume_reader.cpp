@@ -217,8 +217,9 @@ void requireMemoryFor(const std::filesystem::path& file, const OpenedVolume& ope
 // After the memory check (a header's claim the machine cannot hold is the first thing to say):
 // teem allocates the whole volume before it finds its data short.
 void requireCompleteNrrd(const std::filesystem::path& file, const OpenedVolume& opened) {
-  if (opened.layout && volumeFormatOf(file) == VolumeFormat::nrrd)
-    requireCompleteNrrdData(file, *opened.layout, opened.storedBytes());
+  if (volumeFormatOf(file) != VolumeFormat::nrrd) return;
+  if (const auto place = nrrdDataPlace(file))
+    requireCompleteNrrdData(file, *place, opened.storedBytes());
 }
 
 // Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will

@@ -79,36 +79,43 @@ std::optional<NrrdHeader> readNrrdHeader(const std::filesystem::path& file) {
                   : std::nullopt;  // a detached header may end without a blank line
 }
 
-std::optional<VoxelDataLayout> nrrdLayout(const std::filesystem::path& file,
-                                          const StoredDataSize& size) {
-  const auto header = readNrrdHeader(file);
-  if (!header) return std::nullopt;
-  const auto field = [&](const char* name) {
-    const auto found = header->fields.find(name);
-    return found == header->fields.end() ? std::string() : found->second;
-  };
+// A header field's value ("" if absent); `lower`: as teem reads an enum, case-insensitively.
+std::string nrrdField(const NrrdHeader& header, const char* name, bool lower = false) {
+  const auto found = header.fields.find(name);
+  if (found == header.fields.end()) return "";
+  return lower ? lowercase(found->second) : found->second;
+}
+
+std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, const NrrdHeader& header) {
   VoxelDataLayout layout;
-  const std::string encoding = field("encoding");
+  const std::string encoding = nrrdField(header, "encoding", true);
   if (encoding == "gzip" || encoding == "gz") {
     layout.encoding = VoxelEncoding::deflate;
   } else if (encoding != "raw") {
     return std::nullopt;
   }
-  const std::string endian = field("endian");
-  if (endian != "little" && !(endian.empty() && size.componentBytes == 1)) return std::nullopt;
   for (const char* skip : {"lineskip", "byteskip"})
-    if (!field(skip).empty() && field(skip) != "0") return std::nullopt;
-  const std::string dataFile = field("datafile");
+    if (!nrrdField(header, skip).empty() && nrrdField(header, skip) != "0") return std::nullopt;
+  const std::string dataFile = nrrdField(header, "datafile");
   if (dataFile.empty()) {
-    if (!header->dataStart) return std::nullopt;
+    if (!header.dataStart) return std::nullopt;
     layout.dataFile = file;
-    layout.fileOffset = *header->dataStart;
+    layout.fileOffset = *header.dataStart;
     return layout;
   }
   if (!namesOneFile(dataFile)) return std::nullopt;
   const std::filesystem::path data(dataFile);
   layout.dataFile = data.is_absolute() ? data : file.parent_path() / data;
   return layout;
+}
+
+std::optional<VoxelDataLayout> nrrdLayout(const std::filesystem::path& file,
+                                          const StoredDataSize& size) {
+  const auto header = readNrrdHeader(file);
+  if (!header) return std::nullopt;
+  const std::string endian = nrrdField(*header, "endian", true);
+  if (endian != "little" && !(endian.empty() && size.componentBytes == 1)) return std::nullopt;
+  return nrrdPlace(file, *header);
 }
 
 // ---- NIfTI-1 single file: voxels at vox_offset (of the decompressed stream for .nii.gz).
@@ -142,6 +149,11 @@ std::optional<VoxelDataLayout> niftiLayout(const std::filesystem::path& file,
 }
 
 }  // namespace
+
+std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file) {
+  const auto header = readNrrdHeader(file);
+  return header ? nrrdPlace(file, *header) : std::nullopt;
+}
 
 std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,
                                                const StoredDataSize& size) {

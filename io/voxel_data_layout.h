@@ -33,4 +33,8 @@ struct StoredDataSize {
 std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,
                                                const StoredDataSize& size);
 
+// Where a NRRD's voxel data lie, whatever their byte order (a layout only where io/ reads them
+// too): raw or gzip, attached or in one data file; nothing for skips, lists and other encodings.
+std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file);
+
 }  // namespace angio

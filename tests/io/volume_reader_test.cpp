@@ -732,6 +732,11 @@ TEST_F(VolumeReaderTest, NrrdSizesAndDataAreCheckedBeforeTeemAllocates) {
   writeText(dir_ / "short.nrrd", header + "encoding: raw\n\n" + std::string(100, '\0'));
   expectInputError(dir_ / "short.nrrd",
                    "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
+  // Whatever the byte order and the case teem reads its values in.
+  std::string big = header;
+  big.replace(big.find("little"), 6, "big");
+  writeText(dir_ / "short-big.nrrd", big + "encoding: RAW\n\n" + std::string(100, '\0'));
+  expectInputError(dir_ / "short-big.nrrd", "is truncated");
   writeText(dir_ / "short-gzip.nrrd", header + "encoding: gzip\n\n");
   gzFile gz = gzopen((dir_ / "short-gzip.nrrd").c_str(), "ab");
   ASSERT_NE(gz, nullptr);
