@@ -135,11 +135,6 @@ StudyInfo studyTags(const gdcm::DataSet& data) {
           readableDate(tag(0x0008, 0x0020)), tag(0x0008, 0x103e), tag(0x0008, 0x0060)};
 }
 
-std::string trimmed(std::string text) {
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\0')) text.pop_back();
-  return text;
-}
-
 // What GDCM's image reader takes without asserting. It reads a file without a meta header as
 // ACR-NEMA and one of an unknown SOP class by guessing, both with assertions on the tags it finds;
 // it asserts on palette colour tables, on an icon image without a PhotometricInterpretation and on
@@ -152,11 +147,11 @@ void checkReadableImage(const gdcm::File& file, const SliceProblem& problem) {
         "has no DICOM file meta header (an ACR-NEMA file or a bare data set), which is not read");
   std::optional<std::string> sopClass = valueBytes(file.GetHeader(), gdcm::Tag(0x0002, 0x0002));
   if (!sopClass) sopClass = valueBytes(data, gdcm::Tag(0x0008, 0x0016));
-  const std::string uid = trimmed(sopClass.value_or(""));
+  const std::string uid = trimmedDicomValue(sopClass.value_or(""));
   if (!gdcm::MediaStorage::IsImage(gdcm::MediaStorage::GetMSType(uid.c_str())))
     problem.fail("is not an image (SOP class '" + shownText(uid) + "')");
   if (const auto photometric = valueBytes(data, gdcm::Tag(0x0028, 0x0004))) {
-    const std::string name = trimmed(*photometric);
+    const std::string name = trimmedDicomValue(*photometric);
     if (name != "MONOCHROME1" && name != "MONOCHROME2")
       problem.fail("has PhotometricInterpretation (0028,0004) '" + shownText(name.substr(0, 16)) +
                    "'; need greyscale CT (MONOCHROME1 or MONOCHROME2)");
