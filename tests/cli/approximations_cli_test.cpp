@@ -25,7 +25,7 @@ class ApproximationsCli : public test_support::PhantomFolderTest {
         " --quality medium --filter trilinear --osd 3 --tf cta-vessels-bone --angle 30 -o " + file(out) +
         " " + extra);
   }
-  std::string bytes(const std::string& name) const { return test_support::fileContents(file(name)); }
+  std::string bytes(const std::string& name) const { return test_support::fileBytes(file(name)); }
 };
 
 TEST_F(ApproximationsCli, TheSidecarRecordsThemAndRendersTheSameBytesAgain) {

@@ -47,7 +47,7 @@ TEST_F(ClippingCli, CropToTheLeftHalfLeavesTheRightHalfBlack) {
 
 TEST_F(ClippingCli, EveryFlagCutsSomethingAndItsSidecarRendersTheSameBytes) {
   ASSERT_EQ(render("plain.png", "").exitCode, 0);
-  const std::string plain = test_support::fileContents(file("plain.png"));
+  const std::string plain = test_support::fileBytes(file("plain.png"));
   const std::pair<std::string, std::string> flags[] = {
       {"crop", "--crop 50,350,60,300,200,900"},
       {"clip", "--clip 200,200,600,0.5,-1,0.2"},
@@ -58,13 +58,13 @@ TEST_F(ClippingCli, EveryFlagCutsSomethingAndItsSidecarRendersTheSameBytes) {
   for (const auto& [name, flag] : flags) {
     const auto run = render(name + ".png", flag);
     ASSERT_EQ(run.exitCode, 0) << flag << ": " << run.output;
-    const std::string image = test_support::fileContents(file(name + ".png"));
+    const std::string image = test_support::fileBytes(file(name + ".png"));
     EXPECT_NE(image, plain) << flag;
     EXPECT_FALSE(readJson(name + ".png.json")["clipping"].is_null()) << flag;
     const auto again =
         runAngioray("render --params " + file(name + ".png.json") + " -o " + file(name + "-again.png"));
     ASSERT_EQ(again.exitCode, 0) << again.output;
-    EXPECT_EQ(test_support::fileContents(file(name + "-again.png")), image) << flag;
+    EXPECT_EQ(test_support::fileBytes(file(name + "-again.png")), image) << flag;
   }
   EXPECT_EQ(readJson("slab.png.json")["clipping"]["slab"]["thickness_mm"], 60.0);
   EXPECT_EQ(readJson("facing.png.json")["clipping"]["plane"]["facing_viewer"], true);
@@ -119,8 +119,7 @@ TEST_F(ClippingCli, AnImageWindowIsThatPartOfTheWholeImage) {
   const auto again =
       runAngioray("render --params " + file("right.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
-  EXPECT_EQ(test_support::fileContents(file("again.png")),
-            test_support::fileContents(file("right.png")));
+  EXPECT_EQ(test_support::fileBytes(file("again.png")), test_support::fileBytes(file("right.png")));
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ class LabelsCli : public test_support::PhantomFolderTest {
         runAngioray("render " + file("phantom.nrrd") + " --quality medium --tf cta-vessels-bone -o " +
                     file(out) + " " + extra);
     EXPECT_EQ(run.exitCode, 0) << run.output;
-    return test_support::fileContents(file(out));
+    return test_support::fileBytes(file(out));
   }
 };
 
@@ -48,14 +48,14 @@ TEST_F(LabelsCli, HidingBoneChangesTheImageAndTheSidecarRendersItAgainByteForByt
   const auto again =
       runAngioray("render --params " + file("hidden.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
-  EXPECT_EQ(test_support::fileContents(file("again.png")), hidden);
+  EXPECT_EQ(test_support::fileBytes(file("again.png")), hidden);
 }
 
 TEST_F(LabelsCli, SegmentWritesLabelsThatRenderLikeTheGroundTruthsAndSlicerSegmentations) {
   const auto run = runAngioray("segment " + file("phantom.nrrd") + " --out " + file("auto.seg.nrrd"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   // The header of a Slicer segmentation names the segments.
-  const std::string header = test_support::fileContents(file("auto.seg.nrrd")).substr(0, 4000);
+  const std::string header = test_support::fileBytes(file("auto.seg.nrrd")).substr(0, 4000);
   EXPECT_NE(header.find("Segment0_Name:=bone"), std::string::npos) << header.substr(0, 600);
   const std::string hidden = render("auto.png", "--labels " + file("auto.seg.nrrd") + " --hide bone");
   EXPECT_NE(hidden, render("none.png", ""));

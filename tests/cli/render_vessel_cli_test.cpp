@@ -17,11 +17,13 @@
 #include "core/view_geometry.h"
 #include "io/centerline_file.h"
 #include "io/volume_reader.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/run_angioray.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using angio::test_support::fileBytes;
 using angio::test_support::ProgramRun;
 using angio::test_support::runAngioray;
 
@@ -48,11 +50,6 @@ Rgb8 readPng(const fs::path& file) {
   EXPECT_EQ(input->spec().nchannels, 3);
   input->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, image.bytes.data());
   return image;
-}
-
-std::string fileBytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }

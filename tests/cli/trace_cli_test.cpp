@@ -77,7 +77,7 @@ TEST_F(TraceCli, BadPointsAndOutputsGetOneLineAndLeaveTheOutputAlone) {
     EXPECT_NE(run.exitCode, 0) << c.arguments;
     EXPECT_NE(run.output.find(c.expected), std::string::npos) << c.arguments << "\n" << run.output;
     EXPECT_EQ(lineCount(run.output), 1) << run.output;
-    EXPECT_EQ(test_support::fileContents(file("kept.csv")), kept) << c.arguments;
+    EXPECT_EQ(test_support::fileBytes(file("kept.csv")), kept) << c.arguments;
   }
   const auto unwritable = runAngioray("trace " + volume + " --points \"" + points_ + "\" --out " +
                                       file("missing/dir/a.vtp"));
@@ -86,7 +86,7 @@ TEST_F(TraceCli, BadPointsAndOutputsGetOneLineAndLeaveTheOutputAlone) {
   const auto unknown =
       runAngioray("trace " + volume + " --points \"" + points_ + "\" --out " + file("a.txt"));
   EXPECT_NE(unknown.exitCode, 0);
-  EXPECT_EQ(test_support::fileContents(file("kept.csv")), kept);
+  EXPECT_EQ(test_support::fileBytes(file("kept.csv")), kept);
 }
 
 }  // namespace

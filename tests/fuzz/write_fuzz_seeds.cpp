@@ -30,16 +30,13 @@
 #include "tests/fuzz/reader_inputs.h"
 #include "tests/support/dicom_recompress.h"
 #include "tests/support/dicom_series_writer.h"
+#include "tests/support/file_bytes.h"
 
 namespace fs = std::filesystem;
 using namespace angio;
+using test_support::fileBytes;
 
 namespace {
-
-std::string fileBytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 class SeedWriter {
  public:

@@ -121,7 +121,7 @@ TEST_F(GuiLabels, AnExportWithUnsavedLabelsWritesThemBesideItAndItsSidecarRender
   const auto again =
       runAngioray("render --params " + file("view.png.json") + " -o " + file("again.png"));
   ASSERT_EQ(again.exitCode, 0) << again.output;
-  EXPECT_EQ(test_support::fileContents(file("view.png")), test_support::fileContents(file("again.png")));
+  EXPECT_EQ(test_support::fileBytes(file("view.png")), test_support::fileBytes(file("again.png")));
 }
 
 // A label change keeps the renderer's slice tiles and refreshes the slices it touched

@@ -16,7 +16,7 @@ namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
-using test_support::fileContents;
+using test_support::fileBytes;
 
 class AtomicFileGroupTest : public test_support::TempFolderTest {
  protected:
@@ -31,11 +31,11 @@ TEST_F(AtomicFileGroupTest, CommitReplacesEveryTargetAndLeavesNothingElse) {
     AtomicFileGroup files;
     files.add(dir_ / "a.png", bytes("new a"));
     files.add(dir_ / "a.png.json", bytes("new sidecar"));
-    EXPECT_EQ(fileContents(dir_ / "a.png"), "old a") << "nothing in place before commit";
+    EXPECT_EQ(fileBytes(dir_ / "a.png"), "old a") << "nothing in place before commit";
     files.commit();
   }
-  EXPECT_EQ(fileContents(dir_ / "a.png"), "new a");
-  EXPECT_EQ(fileContents(dir_ / "a.png.json"), "new sidecar");
+  EXPECT_EQ(fileBytes(dir_ / "a.png"), "new a");
+  EXPECT_EQ(fileBytes(dir_ / "a.png.json"), "new sidecar");
   EXPECT_EQ(filesInDir(), (std::vector<std::string>{"a.png", "a.png.json"}));
 }
 
@@ -51,7 +51,7 @@ TEST_F(AtomicFileGroupTest, AFolderInTheWayStopsTheGroupBeforeAnythingIsReplaced
     EXPECT_NE(std::string(error.what()).find("a.png.json: is a folder"), std::string::npos)
         << error.what();
   }
-  EXPECT_EQ(fileContents(dir_ / "a.png"), "old a");
+  EXPECT_EQ(fileBytes(dir_ / "a.png"), "old a");
 }
 
 TEST_F(AtomicFileGroupTest, WithoutCommitNothingIsLeft) {
@@ -73,8 +73,8 @@ TEST_F(AtomicFileGroupTest, AFailedMovePutsBackWhatWasReplaced) {
   // A folder appears where the last target goes after its check: the commit's move fails there.
   fs::create_directory(dir_ / "c.png");
   EXPECT_THROW(files.commit(), InputError);
-  EXPECT_EQ(fileContents(dir_ / "a.png"), "old a");
-  EXPECT_EQ(fileContents(dir_ / "b.png"), "old b");
+  EXPECT_EQ(fileBytes(dir_ / "a.png"), "old a");
+  EXPECT_EQ(fileBytes(dir_ / "b.png"), "old b");
   EXPECT_TRUE(fs::is_directory(dir_ / "c.png"));
 }
 

@@ -14,7 +14,7 @@ namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
-using test_support::fileContents;
+using test_support::fileBytes;
 
 class CenterlineCsvTest : public test_support::TempFolderTest {
  protected:
@@ -35,7 +35,7 @@ TEST_F(CenterlineCsvTest, WritesOneRowPerPointWithThePathNameOrIndex) {
                        {"float", {{{double(-218.4904f), 0.1, -0.0}, double(10.3651f)}}}};
   const fs::path file = dir_ / "centerlines.csv";
   writeCenterlinesCsv(centerlines, file);
-  EXPECT_EQ(fileContents(file),
+  EXPECT_EQ(fileBytes(file),
             "path,x_mm,y_mm,z_mm,radius_mm\n"
             "a,1,-2.5,3.25,10\n"
             "a,1,-2.5,2.25,9.5\n"
@@ -49,7 +49,7 @@ TEST_F(CenterlineCsvTest, HeaderMatchesTheSharedReferenceFile) {
   ASSERT_TRUE(std::getline(reference, header));
   const fs::path file = dir_ / "empty.csv";
   writeCenterlinesCsv({}, file);
-  EXPECT_EQ(fileContents(file), header + "\n");
+  EXPECT_EQ(fileBytes(file), header + "\n");
 }
 
 TEST_F(CenterlineCsvTest, UnwritableTargetThrowsInputErrorAndLeavesNothing) {
@@ -67,7 +67,7 @@ TEST_F(CenterlineCsvTest, ReplacesAnExistingFileWhole) {
   const fs::path file = dir_ / "centerlines.csv";
   std::ofstream(file) << "old content that is longer than the new one\n" << std::string(1000, 'x');
   writeCenterlinesCsv(onePoint(), file);
-  EXPECT_EQ(fileContents(file), "path,x_mm,y_mm,z_mm,radius_mm\na,0,0,0,1\n");
+  EXPECT_EQ(fileBytes(file), "path,x_mm,y_mm,z_mm,radius_mm\na,0,0,0,1\n");
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test_support::expectInputError;
-using test_support::fileContents;
+using test_support::fileBytes;
 
 // --- Fixtures -----------------------------------------------------------------------------------
 
@@ -158,7 +158,7 @@ TEST_P(CenterlineSave, ReadOnlyFolderIsAnInputErrorAndTheExistingFileStaysByteId
                      "cannot open for writing");
   }
   fs::permissions(folder, fs::perms::owner_all, fs::perm_options::add);
-  EXPECT_EQ(fileContents(file), kUserData);
+  EXPECT_EQ(fileBytes(file), kUserData);
   EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);
 }
 
@@ -167,7 +167,7 @@ TEST_P(CenterlineSave, AFolderOfTheTargetsNameIsAnInputErrorAndIsLeftAlone) {
   fs::create_directory(target());
   std::ofstream(target() / "inside.txt") << kUserData;
   expectInputError([&] { saveCenterlines(awkwardCenterlines(), target()); }, target(), "cannot write");
-  EXPECT_EQ(fileContents(target() / "inside.txt"), kUserData);
+  EXPECT_EQ(fileBytes(target() / "inside.txt"), kUserData);
   EXPECT_EQ(filesInDir(), std::vector<std::string>{target().filename().string()});
 }
 
@@ -176,7 +176,7 @@ TEST_P(CenterlineSave, VolumeFrameCenterlinesAreALogicErrorAndTheFileStaysAsItWa
   Centerlines framed = awkwardCenterlines();
   framed.frame = CenterlineFrame::volume;
   EXPECT_THROW(saveCenterlines(framed, target()), std::logic_error);
-  EXPECT_EQ(fileContents(target()), kUserData);
+  EXPECT_EQ(fileBytes(target()), kUserData);
   EXPECT_EQ(filesInDir(), std::vector<std::string>{target().filename().string()});
 }
 
@@ -217,7 +217,7 @@ TEST_F(CenterlineSaveChoice, MarkupsFileHasTheFieldsSlicerReads) {
   const fs::path file = dir_ / "centerlines.mrk.json";
   const Centerlines saved = awkwardCenterlines();
   writeCenterlinesMarkups(saved, file);
-  const Json json = Json::parse(fileContents(file));
+  const Json json = Json::parse(fileBytes(file));
   // Slicer accepts any schema version 1.x.y by this pattern.
   EXPECT_TRUE(std::regex_match(json.at("@schema").get<std::string>(),
                                std::regex(".*markups-schema-v1\\.[0-9]+\\.[0-9]+\\.json#*")));
@@ -252,7 +252,7 @@ TEST_F(CenterlineSaveChoice, VtpFileIsAsciiPolyDataOfOneLinePerPath) {
   const fs::path file = dir_ / "centerlines.vtp";
   const Centerlines saved = awkwardCenterlines();
   writeCenterlinesVtp(saved, file);
-  const std::string text = fileContents(file);
+  const std::string text = fileBytes(file);
   EXPECT_NE(text.find("<VTKFile type=\"PolyData\" version=\"0.1\""), std::string::npos);
   EXPECT_NE(text.find("NumberOfPoints=\"70\" NumberOfVerts=\"0\" NumberOfLines=\"3\""),
             std::string::npos);
@@ -275,7 +275,7 @@ TEST_F(CenterlineSaveChoice, CsvQuotesNamesThatNeedIt) {
                  {"say \"hi\"", {{{1, 2, 3}, 4}}},
                  {"", {{{0.5, -0.25, 1e21}, 0.1}}}};
   writeCenterlinesCsv(saved, file);
-  EXPECT_EQ(fileContents(file),
+  EXPECT_EQ(fileBytes(file),
             "path,x_mm,y_mm,z_mm,radius_mm\n"
             "plain,1,2,3,4\n"
             "\"a,b\",1,2,3,4\n"
@@ -295,7 +295,7 @@ TEST_F(CenterlineSaveChoice, CsvRefusesPathsThatWouldMerge) {
   nameIsAnIndex.paths = {tracedPath("1", 1.0f, 2), tracedPath("", 1.0f, 2)};
   expectInputError([&] { writeCenterlinesCsv(nameIsAnIndex, file); }, file,
                    "paths 0 and 1 would both be written as path '1'");
-  EXPECT_EQ(fileContents(file), kUserData);
+  EXPECT_EQ(fileBytes(file), kUserData);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test_support::expectInputError;
-using test_support::fileContents;
+using test_support::fileBytes;
 
 // An analytic pattern: horizontal and vertical gradients, a checker in blue, and values outside
 // [0, 1] (negative and > 1) that the integer formats must clamp and EXR must keep.
@@ -186,10 +186,10 @@ TEST_F(ImageExportTest, EmptyImageIsAnInputError) {
 TEST_F(ImageExportTest, FailedExportKeepsTheExistingFileByteIdentical) {
   const fs::path file = dir_ / "keep.png";
   exportImage(gradientImage(), file, metadata_);
-  const std::string before = fileContents(file);
+  const std::string before = fileBytes(file);
   ASSERT_FALSE(before.empty());
   EXPECT_THROW(exportImage(makeImage(0, 0), file), InputError);
-  EXPECT_EQ(fileContents(file), before);
+  EXPECT_EQ(fileBytes(file), before);
   EXPECT_EQ(filesInDir(), std::vector<std::string>{"keep.png"});
 }
 
@@ -200,7 +200,7 @@ TEST_F(ImageExportTest, FailureAfterWritingRemovesTheTemporary) {
   fs::create_directories(file);
   std::ofstream(file / "inside.txt") << "keep me";
   expectInputError([&] { exportImage(gradientImage(), file); }, file, "cannot write");
-  EXPECT_EQ(fileContents(file / "inside.txt"), "keep me");
+  EXPECT_EQ(fileBytes(file / "inside.txt"), "keep me");
   EXPECT_EQ(filesInDir(), std::vector<std::string>{"taken.png"});
 }
 

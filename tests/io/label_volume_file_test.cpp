@@ -21,14 +21,14 @@ namespace {
 
 namespace fs = std::filesystem;
 using test_support::expectInputError;
-using test_support::fileContents;
+using test_support::fileBytes;
 using test_support::labelledCt;
 
 using LabelVolumeFileTest = test_support::TempFolderTest;
 
 // The header line of a NRRD file that starts with `field`.
 std::string headerLine(const fs::path& file, const std::string& field) {
-  const std::string text = fileContents(file);
+  const std::string text = fileBytes(file);
   const auto at = text.find("\n" + field);
   if (at == std::string::npos) return "";
   return text.substr(at + 1, text.find('\n', at + 1) - at - 1);
@@ -87,7 +87,7 @@ TEST_F(LabelVolumeFileTest, FailedReplacementLeavesTheTargetAndNoTemporaryFile) 
   const std::vector<std::string> before = filesInDir();
   expectInputError([&] { writeLabelVolume(target, volume); }, target, "");
   EXPECT_EQ(filesInDir(), before);
-  EXPECT_EQ(fileContents(target / "keep.txt"), "user data");
+  EXPECT_EQ(fileBytes(target / "keep.txt"), "user data");
 }
 
 TEST_F(LabelVolumeFileTest, LabelVolumeOnAnotherGridIsAnErrorNamingTheDifference) {

@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using test_support::expectInputError;
-using test_support::fileContents;
+using test_support::fileBytes;
 using test_support::labelledCt;
 
 // Colors with at most 6 significant digits: Slicer writes (and we write) 6.
@@ -42,13 +42,13 @@ class SegmentationFileTest : public test_support::TempFolderTest {
 
   // The written file's header: NRRD headers are text up to the first blank line.
   std::string header() const {
-    const std::string text = fileContents(file_);
+    const std::string text = fileBytes(file_);
     return text.substr(0, text.find("\n\n") + 1);
   }
 
   // Rewrites the header of the segmentation file, keeping its data.
   void editHeader(const std::string& from, const std::string& to) const {
-    std::string text = fileContents(file_);
+    std::string text = fileBytes(file_);
     const auto at = text.find(from);
     ASSERT_LT(at, text.find("\n\n")) << from;
     text.replace(at, from.size(), to);
@@ -143,7 +143,7 @@ TEST_F(SegmentationFileTest, LabelValueAbove15IsAnErrorNamingTheSegment) {
 
 TEST_F(SegmentationFileTest, InconsistentSegmentFieldsAreErrors) {
   writeSegmentation(file_, ct_.volume, kSegments);
-  const std::string original = fileContents(file_);
+  const std::string original = fileBytes(file_);
   for (const auto& [from, to, problem] : std::vector<std::tuple<std::string, std::string, std::string>>{
            {"Segment1_LabelValue:=2\n", "", "segment 'table' (Segment1) has no LabelValue"},
            {"Segment1_LabelValue:=2", "Segment1_LabelValue:=two",
@@ -160,7 +160,7 @@ TEST_F(SegmentationFileTest, InconsistentSegmentFieldsAreErrors) {
 
 TEST_F(SegmentationFileTest, CorruptOrTruncatedFilesAreErrors) {
   writeSegmentation(file_, ct_.volume, kSegments);
-  const std::string original = fileContents(file_);
+  const std::string original = fileBytes(file_);
   // Header intact, compressed data cut short.
   std::ofstream(file_, std::ios::binary) << original.substr(0, original.size() - 20);
   expectLabelsError("is truncated: its header promises 72 bytes of voxel data, the file holds 42");

@@ -16,7 +16,7 @@ namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
-using test_support::fileContents;
+using test_support::fileBytes;
 
 using VolumeWriterTest = test_support::TempFolderTest;
 
@@ -85,7 +85,7 @@ TEST_F(VolumeWriterTest, CompressesWhereTheFormatAllows) {
     writeVolume(uniform, dir_ / name);
     EXPECT_LT(fs::file_size(dir_ / name), raw / 20) << name;
   }
-  EXPECT_EQ(fileContents(dir_ / "u.nii.gz").substr(0, 2), "\x1f\x8b");
+  EXPECT_EQ(fileBytes(dir_ / "u.nii.gz").substr(0, 2), "\x1f\x8b");
   writeVolume(uniform, dir_ / "u.nii");
   EXPECT_GT(fs::file_size(dir_ / "u.nii"), raw);  // plain NIfTI is uncompressed by definition
 }
@@ -102,8 +102,8 @@ TEST_F(VolumeWriterTest, LeavesOnlyTheTargetFiles) {
   EXPECT_EQ(files[1], "b.mhd");
   EXPECT_EQ(files[3], "c.nhdr");
   // The detached headers name their data files by final name.
-  EXPECT_NE(fileContents(dir_ / "b.mhd").find("ElementDataFile = " + files[2]), std::string::npos);
-  EXPECT_NE(fileContents(dir_ / "c.nhdr").find(files[4]), std::string::npos);
+  EXPECT_NE(fileBytes(dir_ / "b.mhd").find("ElementDataFile = " + files[2]), std::string::npos);
+  EXPECT_NE(fileBytes(dir_ / "c.nhdr").find(files[4]), std::string::npos);
 }
 
 TEST_F(VolumeWriterTest, UnknownExtensionIsAnErrorAndWritesNothing) {

@@ -23,6 +23,7 @@ namespace angio {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::fileBytes;
 
 // Odd dims, so no slice or row happens to fall on a power of two.
 constexpr int kDims[3] = {37, 23, 19};
@@ -97,11 +98,6 @@ std::vector<char> slabBytes(const fs::path& file, std::vector<double>* fractions
     if (fractions) fractions->push_back(fraction);
   });
   return bytes;
-}
-
-std::string fileBytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 void writeBytes(const fs::path& file, const std::string& bytes) {

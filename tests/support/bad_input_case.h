@@ -20,6 +20,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/file_bytes.h"
+
 namespace angio::test_support {
 
 namespace fs = std::filesystem;
@@ -44,16 +46,11 @@ inline std::string replaced(std::string text, const std::string& what, const std
   return text;
 }
 
-inline std::string bytesOf(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // Every file and folder under `dir` with its bytes ("<folder>" for folders).
 inline std::map<fs::path, std::string> snapshot(const fs::path& dir) {
   std::map<fs::path, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir))
-    files[entry.path()] = entry.is_directory() ? "<folder>" : bytesOf(entry.path());
+    files[entry.path()] = entry.is_directory() ? "<folder>" : fileBytes(entry.path());
   return files;
 }
 

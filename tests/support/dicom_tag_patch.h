@@ -10,18 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/file_bytes.h"
+
 namespace angio::test_support {
 
 namespace fs = std::filesystem;
-
-inline std::string fileBytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-inline void overwrite(const fs::path& file, const std::string& bytes) {
-  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
-}
 
 inline std::string littleEndian(std::uint32_t value, int bytes) {
   std::string out;

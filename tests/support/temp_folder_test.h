@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/file_bytes.h"
+
 namespace angio::test_support {
 
 class TempFolderTest : public ::testing::Test {
@@ -48,11 +50,5 @@ class TempFolderTest : public ::testing::Test {
 
   std::filesystem::path dir_;
 };
-
-// The bytes of `file` ("" if it cannot be read).
-inline std::string fileContents(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 }  // namespace angio::test_support
