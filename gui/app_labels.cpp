@@ -123,6 +123,7 @@ void App::stepLabels(bool undo) {
   const Axis axis = doc().view.axis;
   if (!tilesBuiltAhead(data_.volume, axis, *change)) {
     changeLabels(*change, undo);
+    message_ = (undo ? "undid " : "redid ") + change->what;
     (undo ? labels_.redo : labels_.undo).push_back(std::move(*change));
     return;
   }
@@ -144,6 +145,7 @@ void App::finishLabelStep(LabelJobResult result, bool cancelled) {
     return;
   }
   changeLabels(result.change, undo, std::move(result.tiles));
+  message_ = (undo ? "undid " : "redid ") + result.change.what;
   (undo ? labels_.redo : labels_.undo).push_back(std::move(result.change));
 }
 

@@ -152,6 +152,7 @@ TEST_F(GuiLabels, ImagesAfterARemovalAndItsUndoAreThoseOfAFreshStart) {
   // The removal touched every slice: its job built the tiles, and the undo's job too.
   EXPECT_TRUE(removed["labels"]["tiles_built_ahead"].get<bool>());
   EXPECT_TRUE(undone["labels"]["tiles_built_ahead"].get<bool>());
+  EXPECT_EQ(undone["message"], "undid bone and table removal");
   ASSERT_EQ(removed["shown"]["level"], "high");
   ASSERT_EQ(undone["shown"]["level"], "high");
   EXPECT_NE(removed["shown"]["checksum"], fresh["checksum"]);  // the bone went
