@@ -55,6 +55,7 @@ std::optional<VoxelDataLayout> metaImageLayout(const std::filesystem::path& file
 struct NrrdHeader {
   std::map<std::string, std::string> fields;  // names without blanks: "datafile", "byteskip"
   std::optional<std::uint64_t> dataStart;     // after the blank line
+  bool crlf = false;                          // some line ends in CR LF
 };
 
 std::optional<NrrdHeader> readNrrdHeader(const std::filesystem::path& file) {
@@ -63,7 +64,10 @@ std::optional<NrrdHeader> readNrrdHeader(const std::filesystem::path& file) {
   if (!std::getline(in, line) || line.rfind("NRRD000", 0) != 0) return std::nullopt;
   NrrdHeader header;
   for (int lines = 0; lines < 4096 && std::getline(in, line); ++lines) {
-    if (!line.empty() && line.back() == '\r') return std::nullopt;  // CRLF: leave it to teem
+    if (!line.empty() && line.back() == '\r') {
+      line.pop_back();
+      header.crlf = true;
+    }
     if (line.empty()) {
       if (in) header.dataStart = std::uint64_t(in.tellg());
       return header;
@@ -112,7 +116,7 @@ std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, cons
 std::optional<VoxelDataLayout> nrrdLayout(const std::filesystem::path& file,
                                           const StoredDataSize& size) {
   const auto header = readNrrdHeader(file);
-  if (!header) return std::nullopt;
+  if (!header || header->crlf) return std::nullopt;  // CRLF: teem reads the voxels
   const std::string endian = nrrdField(*header, "endian", true);
   if (endian != "little" && !(endian.empty() && size.componentBytes == 1)) return std::nullopt;
   return nrrdPlace(file, *header);

@@ -737,6 +737,13 @@ TEST_F(VolumeReaderTest, NrrdSizesAndDataAreCheckedBeforeTeemAllocates) {
   big.replace(big.find("little"), 6, "big");
   writeText(dir_ / "short-big.nrrd", big + "encoding: RAW\n\n" + std::string(100, '\0'));
   expectInputError(dir_ / "short-big.nrrd", "is truncated");
+  std::string crlf = header + "encoding: raw\n\n";
+  for (std::size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2))
+    crlf.insert(at, "\r");
+  writeText(dir_ / "short-crlf.nrrd", crlf + std::string(100, '\0'));
+  expectInputError(dir_ / "short-crlf.nrrd", "is truncated");
+  writeText(dir_ / "whole-crlf.nrrd", crlf + std::string(16000, '\0'));
+  EXPECT_EQ(readVolume(dir_ / "whole-crlf.nrrd").volume.dims, glm::ivec3(20, 20, 20));
   writeText(dir_ / "short-gzip.nrrd", header + "encoding: gzip\n\n");
   gzFile gz = gzopen((dir_ / "short-gzip.nrrd").c_str(), "ab");
   ASSERT_NE(gz, nullptr);
