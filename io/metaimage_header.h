@@ -17,8 +17,9 @@ struct MetaImageHeader {
   // Offset of the byte after the ElementDataFile line; empty if the header has no such line.
   std::optional<std::uint64_t> dataStart;
   bool dataLineEndsWithCr = false;  // a CRLF header: where MetaIO starts its data is less certain
-  // The first line MetaIO would not read as one "Key = Value" field, and why ("header line 4 is
-  // not 'Key = Value'"); MetaIO's reading goes astray there (and its buffers overflow).
+  // The first line MetaIO would not read as one "Key = Value" field or whose value it would not
+  // hold, and why ("header line 4 is not 'Key = Value'"); MetaIO's reading goes astray there (and
+  // its buffers overflow).
   std::optional<std::string> unreadableLine;
 
   // The field's value, or "" if the header does not have it.

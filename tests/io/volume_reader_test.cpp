@@ -671,6 +671,9 @@ TEST_F(VolumeReaderTest, MetaImageHeaderLinesMetaIoCannotReadAreRefusedBeforeIt)
                    "header line 5 has a field name of 300 characters (MetaIO reads 254)");
   writeMetaImage(dir_ / "long.mha", "2 2 2", "1 1 1", "Comment = " + std::string(600, 'v') + "\n");
   expectInputError(dir_ / "long.mha", "header line 5 has 610 characters (MetaIO reads 499)");
+  // MetaIO strcpy's a string value into 255 bytes (ObjectType, Name, Comment, the data file).
+  writeMetaImage(dir_ / "value.mha", "2 2 2", "1 1 1", "Name = " + std::string(300, 'v') + "\n");
+  expectInputError(dir_ / "value.mha", "header line 5 has a value of 300 characters (MetaIO keeps 254)");
   // What MetaIO reads differently from the name written: a list (any name starting with LIST), a
   // name ending in bytes it strips.
   writeText(dir_ / "list.mha",
