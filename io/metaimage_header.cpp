@@ -46,6 +46,11 @@ std::string MetaImageHeader::field(const std::string& key) const {
   return found == fields.end() ? std::string() : found->second;
 }
 
+bool MetaImageHeader::flag(const std::string& key) const {
+  const std::string value = field(key);
+  return !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1');
+}
+
 MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   MetaImageHeader header;
@@ -55,7 +60,9 @@ MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
     if (trimmed(line).empty()) continue;
     // MetaIO ends a field's name at '=' or ':'; it reads a value with getline into 500 bytes.
     const auto separator = line.find_first_of("=:");
-    const std::string key = separator == std::string::npos ? "" : trimmed(line.substr(0, separator));
+    // MetaIO compares names as C strings: a NUL ends one.
+    const std::string name = separator == std::string::npos ? "" : line.substr(0, separator);
+    const std::string key = trimmed(name.substr(0, name.find('\0')));
     const std::string value = separator == std::string::npos ? "" : trimmed(line.substr(separator + 1));
     if (!header.unreadableLine) header.unreadableLine = unreadableBy(line, key, value, lines);
     if (separator == std::string::npos) continue;

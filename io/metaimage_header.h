@@ -24,6 +24,8 @@ struct MetaImageHeader {
 
   // The field's value, or "" if the header does not have it.
   std::string field(const std::string& key) const;
+  // A boolean field as MetaIO reads it: true iff its value starts with T, t or 1.
+  bool flag(const std::string& key) const;
 };
 
 MetaImageHeader readMetaImageHeader(const std::filesystem::path& file);

@@ -27,8 +27,9 @@ namespace {
 void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t voxelBytes) {
   const MetaImageHeader header = readMetaImageHeader(file);
   const auto field = [&](const char* key) { return header.field(key); };
-  if (field("ElementDataFile").empty() || field("BinaryData") == "False") return;
-  const bool compressed = field("CompressedData") == "True";
+  if (field("ElementDataFile").empty() || (!field("BinaryData").empty() && !header.flag("BinaryData")))
+    return;
+  const bool compressed = header.flag("CompressedData");
   std::uint64_t expected = voxelBytes;
   if (compressed) {
     try {

@@ -674,6 +674,14 @@ TEST_F(VolumeReaderTest, MetaImageHeaderLinesMetaIoCannotReadAreRefusedBeforeIt)
   // MetaIO strcpy's a string value into 255 bytes (ObjectType, Name, Comment, the data file).
   writeMetaImage(dir_ / "value.mha", "2 2 2", "1 1 1", "Name = " + std::string(300, 'v') + "\n");
   expectInputError(dir_ / "value.mha", "header line 5 has a value of 300 characters (MetaIO keeps 254)");
+  // Read as MetaIO reads them: a flag by its first letter, a name up to a NUL; MetaIO allocated
+  // the compressed size these claim.
+  writeMetaImage(dir_ / "flag.mha", "2 2 2", "1 1 1",
+                 "CompressedData = tRUE\nCompressedDataSize = 2300000000000002\n");
+  expectInputError(dir_ / "flag.mha", "is truncated: its header promises 2300000000000002 bytes");
+  writeMetaImage(dir_ / "nul.mha", "2 2 2", "1 1 1",
+                 std::string("CompressedData = True\nCompressedDataSize\0\0 = 2300000000000002\n", 62));
+  expectInputError(dir_ / "nul.mha", "is truncated: its header promises 2300000000000002 bytes");
   // What MetaIO reads differently from the name written: a list (any name starting with LIST), a
   // name ending in bytes it strips.
   writeText(dir_ / "list.mha",
