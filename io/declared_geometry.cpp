@@ -16,6 +16,7 @@
 #include "io/input_error.h"
 #include "io/metaimage_header.h"
 #include "io/nifti_header.h"
+#include "io/nrrd_header.h"
 #include "io/shown_text.h"
 
 namespace angio {
@@ -89,28 +90,25 @@ void requireAxes(const fs::path& file, const std::string& field, const std::vect
 // "key:=value" pairs (Slicer's segment metadata can be long) are never quoted.
 constexpr std::size_t kMaxNrrdFieldLine = 768;
 
-// NRRD: "field: value" lines up to the first empty line (or the end of a detached .nhdr).
+void requireShortFieldLine(const fs::path& file, const NrrdHeaderLine& line) {
+  // The whole line: teem's message has been seen to quote more of a line than up to its first NUL.
+  if (line.text.size() > kMaxNrrdFieldLine)
+    throw InputError(file, "header line " + std::to_string(line.number) + " has " +
+                               std::to_string(line.text.size()) +
+                               " characters (a NRRD field has at most " +
+                               std::to_string(kMaxNrrdFieldLine) + "; a damaged header)");
+}
+
 void checkNrrd(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string line;
+  const auto header = readNrrdHeader(file);
+  if (!header) return;  // teem says what it is not
   std::vector<double> directions;
   std::string directionsText;
-  for (int lines = 0; lines < 4096 && std::getline(in, line) && line != "" && line != "\r"; ++lines) {
-    // A plain key/value pair: a ":=" before any ": " (else teem may take it for a field) and no
-    // NUL byte (teem's C strings would end there).
-    const std::size_t assign = line.find(":="), separator = line.find(": ");
-    const bool comment = line[0] == '#',
-               keyValue = assign < separator && line.find('\0') == std::string::npos;
-    if (comment || keyValue) continue;
-    if (line.size() > kMaxNrrdFieldLine)
-      throw InputError(file, "header line " + std::to_string(lines + 1) + " has " +
-                                 std::to_string(line.size()) + " characters (a NRRD field has at most " +
-                                 std::to_string(kMaxNrrdFieldLine) + "; a damaged header)");
-    const auto colon = line.find(':');
-    if (colon == std::string::npos) continue;
-    const std::string key = line.substr(0, colon);
-    std::string value = line.substr(colon + 1);
-    value.erase(0, value.find_first_not_of(" \t"));
+  for (const NrrdHeaderLine& line : header->lines) {
+    if (line.kind == NrrdLineKind::comment || line.kind == NrrdLineKind::keyValue) continue;
+    requireShortFieldLine(file, line);
+    const std::string& key = line.name;
+    const std::string& value = line.value;
     // ITK keeps sizes as unsigned int; teem allocates what the header says.
     if (key == "sizes")
       for (const double size : numbersIn(value))
@@ -122,8 +120,8 @@ void checkNrrd(const fs::path& file) {
       spacings.resize(std::min<std::size_t>(spacings.size(), 3));
       requireSpacing(file, "spacings", spacings, value);
     }
-    if (key == "space origin") requireFinite(file, "space origin", numbersIn(value), value);
-    if (key == "space directions") {
+    if (key == "spaceorigin") requireFinite(file, "space origin", numbersIn(value), value);
+    if (key == "spacedirections") {
       // "none" marks a non-spatial axis; the others are vectors of the space's dimension.
       std::string spatial;
       for (std::size_t at = 0; at < value.size(); ++at) {

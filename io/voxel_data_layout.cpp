@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
-#include <map>
 #include <string>
 
 #include "io/lowercase.h"
 #include "io/metaimage_header.h"
 #include "io/nifti_header.h"
+#include "io/nrrd_header.h"
 
 namespace angio {
 
@@ -27,16 +26,13 @@ std::optional<VoxelDataLayout> metaImageLayout(const std::filesystem::path& file
   const auto isOneOf = [&](const char* key, std::initializer_list<const char*> values) {
     return std::find(values.begin(), values.end(), header.field(key)) != values.end();
   };
-  if (header.field("BinaryData") != "True") return std::nullopt;  // ASCII voxels
-  if (!isOneOf("ElementByteOrderMSB", {"", "False"}) ||
-      !isOneOf("BinaryDataByteOrderMSB", {"", "False"}))
-    return std::nullopt;
-  if (!isOneOf("CompressedData", {"", "False", "True"}) || !isOneOf("HeaderSize", {"", "0"}) ||
-      !isOneOf("ElementNumberOfChannels", {"", "1"}))
+  // MetaIO reads a flag by its first letter (MetaImageHeader::flag).
+  if (!header.flag("BinaryData")) return std::nullopt;  // ASCII voxels
+  if (header.flag("ElementByteOrderMSB") || header.flag("BinaryDataByteOrderMSB")) return std::nullopt;
+  if (!isOneOf("HeaderSize", {"", "0"}) || !isOneOf("ElementNumberOfChannels", {"", "1"}))
     return std::nullopt;
   VoxelDataLayout layout;
-  layout.encoding =
-      header.field("CompressedData") == "True" ? VoxelEncoding::deflate : VoxelEncoding::raw;
+  layout.encoding = header.flag("CompressedData") ? VoxelEncoding::deflate : VoxelEncoding::raw;
   const std::string dataFile = header.field("ElementDataFile");
   if (dataFile == "LOCAL") {
     if (!header.dataStart || header.dataLineEndsWithCr) return std::nullopt;
@@ -50,57 +46,23 @@ std::optional<VoxelDataLayout> metaImageLayout(const std::filesystem::path& file
   return layout;
 }
 
-// ---- NRRD: "field: value" lines after a NRRD000N magic line, ending with a blank line that the
-// attached data follows; "data file" names detached data, relative to the header's folder.
-struct NrrdHeader {
-  std::map<std::string, std::string> fields;  // names without blanks: "datafile", "byteskip"
-  std::optional<std::uint64_t> dataStart;     // after the blank line
-  bool crlf = false;                          // some line ends in CR LF
-};
-
-std::optional<NrrdHeader> readNrrdHeader(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string line;
-  if (!std::getline(in, line) || line.rfind("NRRD000", 0) != 0) return std::nullopt;
-  NrrdHeader header;
-  for (int lines = 0; lines < 4096 && std::getline(in, line); ++lines) {
-    if (!line.empty() && line.back() == '\r') {
-      line.pop_back();
-      header.crlf = true;
-    }
-    if (line.empty()) {
-      if (in) header.dataStart = std::uint64_t(in.tellg());
-      return header;
-    }
-    if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comment, key/value
-    const auto colon = line.find(": ");
-    if (colon == std::string::npos) return std::nullopt;
-    std::string name = lowercase(line.substr(0, colon));
-    name.erase(std::remove(name.begin(), name.end(), ' '), name.end());
-    header.fields[name] = line.substr(colon + 2);
-  }
-  return in.eof() ? std::optional(header)
-                  : std::nullopt;  // a detached header may end without a blank line
-}
-
-// A header field's value ("" if absent); `lower`: as teem reads an enum, case-insensitively.
-std::string nrrdField(const NrrdHeader& header, const char* name, bool lower = false) {
-  const auto found = header.fields.find(name);
-  if (found == header.fields.end()) return "";
-  return lower ? lowercase(found->second) : found->second;
-}
-
+// ---- NRRD: attached data after the header's empty line, or one "data file" relative to the
+// header's folder.
 std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, const NrrdHeader& header) {
+  const bool unreadable = std::any_of(header.lines.begin(), header.lines.end(), [](const auto& line) {
+    return line.kind == NrrdLineKind::unknown;
+  });
+  if (unreadable) return std::nullopt;  // teem refuses it
   VoxelDataLayout layout;
-  const std::string encoding = nrrdField(header, "encoding", true);
+  const std::string encoding = header.field("encoding", true);
   if (encoding == "gzip" || encoding == "gz") {
     layout.encoding = VoxelEncoding::deflate;
   } else if (encoding != "raw") {
     return std::nullopt;
   }
   for (const char* skip : {"lineskip", "byteskip"})
-    if (!nrrdField(header, skip).empty() && nrrdField(header, skip) != "0") return std::nullopt;
-  const std::string dataFile = nrrdField(header, "datafile");
+    if (!header.field(skip).empty() && header.field(skip) != "0") return std::nullopt;
+  const std::string dataFile = header.field("datafile");
   if (dataFile.empty()) {
     if (!header.dataStart) return std::nullopt;
     layout.dataFile = file;
@@ -116,8 +78,8 @@ std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, cons
 std::optional<VoxelDataLayout> nrrdLayout(const std::filesystem::path& file,
                                           const StoredDataSize& size) {
   const auto header = readNrrdHeader(file);
-  if (!header || header->crlf) return std::nullopt;  // CRLF: teem reads the voxels
-  const std::string endian = nrrdField(*header, "endian", true);
+  if (!header || header->crLineEnds) return std::nullopt;  // teem reads the voxels
+  const std::string endian = header->field("endian", true);
   if (endian != "little" && !(endian.empty() && size.componentBytes == 1)) return std::nullopt;
   return nrrdPlace(file, *header);
 }

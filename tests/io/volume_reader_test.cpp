@@ -769,6 +769,36 @@ TEST_F(VolumeReaderTest, NrrdSizesAndDataAreCheckedBeforeTeemAllocates) {
   EXPECT_EQ(readVolume(dir_ / "whole-gzip.nrrd").volume.dims, glm::ivec3(20, 20, 20));
 }
 
+// Teem ends a header line at a CR too and matches field names case-insensitively: the checks made
+// before it reads a file see the fields it sees.
+TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
+  writeText(dir_ / "cr.nrrd",
+            "NRRD0004\r# a comment\rtype: short\rdimension: 3\r"
+            "sizes: 2 42999345910 4\rencoding: raw\r\r" +
+                std::string(16, '\0'));
+  expectInputError(dir_ / "cr.nrrd", "has impossible dimensions (sizes: 2 42999345910 4)");
+  writeText(dir_ / "upper.nrrd",
+            "NRRD0004\ntype: short\ndimension: 3\nSIZES: 2 42999345910 4\n"
+            "encoding: raw\n\n" +
+                std::string(16, '\0'));
+  expectInputError(dir_ / "upper.nrrd", "has impossible dimensions (sizes: 2 42999345910 4)");
+  const std::string header =
+      "NRRD0004\ntype: short\ndimension: 3\nsizes: 20 20 20\nendian: little\n"
+      "encoding: raw\n";
+  writeText(dir_ / "axes.nrrd", header +
+                                    "space: left-posterior-superior\n"
+                                    "spacedirections: (0,0,0) (0,1,0) (0,0,1)\n\n" +
+                                    std::string(16000, '\0'));
+  expectInputError(dir_ / "axes.nrrd", "has a zero-length axis in space directions");
+  std::string cr = header + "\n";
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  writeText(dir_ / "short-cr.nrrd", cr + std::string(100, '\0'));
+  expectInputError(dir_ / "short-cr.nrrd",
+                   "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
+  writeText(dir_ / "whole-cr.nrrd", cr + std::string(16000, '\0'));
+  EXPECT_EQ(readVolume(dir_ / "whole-cr.nrrd").volume.dims, glm::ivec3(20, 20, 20));
+}
+
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
   writeMetaImage(dir_ / "zero.mha", "2 2 2", "1 0 1");
   expectInputError(dir_ / "zero.mha", "spacing");
