@@ -1,7 +1,11 @@
 #include "bench/tile_bench.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstdio>
+#include <numeric>
+#include <thread>
 
 #include "bench/timing.h"
 #include "core/slice_tiles.h"
@@ -34,6 +38,41 @@ TileBenchRow timeBuilds(const char* what, double labelledPercent, int runs, Buil
   return row;
 }
 
+std::vector<int> allSlicesOf(const Volume& volume, Axis axis) {
+  std::vector<int> slices(std::size_t(volume.dims[int(axis)]));
+  std::iota(slices.begin(), slices.end(), 0);
+  return slices;
+}
+
+// Builds in parts, cancelled from another thread at 10, 20, ... 90 % of `buildMs` (cycling over
+// the runs); the latency is from the cancel to the build's return.
+TileBenchRow timeInterrupts(const Volume& volume, Axis axis, int runs, double buildMs) {
+  std::vector<double> latency;
+  for (int run = 0; run < runs; ++run) {
+    const double fraction = 0.1 * (1 + run % 9);
+    SliceTiles tiles = unsummarisedSliceTiles(volume, axis, false);
+    std::vector<int> unbuilt = allSlicesOf(volume, axis);
+    std::atomic<bool> cancel{false};
+    BenchClock::time_point cancelledAt{};
+    std::thread canceller([&] {
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(fraction * buildMs));
+      cancelledAt = BenchClock::now();
+      cancel.store(true);
+    });
+    const bool finished = summariseSliceTiles(tiles, volume, unbuilt, &cancel);
+    const BenchClock::time_point returned = BenchClock::now();
+    canceller.join();
+    if (!finished)
+      latency.push_back(std::chrono::duration<double, std::milli>(returned - cancelledAt).count());
+  }
+  TileBenchRow row{"interrupt", 0.0, int(latency.size())};
+  if (latency.empty()) return row;
+  row.medianMs = median(latency);
+  row.minMs = *std::min_element(latency.begin(), latency.end());
+  row.maxMs = *std::max_element(latency.begin(), latency.end());
+  return row;
+}
+
 }  // namespace
 
 Volume labelledAbove(const Volume& volume, double hu) {
@@ -49,7 +88,14 @@ std::vector<TileBenchRow> runTileBench(const Volume& volume, const Volume& label
   const double percent = labelledPercentOf(labelled);
   std::vector<TileBenchRow> rows{
       timeBuilds("plain", 0.0, runs, [&] { return buildSliceTiles(volume, axis); }),
-      timeBuilds("labelled", percent, runs, [&] { return buildSliceTiles(labelled, axis); })};
+      timeBuilds("labelled", percent, runs, [&] { return buildSliceTiles(labelled, axis); }),
+      timeBuilds("in parts", 0.0, runs, [&] {
+        SliceTiles tiles = unsummarisedSliceTiles(volume, axis, false);
+        std::vector<int> unbuilt = allSlicesOf(volume, axis);
+        summariseSliceTiles(tiles, volume, unbuilt, nullptr);
+        return tiles;
+      })};
+  rows.push_back(timeInterrupts(volume, axis, std::max(runs, 9), rows[0].medianMs));
   if (!overlaySummarisedAbout(axis)) return rows;
   // The labels as a label change's overlay on the volume without them (what a label job builds).
   std::vector<std::size_t> voxels;

@@ -403,6 +403,33 @@ SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
   return tiles;
 }
 
+SliceTiles unsummarisedSliceTiles(const Volume& volume, Axis axis, bool labelled) {
+  return allocatedTiles(volume, axis, labelled);
+}
+
+void summariseSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vector<int>& slices) {
+  summariseSlices(volumeSlices(volume, tiles), tiles, slices);
+}
+
+bool summariseSliceTiles(SliceTiles& tiles, const Volume& volume, std::vector<int>& unbuilt,
+                         const std::atomic<bool>* cancel) {
+  const std::size_t sliceVoxels = std::size_t(volume.dims[tiles.axisB]) * volume.dims[tiles.axisC];
+  std::size_t group =
+      std::clamp<std::size_t>((std::size_t(1) << 20) / std::max<std::size_t>(sliceVoxels, 1), 2, 64);
+  // Slices are shared out to the threads one each: a multiple of 2 or 4 keeps none idle.
+  group = group < 4 ? (group + 1) / 2 * 2 : group / 4 * 4;
+  while (!unbuilt.empty()) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+    const std::size_t count = std::min(group, unbuilt.size());
+    const std::vector<int> slices(unbuilt.end() - std::ptrdiff_t(count), unbuilt.end());
+    summariseSliceTiles(tiles, volume, slices);
+    unbuilt.resize(unbuilt.size() - count);
+  }
+  return true;
+}
+
+bool volumeHasLabels(const Volume& volume) { return anyLabel(volume); }
+
 bool overlaySummarisedAbout(Axis axis) { return axis != Axis::i; }
 
 SliceTiles buildSliceTiles(const Volume& volume, Axis axis, const LabelOverlay& overlay,

@@ -8,6 +8,7 @@
 // taken over the tile grown by one voxel after. The mean filter reads f - 1 .. f + 2, so a
 // second range is kept over the tile grown by one more voxel on each side.
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -126,6 +127,19 @@ struct SliceTiles {
 // it throws stops the build and leaves this function (e.g. a load's cancel).
 SliceTiles buildSliceTiles(const Volume& volume, Axis axis,
                            const std::function<void(double)>& progress = {});
+
+// A build in parts, e.g. between a renderer's cancellation checks: the tiles allocated with no
+// slice summarised yet; `labelled`: whether some voxel of the volume carries a label
+// (volumeHasLabels). Once summariseSliceTiles has summarised every slice, the tiles equal
+// buildSliceTiles(volume, axis).
+SliceTiles unsummarisedSliceTiles(const Volume& volume, Axis axis, bool labelled);
+void summariseSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vector<int>& slices);
+// Summarises the `unbuilt` slices (ascending; each taken out once done) in groups of some 1 M
+// voxels (2-3 ms at 2 threads), until none is left (true) or `cancel` is set before a group
+// (false).
+bool summariseSliceTiles(SliceTiles& tiles, const Volume& volume, std::vector<int>& unbuilt,
+                         const std::atomic<bool>* cancel);
+bool volumeHasLabels(const Volume& volume);
 
 // Labels for some voxels, not yet written into the volume: a label change whose tiles are built
 // ahead, while renderers still read the volume as it is.

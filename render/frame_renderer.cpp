@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -37,18 +38,51 @@ FrameRenderer::FrameRenderer(const Volume& volume, TilesAhead ahead)
 TilesAhead FrameRenderer::releaseTiles() {
   classification_.reset();
   classifiedScene_.reset();
+  std::shared_ptr<SliceTiles> spare = std::exchange(spareTiles_, nullptr);
+  const bool spareBuilt = std::exchange(spareUnbuilt_, {}).empty();
+  if (!std::exchange(unbuilt_, {}).empty()) {
+    tiles_.reset();
+    staleSlices_.clear();
+    if (spareBuilt) return {std::move(spare), {}};
+    return {};
+  }
   return {std::exchange(tiles_, nullptr), std::exchange(staleSlices_, {})};
 }
 
-void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
-                            Compositing compositing) {
-  const bool mip = compositing == Compositing::mip;
-  if (!tiles_ || tiles_->axis != axis) {
-    classification_.reset();
-    tiles_.reset();  // free the old tiles before building the new ones
+bool FrameRenderer::volumeHasLabels() const {
+  if (tiles_ && unbuilt_.empty() && staleSlices_.empty()) return tiles_->labelled;
+  if (spareTiles_ && spareUnbuilt_.empty()) return spareTiles_->labelled;
+  return angio::volumeHasLabels(volume_);
+}
+
+// The tiles of `axis` become the current ones: the spare ones if they are of that axis, else new
+// ones to build; the current ones become the spare (unless stale: a label change's tiles are
+// refreshed for their own axis only).
+void FrameRenderer::switchAxis(Axis axis) {
+  classification_.reset();
+  if (!staleSlices_.empty()) {
+    tiles_.reset();
     staleSlices_.clear();
-    tiles_ = std::make_shared<SliceTiles>(buildSliceTiles(volume_, axis));
+    unbuilt_.clear();
   }
+  if (spareTiles_ && spareTiles_->axis == axis) {
+    std::swap(tiles_, spareTiles_);
+    std::swap(unbuilt_, spareUnbuilt_);
+    return;
+  }
+  const bool labelled = volumeHasLabels();
+  spareTiles_ = std::exchange(tiles_, nullptr);  // the tiles before the spare ones are freed first
+  spareUnbuilt_ = std::exchange(unbuilt_, {});
+  tiles_ = std::make_shared<SliceTiles>(unsummarisedSliceTiles(volume_, axis, labelled));
+  unbuilt_.resize(std::size_t(tiles_->slices));
+  std::iota(unbuilt_.begin(), unbuilt_.end(), 0);
+}
+
+bool FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
+                            Compositing compositing, const std::atomic<bool>* cancel) {
+  const bool mip = compositing == Compositing::mip;
+  if (!tiles_ || tiles_->axis != axis) switchAxis(axis);
+  if (!summariseSliceTiles(*tiles_, volume_, unbuilt_, cancel)) return false;
   if (!staleSlices_.empty()) {
     classification_.reset();
     // Copied if someone else still reads them (tiles() handed them out).
@@ -56,19 +90,22 @@ void FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
     refreshSliceTiles(*tiles_, volume_, staleSlices_);
     staleSlices_.clear();
   }
-  if (classification_ && classifiedScene_ == scene && (!mip || classification_->hasMaxima())) return;
+  if (classification_ && classifiedScene_ == scene && (!mip || classification_->hasMaxima()))
+    return true;
   // The classification needs the region TFs only, not the regions: any non-null regions stand
   // for "VesselGlyph" here.
   std::optional<TileClassification> previous = std::move(classification_);
   classification_.emplace(*tiles_, scene->tables(scene->hasRegions() ? &regions_ : nullptr), mip,
                           previous ? &*previous : nullptr);
   classifiedScene_ = scene;
+  return true;
 }
 
 double FrameRenderer::structureMiB() const {
-  if (!tiles_) return 0;
-  const std::size_t classified = classification_ ? classification_->memoryBytes() : 0;
-  return (tiles_->memoryBytes() + classified) / 1048576.0;
+  std::size_t bytes = classification_ ? classification_->memoryBytes() : 0;
+  for (const auto& tiles : {tiles_, spareTiles_})
+    if (tiles) bytes += tiles->memoryBytes();
+  return bytes / 1048576.0;
 }
 
 Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
@@ -99,7 +136,11 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
     s = {};
     image = renderReference(volume_, tables, params, control.progress);
   } else {
-    prepare(scene, params.axis, params.compositing);
+    if (!prepare(scene, params.axis, params.compositing, control.cancel)) {
+      s = {};
+      s.cancelled = true;
+      return image;
+    }
     FastRenderOptions options = techniques;
     options.cancel = control.cancel;
     options.recycle = control.recycle;

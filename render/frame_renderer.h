@@ -1,10 +1,11 @@
 #pragma once
 // The one path from a prepared scene and a view to pixels, for the window's progressive renderer,
 // `angioray render`, exports, rotation series and bench alike. A FrameRenderer keeps what
-// successive renders of one volume share: the slice tiles of the current rotation axis (rebuilt
-// when the axis changes), the tile classification of the current scene (made again for another
-// scene), the buffers of the rays' regions. One per thread of use; each render runs in parallel
-// inside (oneTBB, in whatever arena the caller runs it).
+// successive renders of one volume share: the slice tiles of the current rotation axis and of the
+// one before (a rotation about the patient's long axis goes back and forth between i and j), the
+// tile classification of the current scene (made again for another scene), the buffers of the
+// rays' regions. One per thread of use; each render runs in parallel inside (oneTBB, in whatever
+// arena the caller runs it).
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -62,14 +63,20 @@ class FrameRenderer {
   // Builds the tiles of `axis` and classifies them for `scene` now rather than in the next
   // render (the progressive renderer does this before a request's first level).
   // MIP needs the tiles' maxima as the scene's labels read them (`compositing`).
-  void prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
-               Compositing compositing = Compositing::dvr);
+  // A build of new tiles stops between groups of slices once `cancel` is set (false: not
+  // prepared; a cancelled render returns no image); the next prepare for that axis goes on
+  // where it stopped.
+  bool prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
+               Compositing compositing = Compositing::dvr, const std::atomic<bool>* cancel = nullptr);
 
-  // Memory of the slice tiles (packed ranges, core/slice_tiles.h) and their classification, MiB.
+  // Memory of the slice tiles (packed ranges, core/slice_tiles.h; both axes kept) and their
+  // classification, MiB.
   double structureMiB() const;
-  // The slice tiles of the last prepared axis (or those given to the constructor); null: none yet.
-  std::shared_ptr<const SliceTiles> tiles() const { return tiles_; }
-  // Gives up the slice tiles with the slices still stale in them (the renderer has none after).
+  // The slice tiles of the last prepared axis (or those given to the constructor); null: none yet
+  // or not yet built to the end.
+  std::shared_ptr<const SliceTiles> tiles() const { return unbuilt_.empty() ? tiles_ : nullptr; }
+  // Gives up the slice tiles of the last prepared axis (or else of the one before) with the
+  // slices still stale in them; the renderer has none after.
   TilesAhead releaseTiles();
 
   // Which of the fast raycaster's techniques run (the bench switches them; the image is the same).
@@ -77,9 +84,17 @@ class FrameRenderer {
   FastRenderOptions techniques;
 
  private:
+  // Whether some voxel carries a label: known from complete tiles, else read from the volume.
+  bool volumeHasLabels() const;
+  void switchAxis(Axis axis);
+
   const Volume& volume_;
   std::shared_ptr<SliceTiles> tiles_;
   std::vector<int> staleSlices_;  // of tiles_, to refresh before their first use
+  std::vector<int> unbuilt_;      // slices of tiles_ not summarised yet (ascending)
+  // The tiles of the axis before, complete or not, with their unsummarised slices.
+  std::shared_ptr<SliceTiles> spareTiles_;
+  std::vector<int> spareUnbuilt_;
   std::shared_ptr<const PreparedScene> classifiedScene_;
   std::optional<TileClassification> classification_;
   RayRegions regions_;  // the view's, buffers reused from render to render

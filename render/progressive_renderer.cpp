@@ -75,7 +75,8 @@ std::uint64_t ProgressiveRenderer::request(ProgressiveRequest request) {
     std::lock_guard lock(mutex_);
     if (isInProgress(request)) return status_.request;
     id = ++nextId_;
-    if (status_.rendering && !runningLevelStaysUseful(request)) {
+    const bool otherAxis = status_.preparing && *status_.preparing != request.params.axis;
+    if ((status_.rendering && !runningLevelStaysUseful(request)) || otherAxis) {
       cancelRequestedAt_ = Clock::now();
       cancel_.store(true);
     }
@@ -161,10 +162,25 @@ void ProgressiveRenderer::workerLoop() {
   }
 }
 
-// Slice tiles per axis (rebuilt when it changes, not cancellable: hence built ahead by a load) and
-// tile visibility per scene.
-void ProgressiveRenderer::prepare(const Job& job) {
-  frames_.prepare(job.request.scene, job.request.params.axis, job.request.params.compositing);
+// Slice tiles per axis (built when it changes, unless kept from before or built ahead by a load;
+// a request about another axis interrupts the build) and tile visibility per scene. False: cancelled.
+bool ProgressiveRenderer::prepare(const Job& job) {
+  {
+    std::lock_guard lock(mutex_);
+    status_.preparing = job.request.params.axis;
+  }
+  bool prepared = false;
+  threads_.arenaFor(Quality::fast).execute([&] {
+    prepared = frames_.prepare(job.request.scene, job.request.params.axis,
+                               job.request.params.compositing, &cancel_);
+  });
+  std::lock_guard lock(mutex_);
+  status_.preparing.reset();
+  if (!prepared) {
+    status_.lastInterruptMs = Ms(Clock::now() - cancelRequestedAt_).count();
+    if (pending_) pending_->timeline.cancelSeen = Clock::now();
+  }
+  return prepared;
 }
 
 // A level whose image the newest frame already shows for the same view and TF is not rendered
@@ -245,7 +261,7 @@ Image ProgressiveRenderer::renderLevel(const Job& job, const RenderParams& param
 }
 
 void ProgressiveRenderer::runJob(const Job& job) {
-  threads_.arenaFor(Quality::fast).execute([&] { prepare(job); });
+  if (!prepare(job)) return;
   for (int q = firstLevelToRender(job); q <= lastLevel(job.request); ++q) {
     const Quality level = Quality(q);
     if (!beginLevel(level)) return;

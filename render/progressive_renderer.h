@@ -94,12 +94,13 @@ struct LevelTiming {
 };
 
 struct ProgressiveStatus {
-  std::uint64_t request = 0;                       // the newest request's id
-  bool busy = false;                               // the worker has something to do for it
-  std::optional<Quality> rendering;                // the level being rendered right now
-  double renderingMs = 0;                          // how long that level has been running
-  double expectedMs = 0;                           // that level's last duration (0 = not known yet)
-  int rowsDone = 0, rows = 0;                      // image rows of the running level finished / in all
+  std::uint64_t request = 0;         // the newest request's id
+  bool busy = false;                 // the worker has something to do for it
+  std::optional<Quality> rendering;  // the level being rendered right now
+  std::optional<Axis> preparing;     // slice tiles about this axis being built or classified
+  double renderingMs = 0;            // how long that level has been running
+  double expectedMs = 0;             // that level's last duration (0 = not known yet)
+  int rowsDone = 0, rows = 0;        // image rows of the running level finished / in all
   std::array<LevelTiming, kQualityLevels> levels;  // of the newest request
   double lastInterruptMs = -1;                     // request() -> interrupted render returned, last time
   std::string error;  // a render that threw (e.g. out of memory), else empty
@@ -122,7 +123,7 @@ class ProgressiveRenderer {
  public:
   // `volume` and `threads` must outlive the renderer; every request's scene is of `volume`.
   // `tiles`: the volume's slice tiles built ahead (FrameRenderer), so that the first frame need
-  // not build them: that build cannot be interrupted (0.4-0.7 s at 512x512x1200).
+  // not build them (0.3-0.4 s at 512x512x1200; a request about another axis interrupts it).
   ProgressiveRenderer(const Volume& volume, RenderThreads& threads, ProgressiveCallbacks callbacks = {},
                       TilesAhead tiles = {});
   ~ProgressiveRenderer();  // interrupts and joins the worker
@@ -135,7 +136,9 @@ class ProgressiveRenderer {
 
   // Starts rendering `request` and returns its id. Interrupts the running render, except that an
   // interactive request lets a running fast render finish (otherwise a drag faster than the fast
-  // level would never show a frame); the worker then takes only the newest pending request.
+  // level would never show a frame), and a build of slice tiles unless the request is about
+  // another axis (it goes on with the next request about its axis); the worker then takes only
+  // the newest pending request.
   // A request identical to the one in progress returns that one's id and changes nothing; one
   // identical to the newest finished frame's view and TF continues above that frame's level.
   std::uint64_t request(ProgressiveRequest request);
@@ -160,7 +163,7 @@ class ProgressiveRenderer {
   void stopWorker();
   void workerLoop();
   void runJob(const Job& job);
-  void prepare(const Job& job);
+  bool prepare(const Job& job);
   int firstLevelToRender(const Job& job);
   bool beginLevel(Quality level);
   void publish(const Job& job, Quality level, Image image, const RequestTimeline& timeline,

@@ -5,6 +5,8 @@
 // label, add more, and take the last away.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <numeric>
 
 #include "core/slice_tiles.h"
@@ -128,6 +130,37 @@ TEST(SliceTilesAhead, AnOverlayBuildEqualsABuildOfTheChangedVolume) {
   const std::vector<std::uint8_t> noLabels;
   EXPECT_THROW(buildSliceTiles(smallPhantom(), Axis::i, LabelOverlay{none, noLabels}),
                std::invalid_argument);
+}
+
+// A renderer builds new tiles in groups of slices between its cancellation checks, in any order.
+TEST(SliceTilesInParts, SummarisedGroupByGroupTheyEqualABuildInOne) {
+  for (const bool labelled : {false, true}) {
+    Volume volume = smallPhantom();
+    if (labelled) setLabel(volume, boxVoxels(volume, {3, 4, 5}, {9, 8, 7}), 2);
+    ASSERT_EQ(volumeHasLabels(volume), labelled);
+    for (const Axis axis : {Axis::i, Axis::j, Axis::k}) {
+      SCOPED_TRACE(std::string(toString(axis)) + (labelled ? " labelled" : ""));
+      SliceTiles tiles = unsummarisedSliceTiles(volume, axis, labelled);
+      std::vector<int> odd, even;
+      for (int slice = 0; slice < tiles.slices; ++slice) (slice % 2 ? odd : even).push_back(slice);
+      summariseSliceTiles(tiles, volume, odd);
+      std::reverse(even.begin(), even.end());
+      for (const int slice : even) summariseSliceTiles(tiles, volume, {slice});
+      const SliceTiles built = buildSliceTiles(volume, axis);
+      expectSameTiles(tiles, built);
+
+      SliceTiles grouped = unsummarisedSliceTiles(volume, axis, labelled);
+      std::vector<int> unbuilt(std::size_t(grouped.slices));
+      std::iota(unbuilt.begin(), unbuilt.end(), 0);
+      std::atomic<bool> cancel{true};
+      EXPECT_FALSE(summariseSliceTiles(grouped, volume, unbuilt, &cancel));
+      EXPECT_EQ(unbuilt.size(), std::size_t(grouped.slices));
+      cancel = false;
+      EXPECT_TRUE(summariseSliceTiles(grouped, volume, unbuilt, &cancel));
+      EXPECT_TRUE(unbuilt.empty());
+      expectSameTiles(grouped, built);
+    }
+  }
 }
 
 TEST(SliceTilesRefresh, SlicesHoldingAreThoseOfTheVoxelsAlongEachAxis) {

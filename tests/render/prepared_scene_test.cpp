@@ -1,6 +1,7 @@
 // Prepared scenes and the frame renderer: one recipe gives one image however it is reached (a
 // fresh scene, a scene that borrowed the previous one's tubes, a frame renderer reused across
 // scenes and axes), and bad recipes are refused when prepared.
+#include <atomic>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -106,6 +107,41 @@ TEST(FrameRenderer, TilesBuiltAheadAreUsedForTheirAxisOnly) {
   EXPECT_EQ(frames.render(aboutI).pixels, fresh(recipe).pixels);
   ASSERT_NE(frames.tiles(), nullptr);
   EXPECT_EQ(frames.tiles()->axis, Axis::i);
+}
+
+// A rotation about the long axis goes back and forth between the tiles about i and about j: the
+// renderer keeps both. A cancelled build of new tiles gives no image and goes on with the next
+// render about that axis.
+TEST(FrameRenderer, KeepsTheTilesOfTheAxisBeforeAndACancelledBuildGoesOnLater) {
+  const PhantomInVolumeFrame& data = testData();
+  RenderRecipe recipe;
+  recipe.params.axis = Axis::k;
+  const auto aboutK = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+  FrameRenderer frames(data.volume);
+  const Image firstK = frames.render(aboutK);
+  const auto tilesK = frames.tiles();
+  ASSERT_NE(tilesK, nullptr);
+
+  recipe.params.axis = Axis::i;
+  const auto aboutI = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+  const std::atomic<bool> cancelled{true};
+  FastRenderStats stats;
+  const Image none = frames.render(aboutI, RenderControl{&cancelled}, &stats);
+  EXPECT_TRUE(stats.cancelled);
+  EXPECT_TRUE(none.pixels.empty());
+  EXPECT_EQ(frames.tiles(), nullptr);  // not built to the end
+  EXPECT_FALSE(frames.prepare(aboutI, Axis::i, Compositing::dvr, &cancelled));
+  EXPECT_EQ(frames.render(aboutI).pixels, fresh(recipe).pixels);
+  const auto tilesI = frames.tiles();
+  ASSERT_NE(tilesI, nullptr);
+  EXPECT_EQ(tilesI->axis, Axis::i);
+
+  EXPECT_EQ(frames.render(aboutK).pixels, firstK.pixels);
+  EXPECT_EQ(frames.tiles(), tilesK);  // the same tiles again, not built anew
+  EXPECT_EQ(frames.render(aboutI).pixels, fresh(recipe).pixels);
+  EXPECT_EQ(frames.tiles(), tilesI);
+  // A label change's next renderer gets the current axis's complete tiles.
+  EXPECT_EQ(frames.releaseTiles().tiles, tilesI);
 }
 
 TEST(FrameRenderer, TilesOfAnotherVolumeAreRefused) {
