@@ -105,7 +105,11 @@ void checkNrrd(const fs::path& file) {
   std::vector<double> directions;
   std::string directionsText;
   for (const NrrdHeaderLine& line : header->lines) {
-    if (line.kind == NrrdLineKind::comment || line.kind == NrrdLineKind::keyValue) continue;
+    // Teem never quotes a comment or a key/value pair in a message; the ones it has quoted past a
+    // NUL byte were lines it could not read, but a key/value pair with a NUL is checked too.
+    const bool plainKeyValue =
+        line.kind == NrrdLineKind::keyValue && line.text.find('\0') == std::string::npos;
+    if (line.kind == NrrdLineKind::comment || plainKeyValue) continue;
     requireShortFieldLine(file, line);
     const std::string& key = line.name;
     const std::string& value = line.value;

@@ -35,8 +35,7 @@ bool readLine(std::streambuf& in, std::string& line, std::uint64_t& offset, bool
 // looks for a field ("name: value"), then for a key/value pair ("key:=value"). A ":=" before the
 // first ": " cannot follow a field's name, so such a line is a key/value pair here; a ":=" after it
 // may still be one for teem (if the name is no field), but is taken for a field, which is only
-// checked more. So is a line with a NUL byte: teem's error messages have quoted such lines past
-// the NUL.
+// checked more.
 NrrdHeaderLine classified(std::string text, int number) {
   NrrdHeaderLine line;
   line.number = number;
@@ -44,7 +43,7 @@ NrrdHeaderLine classified(std::string text, int number) {
   const std::size_t separator = seen.find(": "), assign = seen.find(":=");
   if (!seen.empty() && seen[0] == '#') {
     line.kind = NrrdLineKind::comment;
-  } else if (assign < separator && seen.size() == text.size()) {
+  } else if (assign < separator) {
     line.kind = NrrdLineKind::keyValue;
   } else if (separator != std::string_view::npos) {
     line.kind = NrrdLineKind::field;

@@ -40,16 +40,17 @@ TEST_F(NrrdHeaderTest, CommentsKeyValuePairsAndFieldsAreToldApartAsTeemDoes) {
                               withNul + "\nno separator\nsizes: 1 2 3\n");
   const auto header = readNrrdHeader(dir_ / "h.nrrd");
   ASSERT_TRUE(header);
-  ASSERT_EQ(header->lines.size(), 6u);  // teem stops at the line it cannot read
+  ASSERT_EQ(header->lines.size(), 7u);  // teem stops at the line it cannot read
   EXPECT_EQ(header->lines[0].kind, NrrdLineKind::comment);
   EXPECT_EQ(header->lines[1].kind, NrrdLineKind::keyValue);
   EXPECT_EQ(header->lines[2].kind, NrrdLineKind::field);
   EXPECT_EQ(header->lines[2].name, "spacedirections");  // teem matches names case-insensitively
   EXPECT_EQ(header->field("datafile"), "volume.raw");
-  EXPECT_EQ(header->lines[4].kind, NrrdLineKind::field);    // checked, though teem may take a key
-  EXPECT_EQ(header->lines[5].kind, NrrdLineKind::unknown);  // a NUL: not a plain key/value pair
+  EXPECT_EQ(header->lines[4].kind, NrrdLineKind::field);     // checked, though teem may take a key
+  EXPECT_EQ(header->lines[5].kind, NrrdLineKind::keyValue);  // teem reads up to the NUL
   EXPECT_EQ(header->lines[5].text, withNul);
-  EXPECT_EQ(header->lines[5].number, 7);
+  EXPECT_EQ(header->lines[6].kind, NrrdLineKind::unknown);
+  EXPECT_EQ(header->lines[6].number, 8);
   EXPECT_EQ(header->field("sizes"), "");
   EXPECT_FALSE(header->dataStart);  // a detached header may end without an empty line
 }

@@ -797,6 +797,11 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
                    "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
   writeText(dir_ / "whole-cr.nrrd", cr + std::string(16000, '\0'));
   EXPECT_EQ(readVolume(dir_ / "whole-cr.nrrd").volume.dims, glm::ivec3(20, 20, 20));
+  // Teem reads a key/value pair up to a NUL byte and goes on (a fuzzer's way around the data check).
+  const std::string nul = "NRRD0004\nkey:=a" + std::string(1, '\0') + "b\n";
+  writeText(dir_ / "short-nul.nrrd", nul + header.substr(9) + "\n" + std::string(100, '\0'));
+  expectInputError(dir_ / "short-nul.nrrd",
+                   "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
 }
 
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
