@@ -412,7 +412,7 @@ void summariseSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vec
 }
 
 bool summariseSliceTiles(SliceTiles& tiles, const Volume& volume, std::vector<int>& unbuilt,
-                         const std::atomic<bool>* cancel) {
+                         const std::atomic<bool>* cancel, const std::function<void(double)>& progress) {
   const std::size_t sliceVoxels = std::size_t(volume.dims[tiles.axisB]) * volume.dims[tiles.axisC];
   std::size_t group =
       std::clamp<std::size_t>((std::size_t(1) << 20) / std::max<std::size_t>(sliceVoxels, 1), 2, 64);
@@ -424,6 +424,7 @@ bool summariseSliceTiles(SliceTiles& tiles, const Volume& volume, std::vector<in
     const std::vector<int> slices(unbuilt.end() - std::ptrdiff_t(count), unbuilt.end());
     summariseSliceTiles(tiles, volume, slices);
     unbuilt.resize(unbuilt.size() - count);
+    if (progress) progress(1.0 - double(unbuilt.size()) / double(std::max(tiles.slices, 1)));
   }
   return true;
 }

@@ -136,9 +136,11 @@ SliceTiles unsummarisedSliceTiles(const Volume& volume, Axis axis, bool labelled
 void summariseSliceTiles(SliceTiles& tiles, const Volume& volume, const std::vector<int>& slices);
 // Summarises the `unbuilt` slices (ascending; each taken out once done) in groups of some 1 M
 // voxels (2-3 ms at 2 threads), until none is left (true) or `cancel` is set before a group
-// (false).
+// (false). `progress`, if given, gets the fraction of all the tiles' slices summarised after each
+// group.
 bool summariseSliceTiles(SliceTiles& tiles, const Volume& volume, std::vector<int>& unbuilt,
-                         const std::atomic<bool>* cancel);
+                         const std::atomic<bool>* cancel,
+                         const std::function<void(double)>& progress = {});
 bool volumeHasLabels(const Volume& volume);
 
 // Labels for some voxels, not yet written into the volume: a label change whose tiles are built

@@ -30,6 +30,11 @@ void drawStatusBar(const StatusInfo& info, float height) {
     std::snprintf(label, sizeof label, "%s %.0f ms", toString(*info.status.rendering),
                   info.status.renderingMs);
     ImGui::ProgressBar(float(info.status.estimatedProgress()), ImVec2(150, 0), label);
+  } else if (info.status.preparing && info.status.tilesBuilt > 0) {
+    // The slice tiles of a new rotation axis: 1-2 s at 512x512x1200 about i or j.
+    char label[48];
+    std::snprintf(label, sizeof label, "tiles about %s", toString(*info.status.preparing));
+    ImGui::ProgressBar(float(info.status.tilesBuilt), ImVec2(150, 0), label);
   } else {
     ImGui::ProgressBar(info.status.busy ? 0.f : 1.f, ImVec2(150, 0),
                        info.status.busy ? "preparing" : "done");

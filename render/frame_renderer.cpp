@@ -79,10 +79,11 @@ void FrameRenderer::switchAxis(Axis axis) {
 }
 
 bool FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
-                            Compositing compositing, const std::atomic<bool>* cancel) {
+                            Compositing compositing, const std::atomic<bool>* cancel,
+                            const std::function<void(double)>& tilesBuilt) {
   const bool mip = compositing == Compositing::mip;
   if (!tiles_ || tiles_->axis != axis) switchAxis(axis);
-  if (!summariseSliceTiles(*tiles_, volume_, unbuilt_, cancel)) return false;
+  if (!summariseSliceTiles(*tiles_, volume_, unbuilt_, cancel, tilesBuilt)) return false;
   if (!staleSlices_.empty()) {
     classification_.reset();
     // Copied if someone else still reads them (tiles() handed them out).

@@ -65,9 +65,10 @@ class FrameRenderer {
   // MIP needs the tiles' maxima as the scene's labels read them (`compositing`).
   // A build of new tiles stops between groups of slices once `cancel` is set (false: not
   // prepared; a cancelled render returns no image); the next prepare for that axis goes on
-  // where it stopped.
+  // where it stopped. `tilesBuilt` gets the fraction of the tiles' slices built, as it grows.
   bool prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
-               Compositing compositing = Compositing::dvr, const std::atomic<bool>* cancel = nullptr);
+               Compositing compositing = Compositing::dvr, const std::atomic<bool>* cancel = nullptr,
+               const std::function<void(double)>& tilesBuilt = {});
 
   // Memory of the slice tiles (packed ranges, core/slice_tiles.h; both axes kept) and their
   // classification, MiB.

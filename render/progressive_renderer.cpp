@@ -168,11 +168,16 @@ bool ProgressiveRenderer::prepare(const Job& job) {
   {
     std::lock_guard lock(mutex_);
     status_.preparing = job.request.params.axis;
+    status_.tilesBuilt = 0;
   }
+  const auto tilesBuilt = [this](double fraction) {
+    std::lock_guard lock(mutex_);
+    status_.tilesBuilt = fraction;
+  };
   bool prepared = false;
   threads_.arenaFor(Quality::fast).execute([&] {
     prepared = frames_.prepare(job.request.scene, job.request.params.axis,
-                               job.request.params.compositing, &cancel_);
+                               job.request.params.compositing, &cancel_, tilesBuilt);
   });
   std::lock_guard lock(mutex_);
   status_.preparing.reset();

@@ -98,6 +98,7 @@ struct ProgressiveStatus {
   bool busy = false;                 // the worker has something to do for it
   std::optional<Quality> rendering;  // the level being rendered right now
   std::optional<Axis> preparing;     // slice tiles about this axis being built or classified
+  double tilesBuilt = 0;             // while preparing: the fraction of those tiles built so far
   double renderingMs = 0;            // how long that level has been running
   double expectedMs = 0;             // that level's last duration (0 = not known yet)
   int rowsDone = 0, rows = 0;        // image rows of the running level finished / in all

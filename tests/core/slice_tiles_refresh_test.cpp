@@ -156,8 +156,14 @@ TEST(SliceTilesInParts, SummarisedGroupByGroupTheyEqualABuildInOne) {
       EXPECT_FALSE(summariseSliceTiles(grouped, volume, unbuilt, &cancel));
       EXPECT_EQ(unbuilt.size(), std::size_t(grouped.slices));
       cancel = false;
-      EXPECT_TRUE(summariseSliceTiles(grouped, volume, unbuilt, &cancel));
+      std::vector<double> fractions;  // reported, one per group
+      EXPECT_TRUE(summariseSliceTiles(grouped, volume, unbuilt, &cancel,
+                                      [&](double fraction) { fractions.push_back(fraction); }));
       EXPECT_TRUE(unbuilt.empty());
+      ASSERT_FALSE(fractions.empty());
+      EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+      EXPECT_GT(fractions.front(), 0.0);
+      EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
       expectSameTiles(grouped, built);
     }
   }
