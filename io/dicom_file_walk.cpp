@@ -156,6 +156,11 @@ class ElementWalk {
       return !open.empty() && open.back().kind == kind;
     };
     const bool undefined = length == 0xffffffffu;
+    // A delimiter's length is 0 (PS3.5 7.5). GDCM reads a delimiter of encapsulated pixel data as
+    // one more fragment and allocates its length; elsewhere it only warns.
+    if (elementNumber != 0xe000 && length != 0 &&
+        (innermost(Container::Kind::fragments) || length > fileSize_ - at - 8))
+      fail("is a delimiter with a length of " + std::to_string(length) + " (a delimiter has none)");
     switch (elementNumber) {
       case 0xe000: {  // an item
         if (open.empty() || innermost(Container::Kind::item)) fail("is an item tag outside a sequence");

@@ -168,6 +168,22 @@ TEST_F(DicomFileWalkTest, EncapsulatedPixelDataIsSteppedOverFragmentByFragment) 
   EXPECT_NE(walkRefusal(file, kModality + pixels + kOpenItem + kSequenceEnd)
                 .find("is a pixel data fragment of undefined length"),
             std::string::npos);
+  // GDCM reads the delimiter as a fragment and allocates its length (1.3 GB here: a fuzz finding).
+  const std::string longEnd = implicitElement(0xfffe, 0xe0dd, 0x4e550000u);
+  EXPECT_NE(
+      walkRefusal(file, kModality + pixels + offsets + fragment + longEnd)
+          .find("element (fffe,e0dd) is a delimiter with a length of 1314193408 (a delimiter has none)"),
+      std::string::npos);
+  const std::string shortEnd = implicitElement(0xfffe, 0xe0dd, 2);
+  EXPECT_NE(walkRefusal(file, kModality + pixels + offsets + fragment + shortEnd + "xx")
+                .find("is a delimiter with a length of 2"),
+            std::string::npos);
+  // Outside pixel data GDCM only warns: a length the file holds is let through.
+  const std::string sequenceEnd = implicitElement(0xfffe, 0xe0dd, 2);
+  const std::string patientName = implicitElement(0x0010, 0x0010, 2, "AB");
+  EXPECT_EQ(walkRefusal(file, kModality + kOpenSequence + kOpenItem + kModality + kItemEnd +
+                                  sequenceEnd + patientName),
+            "");
 }
 
 // A private sequence stored as UN of undefined length (what a converter makes of a sequence whose
