@@ -158,7 +158,8 @@ class ElementWalk {
     const bool undefined = length == 0xffffffffu;
     // A delimiter's length is 0 (PS3.5 7.5). GDCM reads a delimiter of encapsulated pixel data as
     // one more fragment and allocates its length; elsewhere it only warns.
-    if (elementNumber != 0xe000 && length != 0 &&
+    const bool delimiter = elementNumber == 0xe00d || elementNumber == 0xe0dd;
+    if (delimiter && length != 0 &&
         (innermost(Container::Kind::fragments) || length > fileSize_ - at - 8))
       fail("is a delimiter with a length of " + std::to_string(length) + " (a delimiter has none)");
     switch (elementNumber) {
