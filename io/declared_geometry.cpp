@@ -178,6 +178,11 @@ void checkMetaImageLayout(const fs::path& file, const MetaImageHeader& header) {
   if (!whole)
     throw InputError(file, "has DimSize '" + shownText(header.field("DimSize")) + "' that is not " +
                                std::to_string(ndims) + " whole numbers >= 1");
+  // MetaIO keeps a size as an int (a larger one wraps around to a negative size).
+  for (const double n : sizes)
+    if (n > double(std::numeric_limits<int>::max()))
+      throw InputError(file,
+                       "has impossible dimensions (DimSize " + shownText(header.field("DimSize")) + ")");
   const std::string data = header.field("ElementDataFile");
   // MetaIO takes an empty name for a data file of (size_t) -1 bytes and asks for that much memory.
   if (data.empty())

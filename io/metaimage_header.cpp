@@ -1,5 +1,7 @@
 #include "io/metaimage_header.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -20,12 +22,42 @@ std::string trimmed(const std::string& text) {
   return first == std::string::npos ? "" : text.substr(first, last - first + 1);
 }
 
+// A byte below 0x20 (or 0x7F) other than a tab, a NUL (a C-string end, read as MetaIO reads it) or
+// the CR of a CRLF line end. MetaIO ends a field name at a CR and then takes the value after the
+// next '=' (that may be on the line after), and skips a leading vertical tab or form feed;
+// refusing these bytes keeps what this reader sees and what MetaIO sees the same.
+std::optional<char> firstControlByte(const std::string& line) {
+  const std::size_t end = !line.empty() && line.back() == '\r' ? line.size() - 1 : line.size();
+  for (std::size_t at = 0; at < end; ++at) {
+    const auto byte = static_cast<unsigned char>(line[at]);
+    if ((byte < 0x20 || byte == 0x7F) && byte != '\t' && byte != '\0') return line[at];
+  }
+  return std::nullopt;
+}
+
+std::string byteText(char byte) {
+  char text[8];
+  std::snprintf(text, sizeof text, "0x%02x", static_cast<unsigned char>(byte));
+  return text;
+}
+
+// A field's name as MetaIO compares it: the text before the separator with the blanks at its end
+// trimmed, then cut at a NUL (so "Name \0= x" is "Name ", but "Name\0 = x" is "Name").
+std::string fieldName(std::string name) {
+  name.erase(name.find_last_not_of(" \t") + 1);
+  name.erase(std::min(name.find('\0'), name.size()));
+  name.erase(0, std::min(name.find_first_not_of(" \t"), name.size()));
+  return name;
+}
+
 // Why MetaIO would not read `line` (the header's `number`th: field name `key`, `value`) as one
 // field or not hold its value, or nullopt. A line without a separator makes MetaIO look for the next '=' or ':' further on (past
 // ElementDataFile, into the voxels, where a long name overflows its 255-byte buffer).
 std::optional<std::string> unreadableBy(const std::string& line, const std::string& key,
                                         const std::string& value, int number) {
   const std::string where = "header line " + std::to_string(number);
+  if (const auto control = firstControlByte(line))
+    return where + " has the control byte " + byteText(*control);
   if (line.size() >= kMaxLineBytes)
     return where + " has " + std::to_string(line.size()) + " characters (MetaIO reads " +
            std::to_string(kMaxLineBytes - 1) + ")";
@@ -60,9 +92,7 @@ MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
     if (trimmed(line).empty()) continue;
     // MetaIO ends a field's name at '=' or ':'; it reads a value with getline into 500 bytes.
     const auto separator = line.find_first_of("=:");
-    // MetaIO compares names as C strings: a NUL ends one.
-    const std::string name = separator == std::string::npos ? "" : line.substr(0, separator);
-    const std::string key = trimmed(name.substr(0, name.find('\0')));
+    const std::string key = separator == std::string::npos ? "" : fieldName(line.substr(0, separator));
     const std::string value = separator == std::string::npos ? "" : trimmed(line.substr(separator + 1));
     if (!header.unreadableLine) header.unreadableLine = unreadableBy(line, key, value, lines);
     if (separator == std::string::npos) continue;

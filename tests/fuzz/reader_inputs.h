@@ -19,6 +19,7 @@
 #include "io/tf_file.h"
 #include "io/volume_reader.h"
 #include "render/recipe_json.h"
+#include "tests/fuzz/metaio_agreement.h"
 
 namespace angio::fuzz {
 
@@ -88,9 +89,9 @@ inline const ReaderTarget kIoReaderTargets[] = {
      [](FuzzInput& input) { parseRenderSidecar(input.bytes, "input.png.json"); }},
     {"metaimage_header", "input.mhd",
      [](FuzzInput& input) {
-       const MetaImageHeader header =
-           readMetaImageHeader(writeInputFile(input.scratch / "input.mhd", input.bytes));
-       header.field("ElementDataFile");
+       writeInputFile(input.scratch / "input.raw", std::string(kMhdRawBytes, '\0'));  // as volume_mhd's
+       const std::filesystem::path file = writeInputFile(input.scratch / "input.mhd", input.bytes);
+       requireMetaIoAgrees(file, readMetaImageHeader(file));
      }},
     {"nifti_header", "input.nii",
      [](FuzzInput& input) {

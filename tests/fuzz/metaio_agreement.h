@@ -1,0 +1,61 @@
+#pragma once
+// The differential half of the metaimage_header fuzz target: a header the checks before ITK accept
+// (checkDeclaredGeometry) must read the same in MetaIO, ITK's MetaImage reader, since those checks
+// judge what io/metaimage_header.h reads. A disagreement is a finding: it aborts with both readings.
+#include <metaImage.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "io/declared_geometry.h"
+#include "io/input_error.h"
+#include "io/metaimage_header.h"
+
+namespace angio::fuzz {
+
+// NDims, DimSize, the data file and the compression flag, as one line.
+inline std::string headerSummary(int dims, const std::string& sizes, const std::string& dataFile,
+                                 bool compressed) {
+  return "NDims " + std::to_string(dims) + ", DimSize '" + sizes + "', ElementDataFile '" + dataFile +
+         "', CompressedData " + (compressed ? "true" : "false");
+}
+
+inline void appendNumber(std::string& list, long number) {
+  if (!list.empty()) list += ' ';
+  list += std::to_string(number);
+}
+
+inline std::string ourSummary(const MetaImageHeader& header) {
+  std::istringstream numbers(header.field("DimSize"));
+  std::string sizes;
+  for (double size = 0; numbers >> size;) appendNumber(sizes, long(size));
+  return headerSummary(std::atoi(header.field("NDims").c_str()), sizes, header.field("ElementDataFile"),
+                       header.flag("CompressedData"));
+}
+
+inline std::string metaIoSummary(MetaImage& image) {
+  std::string sizes;
+  for (int axis = 0; axis < image.NDims(); ++axis) appendNumber(sizes, image.DimSize(axis));
+  return headerSummary(image.NDims(), sizes, image.ElementDataFileName(), image.CompressedData());
+}
+
+inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaImageHeader& header) {
+  try {
+    checkDeclaredGeometry(file, VolumeFormat::metaImage);
+  } catch (const InputError&) {
+    return;  // refused before MetaIO would read it
+  }
+  MetaImage image;
+  if (!image.Read(file.c_str(), false)) return;  // MetaIO refuses it too
+  const std::string ours = ourSummary(header);
+  const std::string metaIo = metaIoSummary(image);
+  if (ours == metaIo) return;
+  std::fprintf(stderr, "MetaIO reads the header otherwise:\n  ours:   %s\n  MetaIO: %s\n", ours.c_str(),
+               metaIo.c_str());
+  std::abort();
+}
+
+}  // namespace angio::fuzz
