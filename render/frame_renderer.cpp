@@ -30,28 +30,25 @@ void TilesAhead::markStale(const std::vector<int>& slices) {
 }
 
 FrameRenderer::FrameRenderer(const Volume& volume, TilesAhead ahead)
-    : volume_(volume), tiles_(std::move(ahead.tiles)), staleSlices_(std::move(ahead.staleSlices)) {
-  if (tiles_ && !fits(*tiles_, volume_))
+    : volume_(volume), current_{std::move(ahead.tiles), {}}, staleSlices_(std::move(ahead.staleSlices)) {
+  if (current_.tiles && !fits(*current_.tiles, volume_))
     throw std::invalid_argument("FrameRenderer: the slice tiles given are of another volume");
 }
 
 TilesAhead FrameRenderer::releaseTiles() {
   classification_.reset();
   classifiedScene_.reset();
-  std::shared_ptr<SliceTiles> spare = std::exchange(spareTiles_, nullptr);
-  const bool spareBuilt = std::exchange(spareUnbuilt_, {}).empty();
-  if (!std::exchange(unbuilt_, {}).empty()) {
-    tiles_.reset();
-    staleSlices_.clear();
-    if (spareBuilt) return {std::move(spare), {}};
-    return {};
-  }
-  return {std::exchange(tiles_, nullptr), std::exchange(staleSlices_, {})};
+  AxisTiles current = std::exchange(current_, {});
+  AxisTiles spare = std::exchange(spare_, {});
+  std::vector<int> stale = std::exchange(staleSlices_, {});
+  if (current.complete()) return {std::move(current.tiles), std::move(stale)};
+  if (spare.complete()) return {std::move(spare.tiles), {}};
+  return {};
 }
 
 bool FrameRenderer::volumeHasLabels() const {
-  if (tiles_ && unbuilt_.empty() && staleSlices_.empty()) return tiles_->labelled;
-  if (spareTiles_ && spareUnbuilt_.empty()) return spareTiles_->labelled;
+  if (current_.complete() && staleSlices_.empty()) return current_.tiles->labelled;
+  if (spare_.complete()) return spare_.tiles->labelled;
   return angio::volumeHasLabels(volume_);
 }
 
@@ -61,34 +58,32 @@ bool FrameRenderer::volumeHasLabels() const {
 void FrameRenderer::switchAxis(Axis axis) {
   classification_.reset();
   if (!staleSlices_.empty()) {
-    tiles_.reset();
+    current_ = {};
     staleSlices_.clear();
-    unbuilt_.clear();
   }
-  if (spareTiles_ && spareTiles_->axis == axis) {
-    std::swap(tiles_, spareTiles_);
-    std::swap(unbuilt_, spareUnbuilt_);
+  if (spare_.tiles && spare_.tiles->axis == axis) {
+    std::swap(current_, spare_);
     return;
   }
   const bool labelled = volumeHasLabels();
-  spareTiles_ = std::exchange(tiles_, nullptr);  // the tiles before the spare ones are freed first
-  spareUnbuilt_ = std::exchange(unbuilt_, {});
-  tiles_ = std::make_shared<SliceTiles>(unsummarisedSliceTiles(volume_, axis, labelled));
-  unbuilt_.resize(std::size_t(tiles_->slices));
-  std::iota(unbuilt_.begin(), unbuilt_.end(), 0);
+  spare_ = std::exchange(current_, {});  // the tiles before the spare ones are freed first
+  current_.tiles = std::make_shared<SliceTiles>(unsummarisedSliceTiles(volume_, axis, labelled));
+  current_.unbuilt.resize(std::size_t(current_.tiles->slices));
+  std::iota(current_.unbuilt.begin(), current_.unbuilt.end(), 0);
 }
 
 bool FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, Axis axis,
                             Compositing compositing, const std::atomic<bool>* cancel,
                             const std::function<void(double)>& tilesBuilt) {
   const bool mip = compositing == Compositing::mip;
-  if (!tiles_ || tiles_->axis != axis) switchAxis(axis);
-  if (!summariseSliceTiles(*tiles_, volume_, unbuilt_, cancel, tilesBuilt)) return false;
+  if (!current_.tiles || current_.tiles->axis != axis) switchAxis(axis);
+  if (!summariseSliceTiles(*current_.tiles, volume_, current_.unbuilt, cancel, tilesBuilt)) return false;
   if (!staleSlices_.empty()) {
     classification_.reset();
     // Copied if someone else still reads them (tiles() handed them out).
-    if (tiles_.use_count() > 1) tiles_ = std::make_shared<SliceTiles>(*tiles_);
-    refreshSliceTiles(*tiles_, volume_, staleSlices_);
+    std::shared_ptr<SliceTiles>& tiles = current_.tiles;
+    if (tiles.use_count() > 1) tiles = std::make_shared<SliceTiles>(*tiles);
+    refreshSliceTiles(*tiles, volume_, staleSlices_);
     staleSlices_.clear();
   }
   if (classification_ && classifiedScene_ == scene && (!mip || classification_->hasMaxima()))
@@ -96,7 +91,7 @@ bool FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
   // The classification needs the region TFs only, not the regions: any non-null regions stand
   // for "VesselGlyph" here.
   std::optional<TileClassification> previous = std::move(classification_);
-  classification_.emplace(*tiles_, scene->tables(scene->hasRegions() ? &regions_ : nullptr), mip,
+  classification_.emplace(*current_.tiles, scene->tables(scene->hasRegions() ? &regions_ : nullptr), mip,
                           previous ? &*previous : nullptr);
   classifiedScene_ = scene;
   return true;
@@ -104,8 +99,8 @@ bool FrameRenderer::prepare(const std::shared_ptr<const PreparedScene>& scene, A
 
 double FrameRenderer::structureMiB() const {
   std::size_t bytes = classification_ ? classification_->memoryBytes() : 0;
-  for (const auto& tiles : {tiles_, spareTiles_})
-    if (tiles) bytes += tiles->memoryBytes();
+  for (const AxisTiles* axisTiles : {&current_, &spare_})
+    if (axisTiles->tiles) bytes += axisTiles->tiles->memoryBytes();
   return bytes / 1048576.0;
 }
 

@@ -75,7 +75,9 @@ class FrameRenderer {
   double structureMiB() const;
   // The slice tiles of the last prepared axis (or those given to the constructor); null: none yet
   // or not yet built to the end.
-  std::shared_ptr<const SliceTiles> tiles() const { return unbuilt_.empty() ? tiles_ : nullptr; }
+  std::shared_ptr<const SliceTiles> tiles() const {
+    return current_.unbuilt.empty() ? current_.tiles : nullptr;
+  }
   // Gives up the slice tiles of the last prepared axis (or else of the one before) with the
   // slices still stale in them; the renderer has none after.
   TilesAhead releaseTiles();
@@ -89,13 +91,17 @@ class FrameRenderer {
   bool volumeHasLabels() const;
   void switchAxis(Axis axis);
 
+  // The slice tiles of one axis, complete or not: a build stopped by a cancel goes on later.
+  struct AxisTiles {
+    std::shared_ptr<SliceTiles> tiles;
+    std::vector<int> unbuilt;  // slices not summarised yet (ascending)
+    bool complete() const { return tiles && unbuilt.empty(); }
+  };
+
   const Volume& volume_;
-  std::shared_ptr<SliceTiles> tiles_;
-  std::vector<int> staleSlices_;  // of tiles_, to refresh before their first use
-  std::vector<int> unbuilt_;      // slices of tiles_ not summarised yet (ascending)
-  // The tiles of the axis before, complete or not, with their unsummarised slices.
-  std::shared_ptr<SliceTiles> spareTiles_;
-  std::vector<int> spareUnbuilt_;
+  AxisTiles current_;             // of the last prepared axis
+  std::vector<int> staleSlices_;  // of current_, to refresh before their first use
+  AxisTiles spare_;               // of the axis before
   std::shared_ptr<const PreparedScene> classifiedScene_;
   std::optional<TileClassification> classification_;
   RayRegions regions_;  // the view's, buffers reused from render to render

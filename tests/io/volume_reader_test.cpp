@@ -731,14 +731,23 @@ TEST_F(VolumeReaderTest, NrrdFieldLinesTeemWouldOverflowOnAreRefusedBeforeIt) {
   expectInputError(dir_ / "nul.nrrd", "header line 5 has 3006 characters");
 }
 
+// A NRRD file whose sizes no machine holds, with 16 bytes of data: its lines end with `lineEnd`
+// and its sizes field is named `sizesName`.
+std::string hugeSizesNrrd(const std::string& lineEnd = "\n", const std::string& sizesName = "sizes") {
+  std::string text;
+  for (const std::string& line :
+       std::initializer_list<std::string>{"NRRD0004", "# a comment", "type: short", "dimension: 3",
+                                          sizesName + ": 2 42999345910 4", "encoding: raw", ""})
+    text += line + lineEnd;
+  return text + std::string(16, '\0');
+}
+constexpr const char* kHugeSizes = "has impossible dimensions (sizes: 2 42999345910 4)";
+
 // ITK keeps NRRD sizes as unsigned int (42999345910 became 49672950) while teem allocates what the
 // header says; and teem allocates the whole volume before it finds the data short.
 TEST_F(VolumeReaderTest, NrrdSizesAndDataAreCheckedBeforeTeemAllocates) {
-  writeText(dir_ / "huge.nrrd",
-            "NRRD0004\ntype: short\ndimension: 3\nsizes: 2 42999345910 4\n"
-            "encoding: raw\n\n" +
-                std::string(16, '\0'));
-  expectInputError(dir_ / "huge.nrrd", "has impossible dimensions (sizes: 2 42999345910 4)");
+  writeText(dir_ / "huge.nrrd", hugeSizesNrrd());
+  expectInputError(dir_ / "huge.nrrd", kHugeSizes);
   const std::string header = "NRRD0004\ntype: short\ndimension: 3\nsizes: 20 20 20\nendian: little\n";
   writeText(dir_ / "short.nrrd", header + "encoding: raw\n\n" + std::string(100, '\0'));
   expectInputError(dir_ / "short.nrrd",
@@ -772,16 +781,10 @@ TEST_F(VolumeReaderTest, NrrdSizesAndDataAreCheckedBeforeTeemAllocates) {
 // Teem ends a header line at a CR too and matches field names case-insensitively: the checks made
 // before it reads a file see the fields it sees.
 TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
-  writeText(dir_ / "cr.nrrd",
-            "NRRD0004\r# a comment\rtype: short\rdimension: 3\r"
-            "sizes: 2 42999345910 4\rencoding: raw\r\r" +
-                std::string(16, '\0'));
-  expectInputError(dir_ / "cr.nrrd", "has impossible dimensions (sizes: 2 42999345910 4)");
-  writeText(dir_ / "upper.nrrd",
-            "NRRD0004\ntype: short\ndimension: 3\nSIZES: 2 42999345910 4\n"
-            "encoding: raw\n\n" +
-                std::string(16, '\0'));
-  expectInputError(dir_ / "upper.nrrd", "has impossible dimensions (sizes: 2 42999345910 4)");
+  writeText(dir_ / "cr.nrrd", hugeSizesNrrd("\r"));
+  expectInputError(dir_ / "cr.nrrd", kHugeSizes);
+  writeText(dir_ / "upper.nrrd", hugeSizesNrrd("\n", "SIZES"));
+  expectInputError(dir_ / "upper.nrrd", kHugeSizes);
   const std::string header =
       "NRRD0004\ntype: short\ndimension: 3\nsizes: 20 20 20\nendian: little\n"
       "encoding: raw\n";

@@ -144,6 +144,49 @@ TEST(FrameRenderer, KeepsTheTilesOfTheAxisBeforeAndACancelledBuildGoesOnLater) {
   EXPECT_EQ(frames.releaseTiles().tiles, tilesI);
 }
 
+// The progressive renderer stops a build of new tiles when a request about another axis comes:
+// the build goes on later where it stopped, and a label change meanwhile gets the complete tiles
+// of the axis before rather than the half-built ones.
+TEST(FrameRenderer, ABuildStoppedHalfwayForAnotherAxisGoesOnWhereItStopped) {
+  const PhantomInVolumeFrame& data = testData();
+  RenderRecipe recipe;
+  recipe.params.axis = Axis::i;
+  const auto aboutI = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+  recipe.params.axis = Axis::k;
+  const auto aboutK = PreparedScene::prepare(data.volume, data.centerlines, recipe);
+  std::atomic<bool> cancel{false};
+  std::vector<double> built;  // the fractions the builds report
+  const auto stopAfterOneGroup = [&](double fraction) {
+    built.push_back(fraction);
+    cancel = true;
+  };
+  const auto record = [&](double fraction) { built.push_back(fraction); };
+
+  FrameRenderer frames(data.volume);
+  const Image firstI = frames.render(aboutI);
+  const auto tilesI = frames.tiles();
+  ASSERT_NE(tilesI, nullptr);
+  // About k the 128 slices of 64^2 voxels are summarised in two groups of 64 (core/slice_tiles).
+  EXPECT_FALSE(frames.prepare(aboutK, Axis::k, Compositing::dvr, &cancel, stopAfterOneGroup));
+  ASSERT_EQ(built, std::vector<double>{0.5});
+  EXPECT_EQ(frames.tiles(), nullptr);
+  EXPECT_EQ(frames.render(aboutI).pixels, firstI.pixels);
+  EXPECT_EQ(frames.tiles(), tilesI);  // kept, not built again
+  built.clear();
+  ASSERT_TRUE(frames.prepare(aboutK, Axis::k, Compositing::dvr, nullptr, record));
+  EXPECT_EQ(built, std::vector<double>{1.0});  // only the second group was left to build
+  EXPECT_EQ(frames.render(aboutK).pixels, fresh(recipe).pixels);
+
+  FrameRenderer interrupted(data.volume);
+  interrupted.render(aboutI);
+  const auto completeI = interrupted.tiles();
+  cancel = false;
+  EXPECT_FALSE(interrupted.prepare(aboutK, Axis::k, Compositing::dvr, &cancel, stopAfterOneGroup));
+  const TilesAhead released = interrupted.releaseTiles();
+  EXPECT_EQ(released.tiles, completeI);
+  EXPECT_TRUE(released.staleSlices.empty());
+}
+
 TEST(FrameRenderer, TilesOfAnotherVolumeAreRefused) {
   const Volume other = generatePhantom(PhantomOptions{{32, 32, 40}}).volume;
   const auto tiles = std::make_shared<SliceTiles>(buildSliceTiles(other, Axis::k));
