@@ -107,10 +107,14 @@ void checkNrrd(const fs::path& file) {
   for (const NrrdHeaderLine& line : header->lines) {
     // Teem never quotes a comment or a key/value pair in a message; the ones it has quoted past a
     // NUL byte were lines it could not read, but a key/value pair with a NUL is checked too.
-    const bool plainKeyValue =
-        line.kind == NrrdLineKind::keyValue && line.text.find('\0') == std::string::npos;
+    const bool hasNul = line.text.find('\0') != std::string::npos;
+    const bool plainKeyValue = line.kind == NrrdLineKind::keyValue && !hasNul;
     if (line.kind == NrrdLineKind::comment || plainKeyValue) continue;
     requireShortFieldLine(file, line);
+    // Teem reads a line longer than its buffer in pieces and joins them as C strings, so what it
+    // reads past a NUL depends on the lines before: "sizes: 2 5 4\0xxxxx99..." has been read as
+    // 2 5 4999... (the piece after the NUL's piece appended to "4").
+    if (hasNul) throw InputError(file, "header line " + std::to_string(line.number) + " has a NUL byte");
     const std::string& key = line.name;
     const std::string& value = line.value;
     // ITK keeps sizes as unsigned int; teem allocates what the header says.

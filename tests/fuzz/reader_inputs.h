@@ -20,6 +20,7 @@
 #include "io/volume_reader.h"
 #include "render/recipe_json.h"
 #include "tests/fuzz/metaio_agreement.h"
+#include "tests/fuzz/teem_agreement.h"
 
 namespace angio::fuzz {
 
@@ -105,7 +106,11 @@ inline const ReaderTarget kIoReaderTargets[] = {
        writeInputFile(input.scratch / "input.raw", raw);
        readVolumeFile(input, "input.mhd");
      }},
-    {"volume_nrrd", "input.nrrd", [](FuzzInput& input) { readVolumeFile(input, "input.nrrd"); }},
+    {"volume_nrrd", "input.nrrd",
+     [](FuzzInput& input) {
+       requireTeemAgrees(writeInputFile(input.scratch / "input.nrrd", input.bytes));
+       readVolumeFile(input, "input.nrrd");
+     }},
     {"volume_nii", "input.nii", [](FuzzInput& input) { readVolumeFile(input, "input.nii"); }},
     // One slice as a file (the header checks) and as a folder of one (the series reader).
     {"dicom_slice", "input",

@@ -29,6 +29,7 @@
 #include "io/dicom_series.h"
 #include "io/volume_formats.h"
 #include "io/volume_writer.h"
+#include "tests/fuzz/teem_agreement.h"
 #include "tests/support/dicom_recompress.h"
 #include "tests/support/dicom_series_writer.h"
 #include "tests/support/temp_folder_test.h"
@@ -800,11 +801,19 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
                    "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
   writeText(dir_ / "whole-cr.nrrd", cr + std::string(16000, '\0'));
   EXPECT_EQ(readVolume(dir_ / "whole-cr.nrrd").volume.dims, glm::ivec3(20, 20, 20));
-  // Teem reads a key/value pair up to a NUL byte and goes on (a fuzzer's way around the data check).
+  // Teem reads a key/value pair up to a NUL byte and goes on (a fuzzer's way around the data
+  // check); past a NUL in a long line it reads what the lines before decide.
   const std::string nul = "NRRD0004\nkey:=a" + std::string(1, '\0') + "b\n";
   writeText(dir_ / "short-nul.nrrd", nul + header.substr(9) + "\n" + std::string(100, '\0'));
-  expectInputError(dir_ / "short-nul.nrrd",
-                   "is truncated: its header promises 16000 bytes of voxel data, the file holds 100");
+  expectInputError(dir_ / "short-nul.nrrd", "header line 2 has a NUL byte");
+  const std::string joined = "NRRD0004\ntype: short\ndimension: 3\nsizes: 2 5 4" + std::string(1, '\0') +
+                             "xxxxx" + std::string(40, '9') + "\nendian: little\nencoding: raw\n\n";
+  writeText(dir_ / "joined.nrrd", joined + std::string(100, '\0'));
+  const std::optional<fuzz::TeemReading> teem =
+      fuzz::TeemHeaderRead(dir_ / "joined.nrrd").reading(dir_ / "joined.nrrd");
+  ASSERT_TRUE(teem.has_value());
+  EXPECT_FALSE(teem->sizesFitInt) << teem->sizes;
+  expectInputError(dir_ / "joined.nrrd", "header line 4 has a NUL byte");
 }
 
 TEST_F(VolumeReaderTest, ZeroOrNegativeSpacingIsAnError) {
