@@ -20,6 +20,7 @@
 #include "io/volume_reader.h"
 #include "render/recipe_json.h"
 #include "tests/fuzz/metaio_agreement.h"
+#include "tests/fuzz/nifti_agreement.h"
 #include "tests/fuzz/teem_agreement.h"
 
 namespace angio::fuzz {
@@ -96,7 +97,8 @@ inline const ReaderTarget kIoReaderTargets[] = {
      }},
     {"nifti_header", "input.nii",
      [](FuzzInput& input) {
-       readNiftiHeader(writeInputFile(input.scratch / "input.nii", input.bytes));
+       const std::filesystem::path file = writeInputFile(input.scratch / "input.nii", input.bytes);
+       if (const auto header = readNiftiHeader(file)) requireNiftiLibraryAgrees(file, *header);
      }},
     {"volume_mha", "input.mha", [](FuzzInput& input) { readVolumeFile(input, "input.mha"); }},
     {"volume_mhd", "input.mhd",
