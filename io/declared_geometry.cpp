@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// `word` as a finite number, or NaN if it is not wholly one.
+double wholeNumber(const std::string& word) {
+  char* end = nullptr;
+  const double value = std::strtod(word.c_str(), &end);
+  return !word.empty() && *end == '\0' && std::isfinite(value) ? value : NAN;
+}
+
 // The numbers in `text`, separated by blanks, commas or parentheses; a word that is not a number
 // (NaN, inf, "none") is NaN.
 std::vector<double> numbersIn(const std::string& text) {
@@ -32,9 +40,7 @@ std::vector<double> numbersIn(const std::string& text) {
   std::string word;
   const auto flush = [&] {
     if (word.empty()) return;
-    char* end = nullptr;
-    const double value = std::strtod(word.c_str(), &end);
-    numbers.push_back(*end == '\0' && std::isfinite(value) ? value : NAN);
+    numbers.push_back(wholeNumber(word));
     word.clear();
   };
   for (const char c : text) {
@@ -42,6 +48,34 @@ std::vector<double> numbersIn(const std::string& text) {
     else word += c;
   }
   flush();
+  return numbers;
+}
+
+// The components of the NRRD vectors "(x,y,z)" in `text`, in order, with "none" (a non-spatial
+// axis) left out. Teem reads a component up to the first character that is not part of a number
+// ("(0(.7,0,0)" is (0,0,0)); one that is not wholly a number is NaN here, so that such a header is
+// refused rather than read otherwise than teem reads it.
+std::vector<double> vectorNumbers(const std::string& text) {
+  std::vector<double> numbers;
+  for (std::size_t at = 0; at < text.size();) {
+    if (text[at] == ' ' || text[at] == '\t') {
+      ++at;
+    } else if (text.compare(at, 4, "none") == 0) {
+      at += 4;
+    } else if (const std::size_t close = text.find(')', at);
+               text[at] == '(' && close != std::string::npos) {
+      std::istringstream components(text.substr(at + 1, close - at - 1));
+      for (std::string component; std::getline(components, component, ',');) {
+        component.erase(0, component.find_first_not_of(" \t"));
+        component.erase(component.find_last_not_of(" \t") + 1);
+        numbers.push_back(wholeNumber(component));
+      }
+      at = close + 1;
+    } else {
+      numbers.push_back(NAN);  // not a vector
+      break;
+    }
+  }
   return numbers;
 }
 
@@ -128,15 +162,9 @@ void checkNrrd(const fs::path& file) {
       spacings.resize(std::min<std::size_t>(spacings.size(), 3));
       requireSpacing(file, "spacings", spacings, value);
     }
-    if (key == "spaceorigin") requireFinite(file, "space origin", numbersIn(value), value);
+    if (key == "spaceorigin") requireFinite(file, "space origin", vectorNumbers(value), value);
     if (key == "spacedirections") {
-      // "none" marks a non-spatial axis; the others are vectors of the space's dimension.
-      std::string spatial;
-      for (std::size_t at = 0; at < value.size(); ++at) {
-        if (value.compare(at, 4, "none") == 0) at += 3;
-        else spatial += value[at];
-      }
-      directions = numbersIn(spatial);
+      directions = vectorNumbers(value);
       directionsText = value;
       requireFinite(file, "space directions", directions, value);
       for (std::size_t axis = 0; axis + 3 <= directions.size() && directions.size() == 9; axis += 3)

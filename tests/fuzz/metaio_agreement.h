@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -42,6 +43,19 @@ inline std::string metaIoSummary(MetaImage& image) {
   return headerSummary(image.NDims(), sizes, image.ElementDataFileName(), image.CompressedData());
 }
 
+// Where LOCAL voxel data start for io/ (MetaImageHeader::dataStart) and for MetaIO (its stream after
+// the header), as " data at N", or "" where io/ leaves the voxels to MetaIO (voxel_data_layout.h).
+inline std::string localDataStarts(const std::filesystem::path& file, const MetaImageHeader& header,
+                                   std::string& metaIo) {
+  if (header.field("ElementDataFile") != "LOCAL" || !header.dataStart || header.dataLineEndsWithCr)
+    return "";
+  std::ifstream stream(file, std::ios::binary);
+  MetaImage image;
+  if (!image.ReadStream(0, &stream, false)) return "";
+  metaIo += " data at " + std::to_string(static_cast<long long>(stream.tellg()));
+  return " data at " + std::to_string(*header.dataStart);
+}
+
 inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaImageHeader& header) {
   try {
     checkDeclaredGeometry(file, VolumeFormat::metaImage);
@@ -50,8 +64,8 @@ inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaIma
   }
   MetaImage image;
   if (!image.Read(file.c_str(), false)) return;  // MetaIO refuses it too
-  const std::string ours = ourSummary(header);
-  const std::string metaIo = metaIoSummary(image);
+  std::string metaIo = metaIoSummary(image);
+  const std::string ours = ourSummary(header) + localDataStarts(file, header, metaIo);
   if (ours == metaIo) return;
   std::fprintf(stderr, "MetaIO reads the header otherwise:\n  ours:   %s\n  MetaIO: %s\n", ours.c_str(),
                metaIo.c_str());

@@ -1,12 +1,15 @@
 #pragma once
 // The differential half of the volume_nrrd fuzz target: a NRRD header the checks before ITK accept
 // (checkDeclaredGeometry) must read the same in teem (ITK's NrrdIO) where it matters, since those
-// checks judge what io/nrrd_header.h reads: every size teem reads is one the checks bounded, and
-// where io/ places the voxel data (nrrdDataPlace: the truncation check, the voxels io/ decodes
-// itself) is where teem reads them. A disagreement is a finding: it aborts with both readings.
+// checks judge what io/nrrd_header.h reads: every size teem reads is one the checks bounded, every
+// spacing ITK takes from it is > 0, and where io/ places the voxel data (nrrdDataPlace: the
+// truncation check, the voxels io/ decodes itself) is where teem reads them. A disagreement is a
+// finding: it aborts with both readings.
 #include <NrrdIO.h>
 
+#include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -23,6 +26,7 @@ namespace angio::fuzz {
 struct TeemReading {
   std::string sizes;                     // the axis sizes, as a list
   bool sizesFitInt = true;               // every size <= INT_MAX
+  std::string badSpacing;                // a spatial axis's spacing ITK would take and cannot use
   std::optional<VoxelDataLayout> place;  // raw or gzip, attached or one data file, no skips
 };
 
@@ -53,6 +57,7 @@ class TeemHeaderRead {
       reading.sizes += std::to_string(nrrd_->axis[axis].size);
       reading.sizesFitInt = reading.sizesFitInt && nrrd_->axis[axis].size <= std::size_t(INT_MAX);
     }
+    reading.badSpacing = badSpacing();
     const std::string encoding = io_->encoding ? io_->encoding->name : "";
     const unsigned files = io_->dataFNArr ? io_->dataFNArr->len : 0;
     if ((encoding != "raw" && encoding != "gzip") || io_->lineSkip || io_->byteSkip || files > 1)
@@ -72,6 +77,24 @@ class TeemHeaderRead {
   }
 
  private:
+  // The first three axes' spacing as ITK takes it: the length of the space direction if the header
+  // has a space, else the spacing; where it is given (ITK takes 1 mm for none), it must be > 0.
+  std::string badSpacing() const {
+    for (unsigned axis = 0; axis < std::min(nrrd_->dim, 3u); ++axis) {
+      const NrrdAxisInfo& info = nrrd_->axis[axis];
+      double length = info.spacing;
+      if (nrrd_->spaceDim > 0) {
+        double squared = 0;
+        for (unsigned d = 0; d < nrrd_->spaceDim; ++d)
+          squared += info.spaceDirection[d] * info.spaceDirection[d];
+        length = std::sqrt(squared);
+      }
+      if (AIR_EXISTS(length) && !(length > 0))
+        return "axis " + std::to_string(axis) + " spacing " + std::to_string(length);
+    }
+    return "";
+  }
+
   Nrrd* nrrd_;
   NrrdIoState* io_;
   bool loaded_ = false;
@@ -102,9 +125,11 @@ inline void requireTeemAgrees(const std::filesystem::path& file) {
   const std::optional<TeemReading> teem = TeemHeaderRead(file).reading(file);
   if (!teem) return;
   const std::optional<VoxelDataLayout> ours = nrrdDataPlace(file);
-  if (teem->sizesFitInt && placesAgree(ours, teem->place, file)) return;
-  std::fprintf(stderr, "teem reads the header otherwise:\n  teem: sizes %s, data %s\n  ours: data %s\n",
-               teem->sizes.c_str(), placeText(teem->place).c_str(), placeText(ours).c_str());
+  if (teem->sizesFitInt && teem->badSpacing.empty() && placesAgree(ours, teem->place, file)) return;
+  std::fprintf(stderr,
+               "teem reads the header otherwise:\n  teem: sizes %s, data %s %s\n  ours: data %s\n",
+               teem->sizes.c_str(), placeText(teem->place).c_str(), teem->badSpacing.c_str(),
+               placeText(ours).c_str());
   std::abort();
 }
 

@@ -794,6 +794,21 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
                                     "spacedirections: (0,0,0) (0,1,0) (0,0,1)\n\n" +
                                     std::string(16000, '\0'));
   expectInputError(dir_ / "axes.nrrd", "has a zero-length axis in space directions");
+  // Teem reads a vector's component up to the first character that is not part of a number.
+  writeText(dir_ / "garbled.nrrd", header +
+                                       "space: left-posterior-superior\n"
+                                       "space directions: (0(.7,0,0) (0,1,0) (0,0,1)\n\n" +
+                                       std::string(16000, '\0'));
+  const std::optional<fuzz::TeemReading> garbled =
+      fuzz::TeemHeaderRead(dir_ / "garbled.nrrd").reading(dir_ / "garbled.nrrd");
+  ASSERT_TRUE(garbled.has_value());
+  EXPECT_EQ(garbled->badSpacing, "axis 0 spacing 0.000000");
+  expectInputError(dir_ / "garbled.nrrd", "has a non-finite or absurd space directions ((0(.7,0,0)");
+  for (const std::string vectors : {"(1, 0, 0) (0,1,0) (0,0,1)", "(1,0,0)(0,1,0)(0,0,1)"}) {
+    writeText(dir_ / "vectors.nrrd", header + "space: left-posterior-superior\nspace directions: " +
+                                         vectors + "\n\n" + std::string(16000, '\0'));
+    EXPECT_EQ(readVolume(dir_ / "vectors.nrrd").volume.dims, glm::ivec3(20, 20, 20)) << vectors;
+  }
   std::string cr = header + "\n";
   std::replace(cr.begin(), cr.end(), '\n', '\r');
   writeText(dir_ / "short-cr.nrrd", cr + std::string(100, '\0'));
