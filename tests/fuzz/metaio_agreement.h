@@ -1,9 +1,11 @@
 #pragma once
 // The differential half of the metaimage_header fuzz target: a header the checks before ITK accept
 // (checkDeclaredGeometry) must read the same in MetaIO, ITK's MetaImage reader, since those checks
-// judge what io/metaimage_header.h reads. A disagreement is a finding: it aborts with both readings.
+// judge what io/metaimage_header.h reads; and every spacing and origin MetaIO reads is usable. A
+// disagreement is a finding: it aborts with both readings.
 #include <metaImage.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -56,6 +58,17 @@ inline std::string localDataStarts(const std::filesystem::path& file, const Meta
   return " data at " + std::to_string(*header.dataStart);
 }
 
+// An axis whose spacing (ElementSpacing, as ITK takes it) or origin MetaIO read unusable, or "".
+inline std::string badGeometry(MetaImage& image) {
+  for (int axis = 0; axis < image.NDims(); ++axis) {
+    const double spacing = image.ElementSpacing(axis), origin = image.Position(axis);
+    if (!(spacing > 0) || !std::isfinite(spacing) || !std::isfinite(origin))
+      return ", axis " + std::to_string(axis) + " spacing " + std::to_string(spacing) + " origin " +
+             std::to_string(origin);
+  }
+  return "";
+}
+
 inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaImageHeader& header) {
   try {
     checkDeclaredGeometry(file, VolumeFormat::metaImage);
@@ -64,7 +77,7 @@ inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaIma
   }
   MetaImage image;
   if (!image.Read(file.c_str(), false)) return;  // MetaIO refuses it too
-  std::string metaIo = metaIoSummary(image);
+  std::string metaIo = metaIoSummary(image) + badGeometry(image);
   const std::string ours = ourSummary(header) + localDataStarts(file, header, metaIo);
   if (ours == metaIo) return;
   std::fprintf(stderr, "MetaIO reads the header otherwise:\n  ours:   %s\n  MetaIO: %s\n", ours.c_str(),
