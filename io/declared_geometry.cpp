@@ -135,7 +135,9 @@ void requireShortFieldLine(const fs::path& file, const NrrdHeaderLine& line) {
 
 void checkNrrd(const fs::path& file) {
   const auto header = readNrrdHeader(file);
-  if (!header) return;  // teem says what it is not
+  // Teem reads a long first line in pieces joined as C strings, so "NRRD\0\0...0004" can pass its
+  // magic test while the checks could not read the header at all.
+  if (!header) throw InputError(file, "is not a valid NRRD file (its first line is not NRRD000N)");
   std::vector<double> directions;
   std::string directionsText;
   for (const NrrdHeaderLine& line : header->lines) {
@@ -251,6 +253,11 @@ void checkNifti(const fs::path& file) {
   const auto header = readNiftiHeader(file);
   // ITK's reader takes headers ours refuses (a wrong header size), then trusts their fields.
   if (!header) throw InputError(file, "is not a valid NIfTI file (its header does not add up)");
+  // The NIfTI library keeps a NIfTI-1 vox_offset as an int: a larger one becomes the header's size
+  // there, so ITK would read the header as voxels.
+  const std::string offset = std::to_string(header->dataOffset);
+  if (!header->nifti2 && header->dataOffset > std::uint64_t(std::numeric_limits<int>::max()))
+    throw InputError(file, "has an impossible vox_offset (" + offset + " bytes)");
   const auto text = [](auto values) {
     std::string out;
     for (const double v : values) {

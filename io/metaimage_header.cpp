@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -50,6 +51,13 @@ std::string fieldName(std::string name) {
   return name;
 }
 
+// A field's value as MetaIO reads it: after the separator it skips every '=', ':' and blank, so
+// "Name = : 12" is 12.
+std::string valueText(const std::string& afterSeparator) {
+  const std::size_t start = afterSeparator.find_first_not_of("=: \t");
+  return start == std::string::npos ? "" : trimmed(afterSeparator.substr(start));
+}
+
 // Why MetaIO would not read `line` (the header's `number`th: field name `key`, `value`) as one
 // field or not hold its value, or nullopt. A line without a separator makes MetaIO look for the next '=' or ':' further on (past
 // ElementDataFile, into the voxels, where a long name overflows its 255-byte buffer).
@@ -83,6 +91,14 @@ bool MetaImageHeader::flag(const std::string& key) const {
   return !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1');
 }
 
+std::optional<double> MetaImageHeader::number(const std::string& key) const {
+  const std::string value = field(key);
+  char* end = nullptr;
+  const double parsed = std::strtod(value.c_str(), &end);
+  if (end == value.c_str()) return std::nullopt;
+  return parsed;
+}
+
 MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   MetaImageHeader header;
@@ -93,13 +109,15 @@ MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
     // MetaIO ends a field's name at '=' or ':'; it reads a value with getline into 500 bytes.
     const auto separator = line.find_first_of("=:");
     const std::string key = separator == std::string::npos ? "" : fieldName(line.substr(0, separator));
-    const std::string value = separator == std::string::npos ? "" : trimmed(line.substr(separator + 1));
+    const std::string value =
+        separator == std::string::npos ? "" : valueText(line.substr(separator + 1));
     if (!header.unreadableLine) header.unreadableLine = unreadableBy(line, key, value, lines);
     if (separator == std::string::npos) continue;
     if (header.fields.count(key)) header.repeated.insert(key);
     header.fields[key] = value;
     if (key != "ElementDataFile") continue;
-    if (in) header.dataStart = std::uint64_t(in.tellg());
+    // Nothing after the line (it ends the file): no data start, as for MetaIO.
+    if (const std::streamoff at = in.tellg(); at >= 0) header.dataStart = std::uint64_t(at);
     header.dataLineEndsWithCr = !line.empty() && line.back() == '\r';
     break;
   }

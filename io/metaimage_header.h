@@ -26,6 +26,9 @@ struct MetaImageHeader {
   std::string field(const std::string& key) const;
   // A boolean field as MetaIO reads it: true iff its value starts with T, t or 1.
   bool flag(const std::string& key) const;
+  // A number field as MetaIO reads it: a double, up to the first character that is not part of
+  // one ("12abc" is 12); nullopt if the value does not start with a number.
+  std::optional<double> number(const std::string& key) const;
 };
 
 MetaImageHeader readMetaImageHeader(const std::filesystem::path& file);

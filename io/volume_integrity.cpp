@@ -32,11 +32,13 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
   const bool compressed = header.flag("CompressedData");
   std::uint64_t expected = voxelBytes;
   if (compressed) {
-    try {
-      expected = std::stoull(field("CompressedDataSize"));
-    } catch (const std::exception&) {
-      return;  // compressed without a size: nothing to compare with
-    }
+    // MetaIO allocates as many bytes as it reads (a negative size wraps around to nearly 2^64).
+    const std::optional<double> size = header.number("CompressedDataSize");
+    if (!size) return;  // compressed without a size: nothing to compare with
+    if (!(*size >= 0 && *size < 9e18))
+      throw InputError(
+          file, "has an impossible CompressedDataSize (" + shownText(field("CompressedDataSize")) + ")");
+    expected = std::uint64_t(*size);
   }
   std::uint64_t found = 0;
   const std::string dataFile = field("ElementDataFile");

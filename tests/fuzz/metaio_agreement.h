@@ -19,12 +19,21 @@
 
 namespace angio::fuzz {
 
-// NDims, DimSize, the data file and the compression flag, as one line.
+// NDims, DimSize, the data file and the compression flag (with the compressed size: 0 for none,
+// "impossible" for a negative one or one of 9e18 bytes and more), as one line.
 inline std::string headerSummary(int dims, const std::string& sizes, const std::string& dataFile,
-                                 bool compressed) {
+                                 bool compressed, double compressedSize) {
+  const std::string size = !(compressedSize >= 0 && compressedSize < 9e18)
+                               ? std::string("impossible")
+                               : std::to_string(std::uint64_t(compressedSize));
   return "NDims " + std::to_string(dims) + ", DimSize '" + sizes + "', ElementDataFile '" + dataFile +
-         "', CompressedData " + (compressed ? "true" : "false");
+         "', CompressedData " + (compressed ? "true, size " + size : std::string("false"));
 }
+
+// MetaIO's compressed size, which it keeps to itself.
+struct MetaImageWithSizes : MetaImage {
+  double compressedDataSize() const { return double(m_CompressedDataSize); }
+};
 
 inline void appendNumber(std::string& list, long number) {
   if (!list.empty()) list += ' ';
@@ -36,13 +45,14 @@ inline std::string ourSummary(const MetaImageHeader& header) {
   std::string sizes;
   for (double size = 0; numbers >> size;) appendNumber(sizes, long(size));
   return headerSummary(std::atoi(header.field("NDims").c_str()), sizes, header.field("ElementDataFile"),
-                       header.flag("CompressedData"));
+                       header.flag("CompressedData"), header.number("CompressedDataSize").value_or(0));
 }
 
-inline std::string metaIoSummary(MetaImage& image) {
+inline std::string metaIoSummary(MetaImageWithSizes& image) {
   std::string sizes;
   for (int axis = 0; axis < image.NDims(); ++axis) appendNumber(sizes, image.DimSize(axis));
-  return headerSummary(image.NDims(), sizes, image.ElementDataFileName(), image.CompressedData());
+  return headerSummary(image.NDims(), sizes, image.ElementDataFileName(), image.CompressedData(),
+                       image.compressedDataSize());
 }
 
 // Where LOCAL voxel data start for io/ (MetaImageHeader::dataStart) and for MetaIO (its stream after
@@ -75,7 +85,7 @@ inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaIma
   } catch (const InputError&) {
     return;  // refused before MetaIO would read it
   }
-  MetaImage image;
+  MetaImageWithSizes image;
   if (!image.Read(file.c_str(), false)) return;  // MetaIO refuses it too
   std::string metaIo = metaIoSummary(image) + badGeometry(image);
   const std::string ours = ourSummary(header) + localDataStarts(file, header, metaIo);

@@ -23,6 +23,7 @@
 #include <itkImageFileWriter.h>
 #include <itkMetaDataObject.h>
 #include <itkRGBPixel.h>
+#include <nifti1_io.h>
 
 #include "core/voxel.h"
 #include "io/input_error.h"
@@ -393,6 +394,26 @@ TEST_F(VolumeReaderTest, NiftiScalingIsApplied) {
     EXPECT_EQ(v.densityAt(i[0], i[1], i[2]), 2 * asymmetricHu(i) + 10 + 1024);
 }
 
+// The NIfTI library keeps vox_offset as an int: 1.5e12 became its header size (348), so ITK would
+// read the header as voxels while io/ looked for them past the end of the file.
+TEST_F(VolumeReaderTest, NiftiVoxOffsetBeyondAnIntIsRefused) {
+  const fs::path file = writeAsymmetric("far.nii");
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const float voxOffset = 1.5e12f;
+  std::memcpy(bytes.data() + 108, &voxOffset, 4);
+  writeText(file, bytes);
+  nifti_set_debug_level(0);
+  nifti_image* image = nifti_image_read(file.c_str(), 0);
+  ASSERT_NE(image, nullptr);
+  EXPECT_EQ(image->iname_offset, 348);
+  nifti_image_free(image);
+  expectInputError(file, "has an impossible vox_offset (1500000026624 bytes)");
+}
+
 TEST_F(VolumeReaderTest, LabelsOnTheSameGridGoToTheLabelBits) {
   const Placement flipped{{1.0, 1.0, 1.0},
                           {0.0, 0.0, 0.0},
@@ -683,6 +704,16 @@ TEST_F(VolumeReaderTest, MetaImageHeaderLinesMetaIoCannotReadAreRefusedBeforeIt)
   writeMetaImage(dir_ / "nul.mha", "2 2 2", "1 1 1",
                  std::string("CompressedData = True\nCompressedDataSize\0\0 = 2300000000000002\n", 62));
   expectInputError(dir_ / "nul.mha", "is truncated: its header promises 2300000000000002 bytes");
+  // A value as MetaIO reads it: past every '=', ':' and blank, a number up to what is not one; a
+  // negative size wraps around to nearly 2^64.
+  for (const std::string size : {": 2300000000000002", "2.300000000000002e15 bytes"}) {
+    writeMetaImage(dir_ / "size.mha", "2 2 2", "1 1 1",
+                   "CompressedData = True\nCompressedDataSize = " + size + "\n");
+    expectInputError(dir_ / "size.mha", "is truncated: its header promises 2300000000000002 bytes");
+  }
+  writeMetaImage(dir_ / "negative.mha", "2 2 2", "1 1 1",
+                 "CompressedData = True\nCompressedDataSize = -5\n");
+  expectInputError(dir_ / "negative.mha", "has an impossible CompressedDataSize (-5)");
   // What MetaIO reads differently from the name written: a list (any name starting with LIST), a
   // name ending in bytes it strips.
   writeText(dir_ / "list.mha",
@@ -786,6 +817,17 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
   expectInputError(dir_ / "cr.nrrd", kHugeSizes);
   writeText(dir_ / "upper.nrrd", hugeSizesNrrd("\n", "SIZES"));
   expectInputError(dir_ / "upper.nrrd", kHugeSizes);
+  // Teem joins the pieces of a long first line as C strings: NULs in the magic vanish (and the
+  // checks, which cannot read such a header, must not let teem read it unchecked).
+  std::string nulMagic =
+      "NRRD" + std::string(14, '\0') +
+      "0004\ntype: short\ndimension: 3\nsizes: 2 3 4\nendian: little\nencoding: raw\n\n";
+  writeText(dir_ / "nul-magic.nrrd", nulMagic + std::string(48, '\0'));
+  const std::optional<fuzz::TeemReading> magic =
+      fuzz::TeemHeaderRead(dir_ / "nul-magic.nrrd").reading(dir_ / "nul-magic.nrrd");
+  ASSERT_TRUE(magic.has_value());
+  EXPECT_EQ(magic->sizes, "2 3 4");
+  expectInputError(dir_ / "nul-magic.nrrd", "is not a valid NRRD file (its first line is not NRRD000N)");
   const std::string header =
       "NRRD0004\ntype: short\ndimension: 3\nsizes: 20 20 20\nendian: little\n"
       "encoding: raw\n";
