@@ -33,7 +33,8 @@ struct TeemReading {
 // Owns what a header-only nrrdLoad leaves: the nrrd, the I/O state and its open data file.
 class TeemHeaderRead {
  public:
-  explicit TeemHeaderRead(const std::filesystem::path& file) : nrrd_(nrrdNew()), io_(nrrdIoStateNew()) {
+  explicit TeemHeaderRead(const std::filesystem::path& file)
+      : file_(file), nrrd_(nrrdNew()), io_(nrrdIoStateNew()) {
     io_->skipData = 1;
     io_->keepNrrdDataFileOpen = 1;  // positioned where the data start
     if (nrrdLoad(nrrd_, file.c_str(), io_)) std::free(biffGetDone(NRRD));
@@ -49,7 +50,7 @@ class TeemHeaderRead {
   TeemHeaderRead& operator=(const TeemHeaderRead&) = delete;
 
   // Nothing if teem refuses the header (so will ITK, with a message).
-  std::optional<TeemReading> reading(const std::filesystem::path& file) const {
+  std::optional<TeemReading> reading() const {
     if (!loaded_) return std::nullopt;
     TeemReading reading;
     for (unsigned axis = 0; axis < nrrd_->dim; ++axis) {
@@ -66,7 +67,7 @@ class TeemHeaderRead {
     place.encoding = encoding == "gzip" ? VoxelEncoding::deflate : VoxelEncoding::raw;
     if (files == 0) {
       if (!io_->dataFile) return reading;
-      place.dataFile = file;
+      place.dataFile = file_;
       place.fileOffset = std::uint64_t(std::ftell(io_->dataFile));
     } else {
       const std::filesystem::path name(io_->dataFN[0]);
@@ -95,6 +96,7 @@ class TeemHeaderRead {
     return "";
   }
 
+  std::filesystem::path file_;
   Nrrd* nrrd_;
   NrrdIoState* io_;
   bool loaded_ = false;
@@ -122,7 +124,7 @@ inline void requireTeemAgrees(const std::filesystem::path& file) {
   } catch (const InputError&) {
     return;  // refused before teem would read it
   }
-  const std::optional<TeemReading> teem = TeemHeaderRead(file).reading(file);
+  const std::optional<TeemReading> teem = TeemHeaderRead(file).reading();
   if (!teem) return;
   const std::optional<VoxelDataLayout> ours = nrrdDataPlace(file);
   if (teem->sizesFitInt && teem->badSpacing.empty() && placesAgree(ours, teem->place, file)) return;

@@ -823,8 +823,7 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
       "NRRD" + std::string(14, '\0') +
       "0004\ntype: short\ndimension: 3\nsizes: 2 3 4\nendian: little\nencoding: raw\n\n";
   writeText(dir_ / "nul-magic.nrrd", nulMagic + std::string(48, '\0'));
-  const std::optional<fuzz::TeemReading> magic =
-      fuzz::TeemHeaderRead(dir_ / "nul-magic.nrrd").reading(dir_ / "nul-magic.nrrd");
+  const std::optional<fuzz::TeemReading> magic = fuzz::TeemHeaderRead(dir_ / "nul-magic.nrrd").reading();
   ASSERT_TRUE(magic.has_value());
   EXPECT_EQ(magic->sizes, "2 3 4");
   expectInputError(dir_ / "nul-magic.nrrd", "is not a valid NRRD file (its first line is not NRRD000N)");
@@ -841,8 +840,7 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
                                        "space: left-posterior-superior\n"
                                        "space directions: (0(.7,0,0) (0,1,0) (0,0,1)\n\n" +
                                        std::string(16000, '\0'));
-  const std::optional<fuzz::TeemReading> garbled =
-      fuzz::TeemHeaderRead(dir_ / "garbled.nrrd").reading(dir_ / "garbled.nrrd");
+  const std::optional<fuzz::TeemReading> garbled = fuzz::TeemHeaderRead(dir_ / "garbled.nrrd").reading();
   ASSERT_TRUE(garbled.has_value());
   EXPECT_EQ(garbled->badSpacing, "axis 0 spacing 0.000000");
   expectInputError(dir_ / "garbled.nrrd", "has a non-finite or absurd space directions ((0(.7,0,0)");
@@ -866,8 +864,7 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
   const std::string joined = "NRRD0004\ntype: short\ndimension: 3\nsizes: 2 5 4" + std::string(1, '\0') +
                              "xxxxx" + std::string(40, '9') + "\nendian: little\nencoding: raw\n\n";
   writeText(dir_ / "joined.nrrd", joined + std::string(100, '\0'));
-  const std::optional<fuzz::TeemReading> teem =
-      fuzz::TeemHeaderRead(dir_ / "joined.nrrd").reading(dir_ / "joined.nrrd");
+  const std::optional<fuzz::TeemReading> teem = fuzz::TeemHeaderRead(dir_ / "joined.nrrd").reading();
   ASSERT_TRUE(teem.has_value());
   EXPECT_FALSE(teem->sizesFitInt) << teem->sizes;
   expectInputError(dir_ / "joined.nrrd", "header line 4 has a NUL byte");
