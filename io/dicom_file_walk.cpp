@@ -50,6 +50,9 @@ class ElementWalk {
     if (at + 4 > bytes_.size()) return std::nullopt;
     const std::uint16_t firstGroup = read16(at, false);
     if (at == 0 && firstGroup != 0x0002 && firstGroup != 0x0008) return std::nullopt;
+    // PS3.10 7.1: the file meta group follows the preamble. Without it GDCM guesses the syntax,
+    // byte order included, and reads lengths this walk does not see (a 3.9 GB one, say).
+    if (at == 132 && firstGroup != 0x0002) failFile("has no file meta group (0002) after its preamble");
     // The file meta group is explicit VR little endian; without it GDCM guesses implicit VR.
     Syntax syntax{firstGroup == 0x0002 || at == 132, false};
     std::string transferSyntax;

@@ -59,6 +59,17 @@ TEST_F(DicomFileWalkTest, AFileEndingInsideItsMetaGroupIsRefused) {
             std::string::npos);
 }
 
+// GDCM reads a file with "DICM" but no meta group by guessing its syntax: a fuzzed slice whose
+// first tag became (0000,0200) OF was read big endian, its length 0xe6000000 allocated.
+TEST_F(DicomFileWalkTest, AFileWithoutItsMetaGroupAfterThePreambleIsRefused) {
+  const fs::path slice = series();
+  std::string bytes = fileBytes(slice);
+  bytes.replace(132, 2, littleEndian(0x0000, 2));
+  overwrite(slice, bytes);
+  EXPECT_NE(refusal().find("slice IM2-4.dcm: has no file meta group (0002) after its preamble"),
+            std::string::npos);
+}
+
 TEST_F(DicomFileWalkTest, AFileEndingInsideAnElementHeaderIsRefused) {
   const fs::path slice = series();
   const std::string bytes = fileBytes(slice);
