@@ -160,8 +160,10 @@ void readVoxels(itk::ImageIOBase& io, const std::optional<VoxelDataLayout>& layo
       readVoxelSlabs(*layout, {std::uint64_t(io.GetImageSizeInBytes()) / slices, slices}, out,
                      [&](double fraction) { report(options, 0.05 + 0.55 * fraction); });
       return;
-    } catch (const VoxelStreamError&) {
-      // ITK reads the file again and reports its problem in its own words.
+    } catch (const VoxelStreamError& error) {
+      // ITK reads the file again and reports its problem in its own words, where it can.
+      if (!layout->libraryMayRetry)
+        throw std::invalid_argument(std::string("cannot be read: ") + error.what());
     }
   }
   readAllThroughItk(io, out);
@@ -299,7 +301,9 @@ std::optional<std::size_t> streamIntoVolume(const OpenedVolume& opened, const Re
           });
         },
         [&](double fraction) { report(options, 0.05 + 0.9 * fraction); });
-  } catch (const VoxelStreamError&) {
+  } catch (const VoxelStreamError& error) {
+    if (!opened.layout->libraryMayRetry)
+      throw std::invalid_argument(std::string("cannot be read: ") + error.what());
     return std::nullopt;
   }
   return nonFinite;

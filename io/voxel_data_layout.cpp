@@ -33,6 +33,7 @@ std::optional<VoxelDataLayout> metaImageLayout(const std::filesystem::path& file
     return std::nullopt;
   VoxelDataLayout layout;
   layout.encoding = header.flag("CompressedData") ? VoxelEncoding::deflate : VoxelEncoding::raw;
+  layout.libraryMayRetry = layout.encoding == VoxelEncoding::raw;
   const std::string dataFile = header.field("ElementDataFile");
   if (dataFile == "LOCAL") {
     if (!header.dataStart || header.dataLineEndsWithCr) return std::nullopt;

@@ -22,6 +22,9 @@ struct VoxelDataLayout {
   std::uint64_t fileOffset = 0;  // where the raw data or the compressed stream starts
   VoxelEncoding encoding = VoxelEncoding::raw;
   std::uint64_t skipBytes = 0;  // decoded bytes before the first voxel (a .nii.gz's header)
+  // Whether the library may read the data again when io/ finds them damaged, so that its own
+  // message is shown: not MetaIO's compressed data (its inflate loop never ends on some).
+  bool libraryMayRetry = true;
 };
 
 // The voxel data's size as ITK reports it for the header.
