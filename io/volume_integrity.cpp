@@ -23,6 +23,8 @@ namespace {
                              " bytes of voxel data, the file holds " + std::to_string(found));
 }
 
+constexpr std::uint64_t kMaxDeflateRatio = 1032;  // zlib's limit (zlib technical details)
+
 // ---- MetaImage: LOCAL data follows the header; a data file may skip HeaderSize bytes.
 void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t voxelBytes) {
   const MetaImageHeader header = readMetaImageHeader(file);
@@ -31,14 +33,17 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
     return;
   const bool compressed = header.flag("CompressedData");
   std::uint64_t expected = voxelBytes;
+  // Compressed without a size: zlib's deflate packs at most 1032 bytes into one, so fewer
+  // compressed bytes than voxelBytes / 1032 cannot hold the voxels.
+  bool leastCompressed = false;
   if (compressed) {
     // MetaIO allocates as many bytes as it reads (a negative size wraps around to nearly 2^64).
     const std::optional<double> size = header.number("CompressedDataSize");
-    if (!size) return;  // compressed without a size: nothing to compare with
-    if (!(*size >= 0 && *size < 9e18))
+    if (size && !(*size >= 0 && *size < 9e18))
       throw InputError(
           file, "has an impossible CompressedDataSize (" + shownText(field("CompressedDataSize")) + ")");
-    expected = std::uint64_t(*size);
+    leastCompressed = !size;
+    expected = size ? std::uint64_t(*size) : (voxelBytes + kMaxDeflateRatio - 1) / kMaxDeflateRatio;
   }
   std::uint64_t found = 0;
   const std::string dataFile = field("ElementDataFile");
@@ -64,6 +69,11 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
     }
     if (headerBytes > 0) found = found > std::uint64_t(headerBytes) ? found - headerBytes : 0;
   }
+  if (found < expected && leastCompressed)
+    throw InputError(file, "is truncated: its " + std::to_string(found) +
+                               " bytes of compressed voxel data cannot hold the " +
+                               std::to_string(voxelBytes) +
+                               " bytes its header promises (zlib compresses at most 1032:1)");
   if (found < expected) truncated(file, expected, found);
 }
 

@@ -414,6 +414,26 @@ TEST_F(VolumeReaderTest, NiftiVoxOffsetBeyondAnIntIsRefused) {
   expectInputError(file, "has an impossible vox_offset (1500000026624 bytes)");
 }
 
+// Compressed MetaImage data without CompressedDataSize: zlib packs at most 1032 bytes into one, so
+// a few bytes cannot hold a big volume (MetaIO would allocate the volume first).
+TEST_F(VolumeReaderTest, CompressedMetaImageDataTooShortForItsVolumeIsRefused) {
+  const std::string header =
+      "ObjectType = Image\nNDims = 3\nBinaryData = True\nCompressedData = True\n"
+      "ElementSpacing = 1 1 1\nDimSize = 64 64 64\nElementType = MET_SHORT\nElementDataFile = LOCAL\n";
+  const std::string zeros(64 * 64 * 64 * 2, '\0');
+  std::string packed(compressBound(uLong(zeros.size())), '\0');
+  uLongf packedBytes = uLongf(packed.size());
+  ASSERT_EQ(compress2(reinterpret_cast<Bytef*>(packed.data()), &packedBytes,
+                      reinterpret_cast<const Bytef*>(zeros.data()), uLong(zeros.size()), 9),
+            Z_OK);
+  packed.resize(packedBytes);  // about 1000:1, near zlib's limit
+  writeText(dir_ / "packed.mha", header + packed);
+  EXPECT_EQ(readVolume(dir_ / "packed.mha").volume.dims, glm::ivec3(64, 64, 64));
+  writeText(dir_ / "short.mha", header + packed.substr(0, 100));
+  expectInputError(dir_ / "short.mha",
+                   "is truncated: its 100 bytes of compressed voxel data cannot hold the 524288 bytes");
+}
+
 TEST_F(VolumeReaderTest, LabelsOnTheSameGridGoToTheLabelBits) {
   const Placement flipped{{1.0, 1.0, 1.0},
                           {0.0, 0.0, 0.0},
