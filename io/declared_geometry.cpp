@@ -255,9 +255,10 @@ void checkNifti(const fs::path& file) {
   if (!header) throw InputError(file, "is not a valid NIfTI file (its header does not add up)");
   // The NIfTI library keeps a NIfTI-1 vox_offset as an int: a larger one becomes the header's size
   // there, so ITK would read the header as voxels.
-  const std::string offset = std::to_string(header->dataOffset);
-  if (!header->nifti2 && header->dataOffset > std::uint64_t(std::numeric_limits<int>::max()))
+  if (!header->nifti2 && header->dataOffset > std::uint64_t(std::numeric_limits<int>::max())) {
+    const std::string offset = std::to_string(header->dataOffset);
     throw InputError(file, "has an impossible vox_offset (" + offset + " bytes)");
+  }
   const auto text = [](auto values) {
     std::string out;
     for (const double v : values) {

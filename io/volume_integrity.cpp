@@ -73,7 +73,8 @@ void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t v
     throw InputError(file, "is truncated: its " + std::to_string(found) +
                                " bytes of compressed voxel data cannot hold the " +
                                std::to_string(voxelBytes) +
-                               " bytes its header promises (zlib compresses at most 1032:1)");
+                               " bytes its header promises (zlib compresses at most " +
+                               std::to_string(kMaxDeflateRatio) + ":1)");
   if (found < expected) truncated(file, expected, found);
 }
 
