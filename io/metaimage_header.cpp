@@ -86,7 +86,8 @@ std::string MetaImageHeader::field(const std::string& key) const {
   return found == fields.end() ? std::string() : found->second;
 }
 
-bool MetaImageHeader::flag(const std::string& key) const {
+bool MetaImageHeader::flag(const std::string& key, bool absent) const {
+  if (!fields.count(key)) return absent;
   const std::string value = field(key);
   return !value.empty() && (value[0] == 'T' || value[0] == 't' || value[0] == '1');
 }
@@ -118,7 +119,6 @@ MetaImageHeader readMetaImageHeader(const std::filesystem::path& file) {
     if (key != "ElementDataFile") continue;
     // Nothing after the line (it ends the file): no data start, as for MetaIO.
     if (const std::streamoff at = in.tellg(); at >= 0) header.dataStart = std::uint64_t(at);
-    header.dataLineEndsWithCr = !line.empty() && line.back() == '\r';
     break;
   }
   return header;

@@ -16,7 +16,6 @@ struct MetaImageHeader {
   std::set<std::string> repeated;             // keys the header has more than once
   // Offset of the byte after the ElementDataFile line; empty if the header has no such line.
   std::optional<std::uint64_t> dataStart;
-  bool dataLineEndsWithCr = false;  // a CRLF header: where MetaIO starts its data is less certain
   // The first line MetaIO would not read as one "Key = Value" field or whose value it would not
   // hold, and why ("header line 4 is not 'Key = Value'"); MetaIO's reading goes astray there (and
   // its buffers overflow).
@@ -24,8 +23,9 @@ struct MetaImageHeader {
 
   // The field's value, or "" if the header does not have it.
   std::string field(const std::string& key) const;
-  // A boolean field as MetaIO reads it: true iff its value starts with T, t or 1.
-  bool flag(const std::string& key) const;
+  // A boolean field as MetaIO reads it: true iff its value starts with T, t or 1; `absent` if the
+  // header does not have it (MetaIO's default: true for BinaryData, false for the others).
+  bool flag(const std::string& key, bool absent = false) const;
   // A number field as MetaIO reads it: a double, up to the first character that is not part of
   // one ("12abc" is 12); nullopt if the value does not start with a number.
   std::optional<double> number(const std::string& key) const;

@@ -4,6 +4,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -25,57 +26,70 @@ namespace {
 
 constexpr std::uint64_t kMaxDeflateRatio = 1032;  // zlib's limit (zlib technical details)
 
-// ---- MetaImage: LOCAL data follows the header; a data file may skip HeaderSize bytes.
-void requireCompleteMetaImage(const std::filesystem::path& file, std::uint64_t voxelBytes) {
-  const MetaImageHeader header = readMetaImageHeader(file);
-  const auto field = [&](const char* key) { return header.field(key); };
-  if (field("ElementDataFile").empty() || (!field("BinaryData").empty() && !header.flag("BinaryData")))
-    return;
-  const bool compressed = header.flag("CompressedData");
-  std::uint64_t expected = voxelBytes;
-  // Compressed without a size: zlib's deflate packs at most 1032 bytes into one, so fewer
-  // compressed bytes than voxelBytes / 1032 cannot hold the voxels.
-  bool leastCompressed = false;
-  if (compressed) {
-    // MetaIO allocates as many bytes as it reads (a negative size wraps around to nearly 2^64).
-    const std::optional<double> size = header.number("CompressedDataSize");
-    if (size && !(*size >= 0 && *size < 9e18))
-      throw InputError(
-          file, "has an impossible CompressedDataSize (" + shownText(field("CompressedDataSize")) + ")");
-    leastCompressed = !size;
-    expected = size ? std::uint64_t(*size) : (voxelBytes + kMaxDeflateRatio - 1) / kMaxDeflateRatio;
+// ---- MetaImage: LOCAL data follow the header; a data file may skip HeaderSize bytes.
+
+// The bytes of voxel data a MetaImage header promises; for text and for compressed data without a
+// size only the fewest that could hold the voxels, with what the message says of them.
+struct PromisedData {
+  std::uint64_t bytes = 0;
+  std::string fewest;  // "bytes of compressed voxel data cannot hold the 524288 bytes ...", or ""
+};
+
+PromisedData promisedMetaImageData(const std::filesystem::path& file, const MetaImageHeader& header,
+                                   const StoredDataSize& size) {
+  if (!header.flag("BinaryData", true)) {
+    // Text: every value takes a digit and a separator (MetaIO fails on a last value the file ends in).
+    const std::uint64_t values = size.voxelBytes / std::max(1u, size.componentBytes);
+    return {2 * values, "bytes of voxel data as text cannot hold the " + std::to_string(values) +
+                            " values its header promises (2 bytes each at least)"};
   }
-  std::uint64_t found = 0;
-  const std::string dataFile = field("ElementDataFile");
+  if (!header.flag("CompressedData")) return {size.voxelBytes, ""};
+  // MetaIO allocates as many bytes as it reads (a negative size wraps around to nearly 2^64).
+  const std::optional<double> compressedSize = header.number("CompressedDataSize");
+  if (compressedSize && !(*compressedSize >= 0 && *compressedSize < 9e18))
+    throw InputError(file, "has an impossible CompressedDataSize (" +
+                               shownText(header.field("CompressedDataSize")) + ")");
+  if (compressedSize) return {std::uint64_t(*compressedSize), ""};
+  // Without a size: zlib's deflate packs at most 1032 bytes into one.
+  return {(size.voxelBytes + kMaxDeflateRatio - 1) / kMaxDeflateRatio,
+          "bytes of compressed voxel data cannot hold the " + std::to_string(size.voxelBytes) +
+              " bytes its header promises (zlib compresses at most " + std::to_string(kMaxDeflateRatio) +
+              ":1)"};
+}
+
+// The bytes of voxel data the file holds, or nothing where that is not known (lists of files).
+std::optional<std::uint64_t> metaImageDataBytes(const std::filesystem::path& file,
+                                                const MetaImageHeader& header) {
+  const std::string dataFile = header.field("ElementDataFile");
   if (dataFile == "LOCAL") {
-    if (!header.dataStart) return;
-    const std::uint64_t dataStart = *header.dataStart;
+    if (!header.dataStart) return 0;  // the header ends the file
     const std::uint64_t size = std::filesystem::file_size(file);
-    found = size > dataStart ? size - dataStart : 0;
-  } else {
-    // LIST or a printf pattern name several files; skip those.
-    if (dataFile == "LIST" || dataFile.find_first_of("% ") != std::string::npos) return;
-    const std::filesystem::path data = file.parent_path() / dataFile;
-    std::error_code error;
-    const std::uint64_t size = std::filesystem::file_size(data, error);
-    if (error)
-      throw InputError(file,
-                       "its data file " + quotedText(dataFile) + " cannot be read: " + error.message());
-    found = size;
-    long headerBytes = 0;
-    try {
-      headerBytes = std::stol(field("HeaderSize"));
-    } catch (const std::exception&) {
-    }
-    if (headerBytes > 0) found = found > std::uint64_t(headerBytes) ? found - headerBytes : 0;
+    return size > *header.dataStart ? size - *header.dataStart : 0;
   }
-  if (found < expected && leastCompressed)
-    throw InputError(file, "is truncated: its " + std::to_string(found) +
-                               " bytes of compressed voxel data cannot hold the " +
-                               std::to_string(voxelBytes) +
-                               " bytes its header promises (zlib compresses at most " +
-                               std::to_string(kMaxDeflateRatio) + ":1)");
-  if (found < expected) truncated(file, expected, found);
+  // LIST or a printf pattern name several files; skip those.
+  if (dataFile == "LIST" || dataFile.find_first_of("% ") != std::string::npos) return std::nullopt;
+  std::error_code error;
+  const std::uint64_t size = std::filesystem::file_size(file.parent_path() / dataFile, error);
+  if (error)
+    throw InputError(file,
+                     "its data file " + quotedText(dataFile) + " cannot be read: " + error.message());
+  long headerBytes = 0;
+  try {
+    headerBytes = std::stol(header.field("HeaderSize"));
+  } catch (const std::exception&) {
+  }
+  return headerBytes > 0 ? (size > std::uint64_t(headerBytes) ? size - headerBytes : 0) : size;
+}
+
+void requireCompleteMetaImage(const std::filesystem::path& file, const StoredDataSize& size) {
+  const MetaImageHeader header = readMetaImageHeader(file);
+  if (header.field("ElementDataFile").empty()) return;
+  const PromisedData promised = promisedMetaImageData(file, header, size);
+  const std::optional<std::uint64_t> found = metaImageDataBytes(file, header);
+  if (!found || *found >= promised.bytes) return;
+  if (!promised.fewest.empty())
+    throw InputError(file, "is truncated: its " + std::to_string(*found) + " " + promised.fewest);
+  truncated(file, promised.bytes, *found);
 }
 
 // Uncompressed length of the gzip stream from byte `offset` of `file` to its end: the trailer's
@@ -140,9 +154,29 @@ void requireCompleteNrrdData(const std::filesystem::path& file, const VoxelDataL
   if (found < voxelBytes) truncated(file, voxelBytes, found);
 }
 
+void requireCompleteNrrdText(const std::filesystem::path& file, const NrrdDataStart& start,
+                             const StoredDataSize& size) {
+  const bool text = start.encoding == "ascii" || start.encoding == "text" || start.encoding == "txt";
+  if (!text && start.encoding != "hex") return;
+  std::error_code error;
+  const std::uint64_t fileBytes = std::filesystem::file_size(start.dataFile, error);
+  if (error) return;  // teem says it cannot open it
+  const std::uint64_t found = fileBytes > start.fileOffset ? fileBytes - start.fileOffset : 0;
+  const std::uint64_t values = size.voxelBytes / std::max(1u, size.componentBytes);
+  const std::uint64_t least = text ? (values ? 2 * values - 1 : 0) : 2 * size.voxelBytes;
+  if (found >= least) return;
+  const std::string held = text ? "text cannot hold the " + std::to_string(values) +
+                                      " values its header promises (2 bytes each at least)"
+                                : "hex cannot hold the " + std::to_string(size.voxelBytes) +
+                                      " bytes its header promises (2 digits each)";
+  std::string message = "is truncated: its " + std::to_string(found);
+  message += " bytes of voxel data as " + held;
+  throw InputError(file, message);
+}
+
 void requireCompleteData(const std::filesystem::path& file, VolumeFormat format,
-                         std::uint64_t voxelBytes) {
-  if (format == VolumeFormat::metaImage) requireCompleteMetaImage(file, voxelBytes);
+                         const StoredDataSize& size) {
+  if (format == VolumeFormat::metaImage) requireCompleteMetaImage(file, size);
   if (format == VolumeFormat::nifti) requireCompleteNifti(file);
 }
 

@@ -25,6 +25,7 @@
 #include "io/volume_integrity.h"
 #include "io/volume_memory.h"
 #include "io/volume_reorientation.h"
+#include "io/shown_text.h"
 #include "io/voxel_data_layout.h"
 #include "io/voxel_slab_reader.h"
 
@@ -148,12 +149,23 @@ void readAllThroughItk(itk::ImageIOBase& io, char* out) {
     throw std::invalid_argument("cannot be read: " + text);
 }
 
+// A problem io/ found in the voxel data, naming their file when it is not the header's.
+std::invalid_argument voxelDataProblem(const std::filesystem::path& file, const VoxelDataLayout& layout,
+                                       const VoxelStreamError& error) {
+  const std::string where =
+      layout.dataFile == file
+          ? ""
+          : "its data file " + quotedText(layout.dataFile.filename().string()) + ": ";
+  return std::invalid_argument("cannot be read: " + where + error.what());
+}
+
 // Reads the voxels as stored into `out`. ITK reads a single-file volume in one call, without
 // progress and without a way to stop, so those whose data io/ can decode itself are read here in
 // slabs of slices, reporting progress (0.05 to 0.6) between slabs. Every other file, and one whose
 // data turns out bad, is read by ITK: its values and its errors stay ITK's.
-void readVoxels(itk::ImageIOBase& io, const std::optional<VoxelDataLayout>& layout,
-                const VolumeGeometry& geometry, char* out, const ReadOptions& options) {
+void readVoxels(const std::filesystem::path& file, itk::ImageIOBase& io,
+                const std::optional<VoxelDataLayout>& layout, const VolumeGeometry& geometry, char* out,
+                const ReadOptions& options) {
   if (layout) {
     const std::uint64_t slices = std::uint64_t(geometry.dims.z);
     try {
@@ -162,8 +174,7 @@ void readVoxels(itk::ImageIOBase& io, const std::optional<VoxelDataLayout>& layo
       return;
     } catch (const VoxelStreamError& error) {
       // ITK reads the file again and reports its problem in its own words, where it can.
-      if (!layout->libraryMayRetry)
-        throw std::invalid_argument(std::string("cannot be read: ") + error.what());
+      if (!layout->libraryMayRetry) throw voxelDataProblem(file, *layout, error);
     }
   }
   readAllThroughItk(io, out);
@@ -202,9 +213,9 @@ OpenedVolume openVolume(const std::filesystem::path& file) {
   opened.description = formatLabel + " " + componentTypeName(opened.componentType);
   withComponentType(opened.componentType, [](auto) { return 0; });  // rejects unusual types
   if (const auto format = volumeFormatOf(file)) {
-    requireCompleteData(file, *format, opened.storedBytes());
-    opened.layout =
-        voxelDataLayout(file, *format, {opened.storedBytes(), unsigned(opened.io->GetComponentSize())});
+    const StoredDataSize size{opened.storedBytes(), unsigned(opened.io->GetComponentSize())};
+    requireCompleteData(file, *format, size);
+    opened.layout = voxelDataLayout(file, *format, size);
   }
   return opened;
 }
@@ -220,8 +231,12 @@ void requireMemoryFor(const std::filesystem::path& file, const OpenedVolume& ope
 // teem allocates the whole volume before it finds its data short.
 void requireCompleteNrrd(const std::filesystem::path& file, const OpenedVolume& opened) {
   if (volumeFormatOf(file) != VolumeFormat::nrrd) return;
-  if (const auto place = nrrdDataPlace(file))
+  if (const auto place = nrrdDataPlace(file)) {
     requireCompleteNrrdData(file, *place, opened.storedBytes());
+  } else if (const auto start = nrrdDataStart(file)) {
+    requireCompleteNrrdText(file, *start,
+                            {opened.storedBytes(), unsigned(opened.io->GetComponentSize())});
+  }
 }
 
 // Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will
@@ -239,8 +254,8 @@ StoredVolume readStoredVolume(const std::filesystem::path& file, double extraByt
     stored.description = opened.description;
     stored.data = std::make_unique_for_overwrite<double[]>((opened.storedBytes() + sizeof(double) - 1) /
                                                            sizeof(double));
-    readVoxels(*opened.io, opened.layout, stored.geometry, reinterpret_cast<char*>(stored.data.get()),
-               options);
+    readVoxels(file, *opened.io, opened.layout, stored.geometry,
+               reinterpret_cast<char*>(stored.data.get()), options);
     report(options, 0.6);
     return stored;
   });
@@ -285,7 +300,8 @@ void warnNonFinite(const std::filesystem::path& file, std::size_t nonFinite,
 // The voxels read slab by slab straight into the volume (converted and reoriented per slab): the
 // file's stored voxels are never all in memory, so a load peaks at the volume plus one slab.
 // Returns the non-finite count, or nothing if the data turned out bad (ITK then reads the file).
-std::optional<std::size_t> streamIntoVolume(const OpenedVolume& opened, const Reorientation& plan,
+std::optional<std::size_t> streamIntoVolume(const std::filesystem::path& file,
+                                            const OpenedVolume& opened, const Reorientation& plan,
                                             Volume& volume, const ReadOptions& options) {
   const glm::ivec3 dims = opened.geometry.dims;
   const std::uint64_t sliceBytes = opened.storedBytes() / std::uint64_t(dims.z);
@@ -302,8 +318,7 @@ std::optional<std::size_t> streamIntoVolume(const OpenedVolume& opened, const Re
         },
         [&](double fraction) { report(options, 0.05 + 0.9 * fraction); });
   } catch (const VoxelStreamError& error) {
-    if (!opened.layout->libraryMayRetry)
-      throw std::invalid_argument(std::string("cannot be read: ") + error.what());
+    if (!opened.layout->libraryMayRetry) throw voxelDataProblem(file, *opened.layout, error);
     return std::nullopt;
   }
   return nonFinite;
@@ -320,7 +335,7 @@ Volume volumeFromFile(const std::filesystem::path& file, const ReadOptions& opti
     requireCompleteNrrd(file, opened);
     report(options, 0.05);
     Volume volume = volumeOn(reorientedGeometry(opened.geometry, plan));
-    if (const auto nonFinite = streamIntoVolume(opened, plan, volume, options)) {
+    if (const auto nonFinite = streamIntoVolume(file, opened, plan, volume, options)) {
       warnNonFinite(file, *nonFinite, options);
       description = opened.description;
       return volume;

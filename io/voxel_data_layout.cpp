@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <string>
+#include <utility>
 
+#include "io/input_error.h"
 #include "io/lowercase.h"
 #include "io/metaimage_header.h"
 #include "io/nifti_header.h"
@@ -20,59 +22,86 @@ bool namesOneFile(const std::string& name) {
   });
 }
 
-// ---- MetaImage: LOCAL data after the header, or one .raw/.zraw file beside it.
-std::optional<VoxelDataLayout> metaImageLayout(const std::filesystem::path& file) {
-  const MetaImageHeader header = readMetaImageHeader(file);
+// ---- MetaImage: LOCAL data after the header, or one .raw/.zraw file, named relative to the
+// header's folder (as MetaIO resolves it) or absolute.
+struct MetaImagePlace {
+  std::optional<VoxelDataLayout> layout;
+  std::string leftToMetaIo;  // why there is no layout: "in big-endian byte order"
+};
+
+MetaImagePlace metaImagePlace(const std::filesystem::path& file, const MetaImageHeader& header) {
   const auto isOneOf = [&](const char* key, std::initializer_list<const char*> values) {
     return std::find(values.begin(), values.end(), header.field(key)) != values.end();
   };
-  // MetaIO reads a flag by its first letter (MetaImageHeader::flag).
-  if (!header.flag("BinaryData")) return std::nullopt;  // ASCII voxels
-  if (header.flag("ElementByteOrderMSB") || header.flag("BinaryDataByteOrderMSB")) return std::nullopt;
-  if (!isOneOf("HeaderSize", {"", "0"}) || !isOneOf("ElementNumberOfChannels", {"", "1"}))
-    return std::nullopt;
+  // MetaIO reads a flag by its first letter, and binary data where the header does not say.
+  if (!header.flag("BinaryData", true)) return {{}, "as text"};
+  if (header.flag("ElementByteOrderMSB") || header.flag("BinaryDataByteOrderMSB"))
+    return {{}, "in big-endian byte order"};
+  if (!isOneOf("HeaderSize", {"", "0"})) return {{}, "after a HeaderSize"};
+  if (!isOneOf("ElementNumberOfChannels", {"", "1"})) return {{}, "with several channels per voxel"};
   VoxelDataLayout layout;
   layout.encoding = header.flag("CompressedData") ? VoxelEncoding::deflate : VoxelEncoding::raw;
   layout.libraryMayRetry = layout.encoding == VoxelEncoding::raw;
   const std::string dataFile = header.field("ElementDataFile");
   if (dataFile == "LOCAL") {
-    if (!header.dataStart || header.dataLineEndsWithCr) return std::nullopt;
+    if (!header.dataStart) return {{}, "missing after the header"};
     layout.dataFile = file;
     layout.fileOffset = *header.dataStart;
-    return layout;
+    return {layout, ""};
   }
-  // MetaIO looks for a bare name beside the header; names with folders it resolves its own way.
-  if (!namesOneFile(dataFile) || dataFile.find_first_of("/\\") != std::string::npos) return std::nullopt;
-  layout.dataFile = file.parent_path() / dataFile;
-  return layout;
+  if (!namesOneFile(dataFile)) return {{}, "in a list or pattern of files"};
+  const std::filesystem::path data(dataFile);
+  layout.dataFile = data.is_absolute() ? data : file.parent_path() / data;
+  return {layout, ""};
+}
+
+std::optional<VoxelDataLayout> metaImageLayout(const std::filesystem::path& file) {
+  const MetaImageHeader header = readMetaImageHeader(file);
+  MetaImagePlace place = metaImagePlace(file, header);
+  // MetaIO's inflate loop (MET_PerformUncompression) takes zlib's "needs a preset dictionary" for
+  // progress and never ends, so compressed data are never left to it.
+  if (!place.layout && header.flag("BinaryData", true) && header.flag("CompressedData"))
+    throw InputError(file, "has compressed voxel data " + place.leftToMetaIo +
+                               ", which angioray does not read (compressed data must be one "
+                               "little-endian block of single-channel voxels)");
+  return std::move(place.layout);
 }
 
 // ---- NRRD: attached data after the header's empty line, or one "data file" relative to the
 // header's folder.
-std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, const NrrdHeader& header) {
+std::optional<NrrdDataStart> nrrdStart(const std::filesystem::path& file, const NrrdHeader& header) {
   const bool unreadable = std::any_of(header.lines.begin(), header.lines.end(), [](const auto& line) {
     return line.kind == NrrdLineKind::unknown;
   });
   if (unreadable) return std::nullopt;  // teem refuses it
-  VoxelDataLayout layout;
-  const std::string encoding = header.field("encoding", true);
-  if (encoding == "gzip" || encoding == "gz") {
-    layout.encoding = VoxelEncoding::deflate;
-  } else if (encoding != "raw") {
-    return std::nullopt;
-  }
   for (const char* skip : {"lineskip", "byteskip"})
     if (!header.field(skip).empty() && header.field(skip) != "0") return std::nullopt;
+  NrrdDataStart start;
+  start.encoding = header.field("encoding", true);
   const std::string dataFile = header.field("datafile");
   if (dataFile.empty()) {
     if (!header.dataStart) return std::nullopt;
-    layout.dataFile = file;
-    layout.fileOffset = *header.dataStart;
-    return layout;
+    start.dataFile = file;
+    start.fileOffset = *header.dataStart;
+    return start;
   }
   if (!namesOneFile(dataFile)) return std::nullopt;
   const std::filesystem::path data(dataFile);
-  layout.dataFile = data.is_absolute() ? data : file.parent_path() / data;
+  start.dataFile = data.is_absolute() ? data : file.parent_path() / data;
+  return start;
+}
+
+std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, const NrrdHeader& header) {
+  const auto start = nrrdStart(file, header);
+  if (!start) return std::nullopt;
+  VoxelDataLayout layout;
+  if (start->encoding == "gzip" || start->encoding == "gz") {
+    layout.encoding = VoxelEncoding::deflate;
+  } else if (start->encoding != "raw") {
+    return std::nullopt;
+  }
+  layout.dataFile = start->dataFile;
+  layout.fileOffset = start->fileOffset;
   return layout;
 }
 
@@ -120,6 +149,11 @@ std::optional<VoxelDataLayout> niftiLayout(const std::filesystem::path& file,
 std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file) {
   const auto header = readNrrdHeader(file);
   return header ? nrrdPlace(file, *header) : std::nullopt;
+}
+
+std::optional<NrrdDataStart> nrrdDataStart(const std::filesystem::path& file) {
+  const auto header = readNrrdHeader(file);
+  return header ? nrrdStart(file, *header) : std::nullopt;
 }
 
 std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,

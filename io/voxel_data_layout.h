@@ -3,10 +3,12 @@
 // the files whose voxels io/ decodes itself (voxel_slab_reader.h): one block, raw or one zlib/gzip
 // stream, in this machine's byte order, holding exactly the values ITK would return. Anything else
 // (ASCII or bzip2 data, file lists, line or byte skips, the other byte order, NIfTI scaling, which
-// ITK applies while reading) has no layout here and is left to ITK's own reader.
+// ITK applies while reading) has no layout here and is left to ITK's own reader; but not
+// compressed MetaImage data, which are refused instead.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "io/volume_formats.h"
 
@@ -33,11 +35,22 @@ struct StoredDataSize {
   unsigned componentBytes = 0;
 };
 
+// Throws InputError for compressed MetaImage data it has no layout for (MetaIO may never return
+// from reading those).
 std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,
                                                const StoredDataSize& size);
 
 // Where a NRRD's voxel data lie, whatever their byte order (a layout only where io/ reads them
 // too): raw or gzip, attached or in one data file; nothing for skips, lists and other encodings.
 std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file);
+
+// Where a NRRD's voxel data start in any encoding (attached or in one data file), and the
+// encoding as the header names it ("ascii", "hex", ...); nothing for skips and lists.
+struct NrrdDataStart {
+  std::filesystem::path dataFile;
+  std::uint64_t fileOffset = 0;
+  std::string encoding;
+};
+std::optional<NrrdDataStart> nrrdDataStart(const std::filesystem::path& file);
 
 }  // namespace angio

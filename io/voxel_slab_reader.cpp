@@ -20,20 +20,19 @@ using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 
 File openAt(const VoxelDataLayout& layout) {
   File file(std::fopen(layout.dataFile.c_str(), "rb"), &std::fclose);
-  if (!file) throw VoxelStreamError(layout.dataFile.string() + ": cannot be opened");
+  if (!file) throw VoxelStreamError("cannot be opened");
   if (::fseeko(file.get(), off_t(layout.fileOffset), SEEK_SET) != 0)
-    throw VoxelStreamError(layout.dataFile.string() + ": cannot seek to the voxel data");
+    throw VoxelStreamError("cannot seek to the voxel data");
   return file;
 }
 
 // The decoded bytes of a layout's data, read in order.
 class DecodedBytes {
  public:
-  explicit DecodedBytes(const VoxelDataLayout& layout)
-      : name_(layout.dataFile.string()), file_(openAt(layout)) {
+  explicit DecodedBytes(const VoxelDataLayout& layout) : file_(openAt(layout)) {
     if (layout.encoding == VoxelEncoding::raw) return;
     // 15 + 32: a zlib or a gzip stream, whichever the header says (MetaImage writes zlib).
-    if (inflateInit2(&stream_, 15 + 32) != Z_OK) throw VoxelStreamError(name_ + ": zlib failed");
+    if (inflateInit2(&stream_, 15 + 32) != Z_OK) throw VoxelStreamError("zlib failed");
     inflating_ = true;
     input_.resize(1 << 20);
   }
@@ -57,7 +56,7 @@ class DecodedBytes {
   }
 
  private:
-  [[noreturn]] void endsEarly() const { throw VoxelStreamError(name_ + ": voxel data ends early"); }
+  [[noreturn]] static void endsEarly() { throw VoxelStreamError("voxel data end early"); }
 
   void readRaw(char* out, std::uint64_t bytes) {
     if (std::fread(out, 1, bytes, file_.get()) != bytes) endsEarly();
@@ -80,16 +79,20 @@ class DecodedBytes {
         const int status = inflate(&stream_, Z_NO_FLUSH);
         // A gzip file may hold several members one after the other (zlib's gzread reads on too).
         if (status == Z_STREAM_END && inflateReset(&stream_) == Z_OK) continue;
-        if (status != Z_OK && status != Z_BUF_ERROR)
-          throw VoxelStreamError(name_ + ": voxel data does not decompress (" +
-                                 (stream_.msg ? stream_.msg : "zlib error") + ")");
+        if (status != Z_OK && status != Z_BUF_ERROR) throw notDecompressing(status);
       }
       out += chunk;
       bytes -= chunk;
     }
   }
 
-  std::string name_;
+  VoxelStreamError notDecompressing(int status) const {
+    const char* why = status == Z_NEED_DICT ? "it asks for a preset dictionary"
+                      : stream_.msg         ? stream_.msg
+                                            : "zlib error";
+    return VoxelStreamError(std::string("voxel data do not decompress (") + why + ")");
+  }
+
   File file_;
   bool inflating_ = false;
   z_stream stream_{};

@@ -10,7 +10,7 @@
 
 namespace angio {
 
-// The data cannot be opened, ends early or does not decode.
+// The data cannot be opened, end early or do not decode; the message names no file.
 struct VoxelStreamError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

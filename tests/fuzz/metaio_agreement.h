@@ -19,15 +19,16 @@
 
 namespace angio::fuzz {
 
-// NDims, DimSize, the data file and the compression flag (with the compressed size: 0 for none,
-// "impossible" for a negative one or one of 9e18 bytes and more), as one line.
+// NDims, DimSize, the data file, binary or text, and the compression flag (with the compressed
+// size: 0 for none, "impossible" for a negative one or one of 9e18 bytes and more), as one line.
 inline std::string headerSummary(int dims, const std::string& sizes, const std::string& dataFile,
-                                 bool compressed, double compressedSize) {
+                                 bool binary, bool compressed, double compressedSize) {
   const std::string size = !(compressedSize >= 0 && compressedSize < 9e18)
                                ? std::string("impossible")
                                : std::to_string(std::uint64_t(compressedSize));
   return "NDims " + std::to_string(dims) + ", DimSize '" + sizes + "', ElementDataFile '" + dataFile +
-         "', CompressedData " + (compressed ? "true, size " + size : std::string("false"));
+         "', " + (binary ? "binary" : "text") + ", CompressedData " +
+         (compressed ? "true, size " + size : std::string("false"));
 }
 
 // MetaIO's compressed size, which it keeps to itself.
@@ -45,22 +46,22 @@ inline std::string ourSummary(const MetaImageHeader& header) {
   std::string sizes;
   for (double size = 0; numbers >> size;) appendNumber(sizes, long(size));
   return headerSummary(std::atoi(header.field("NDims").c_str()), sizes, header.field("ElementDataFile"),
-                       header.flag("CompressedData"), header.number("CompressedDataSize").value_or(0));
+                       header.flag("BinaryData", true), header.flag("CompressedData"),
+                       header.number("CompressedDataSize").value_or(0));
 }
 
 inline std::string metaIoSummary(MetaImageWithSizes& image) {
   std::string sizes;
   for (int axis = 0; axis < image.NDims(); ++axis) appendNumber(sizes, image.DimSize(axis));
-  return headerSummary(image.NDims(), sizes, image.ElementDataFileName(), image.CompressedData(),
-                       image.compressedDataSize());
+  return headerSummary(image.NDims(), sizes, image.ElementDataFileName(), image.BinaryData(),
+                       image.CompressedData(), image.compressedDataSize());
 }
 
 // Where LOCAL voxel data start for io/ (MetaImageHeader::dataStart) and for MetaIO (its stream after
 // the header), as " data at N", or "" where io/ leaves the voxels to MetaIO (voxel_data_layout.h).
 inline std::string localDataStarts(const std::filesystem::path& file, const MetaImageHeader& header,
                                    std::string& metaIo) {
-  if (header.field("ElementDataFile") != "LOCAL" || !header.dataStart || header.dataLineEndsWithCr)
-    return "";
+  if (header.field("ElementDataFile") != "LOCAL" || !header.dataStart) return "";
   std::ifstream stream(file, std::ios::binary);
   MetaImage image;
   if (!image.ReadStream(0, &stream, false)) return "";

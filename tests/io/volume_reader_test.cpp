@@ -434,6 +434,41 @@ TEST_F(VolumeReaderTest, CompressedMetaImageDataTooShortForItsVolumeIsRefused) {
                    "is truncated: its 100 bytes of compressed voxel data cannot hold the 524288 bytes");
 }
 
+// A header that ends the file (no line end after ElementDataFile) has no voxel data at all.
+TEST_F(VolumeReaderTest, MetaImageHeaderEndingTheFileIsTruncated) {
+  writeText(dir_ / "header.mha",
+            "ObjectType = Image\nNDims = 3\nElementSpacing = 1 1 1\n"
+            "DimSize = 6 5 99496729\nElementType = MET_SHORT\nElementDataFile = LOCAL");
+  expectInputError(dir_ / "header.mha",
+                   "is truncated: its header promises 5969803740 bytes of voxel data, the file holds 0");
+}
+
+// Voxels as text take at least a digit and a separator each: fewer bytes cannot hold them, and
+// the volume is not allocated for them.
+TEST_F(VolumeReaderTest, MetaImageTextTooShortForItsVolumeIsRefused) {
+  const auto header = [](const char* dims) {
+    return std::string("ObjectType = Image\nNDims = 3\nBinaryData = False\nElementSpacing = 1 1 1\n") +
+           "DimSize = " + dims + "\nElementType = MET_SHORT\nElementDataFile = LOCAL\n";
+  };
+  writeText(dir_ / "text.mha", header("2 2 2") + "-1000 0 1 2\n3 4 5 1200\n");
+  const LoadedVolume loaded = readVolume(dir_ / "text.mha");
+  EXPECT_EQ(loaded.volume.dims, glm::ivec3(2, 2, 2));
+  const auto [lowest, highest] =
+      std::minmax_element(loaded.volume.voxels.begin(), loaded.volume.voxels.end());
+  EXPECT_EQ(densityOf(*lowest), -1000 + 1024);
+  EXPECT_EQ(densityOf(*highest), 1200 + 1024);
+  // 16 bytes for 8 values is just enough ("1 1 1 1 1 1 1 1\n"); 15 is not.
+  writeText(dir_ / "least.mha", header("2 2 2") + "1 1 1 1 1 1 1 1\n");
+  EXPECT_EQ(readVolume(dir_ / "least.mha").volume.dims, glm::ivec3(2, 2, 2));
+  writeText(dir_ / "short.mha", header("2 2 2") + "1 1 1 1 1 1 1 1");
+  expectInputError(
+      dir_ / "short.mha",
+      "is truncated: its 15 bytes of voxel data as text cannot hold the 8 values its header "
+      "promises (2 bytes each at least)");
+  writeText(dir_ / "huge.mha", header("6 5 99496729") + "1 2 3\n");
+  expectInputError(dir_ / "huge.mha", "cannot hold the 2984901870 values");
+}
+
 TEST_F(VolumeReaderTest, LabelsOnTheSameGridGoToTheLabelBits) {
   const Placement flipped{{1.0, 1.0, 1.0},
                           {0.0, 0.0, 0.0},
@@ -781,6 +816,29 @@ TEST_F(VolumeReaderTest, NrrdFieldLinesTeemWouldOverflowOnAreRefusedBeforeIt) {
   expectInputError(dir_ / "late.nrrd", "header line 5 has 3011 characters");
   writeNrrd(dir_ / "nul.nrrd", std::string("key\0", 4) + longText + ":=\n");
   expectInputError(dir_ / "nul.nrrd", "header line 5 has 3006 characters");
+}
+
+// Teem allocates the volume before it parses text or hex data: a value as text takes a digit and
+// a separator (the last one a digit), a byte as hex two digits.
+TEST_F(VolumeReaderTest, NrrdTextOrHexTooShortForItsVolumeIsRefused) {
+  const auto nrrd = [](const std::string& sizes, const std::string& encoding, const std::string& data) {
+    return "NRRD0004\ntype: short\ndimension: 3\nsizes: " + sizes +
+           "\nendian: little\nencoding: " + encoding + "\n\n" + data;
+  };
+  writeText(dir_ / "least.nrrd", nrrd("2 2 2", "ascii", "1 1 1 1 1 1 1 1"));
+  EXPECT_EQ(readVolume(dir_ / "least.nrrd").volume.dims, glm::ivec3(2, 2, 2));
+  writeText(dir_ / "short.nrrd", nrrd("2 2 2", "text", "1 1 1 1 1 1 11"));
+  expectInputError(dir_ / "short.nrrd",
+                   "is truncated: its 14 bytes of voxel data as text cannot hold the 8 values");
+  writeText(dir_ / "huge.nrrd", nrrd("6 5 99496729", "txt", "1 2 3\n"));
+  expectInputError(dir_ / "huge.nrrd", "cannot hold the 2984901870 values");
+  const std::string hex = "0100020003000400050006000700080";
+  writeText(dir_ / "hex.nrrd", nrrd("2 2 2", "hex", hex + "0"));
+  EXPECT_EQ(readVolume(dir_ / "hex.nrrd").volume.dims, glm::ivec3(2, 2, 2));
+  writeText(dir_ / "short-hex.nrrd", nrrd("2 2 2", "hex", hex));
+  expectInputError(dir_ / "short-hex.nrrd",
+                   "is truncated: its 31 bytes of voxel data as hex cannot hold the 16 bytes its header "
+                   "promises (2 digits each)");
 }
 
 // A NRRD file whose sizes no machine holds, with 16 bytes of data: its lines end with `lineEnd`
