@@ -53,8 +53,11 @@ class ElementWalk {
     // PS3.10 7.1: the file meta group follows the preamble. Without it GDCM guesses the syntax,
     // byte order included, and reads lengths this walk does not see (a 3.9 GB one, say).
     if (at == 132 && firstGroup != 0x0002) failFile("has no file meta group (0002) after its preamble");
-    // The file meta group is explicit VR little endian; without it GDCM guesses implicit VR.
-    Syntax syntax{firstGroup == 0x0002 || at == 132, false};
+    // The file meta group is explicit VR little endian. A bare data set (no preamble, group 0008
+    // first) GDCM reads as explicit VR when a VR's name follows its first tag, as implicit VR
+    // otherwise (gdcm::FileMetaInformation::ReadCompat); the walk reads it as GDCM will.
+    const bool bareExplicit = firstGroup == 0x0008 && guessedExplicitVr(bytes_.substr(at + 4, 2));
+    Syntax syntax{firstGroup == 0x0002 || at == 132 || bareExplicit, false};
     std::string transferSyntax;
     bool inMeta = firstGroup == 0x0002;
     // The sequences, items and encapsulated pixel data the walk is inside, innermost last.
@@ -255,6 +258,8 @@ class ElementWalk {
       if (vr == candidate) return true;
     return false;
   }
+  // GDCM's guess takes any name of its VR table, its "??" (an invalid VR) among them.
+  static bool guessedExplicitVr(const std::string& vr) { return knownVr(vr) || vr == "??"; }
   static bool longForm(const std::string& vr) {
     for (const char* candidate :
          {"OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV"})

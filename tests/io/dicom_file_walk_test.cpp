@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <gdcmReader.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -195,6 +197,26 @@ TEST_F(DicomFileWalkTest, EncapsulatedPixelDataIsSteppedOverFragmentByFragment) 
   EXPECT_EQ(walkRefusal(file, kModality + kOpenSequence + kOpenItem + kModality + kItemEnd +
                                   sequenceEnd + patientName),
             "");
+}
+
+// A bare data set (no preamble, no meta group) in explicit VR: GDCM guesses its syntax from the
+// VR after the first tag, and the walk reads it the same way (as implicit VR, its first VR and
+// length bytes made a length of megabytes); the series then refuses it by what it is.
+TEST_F(DicomFileWalkTest, ABareExplicitVrDataSetIsWalkedAsGdcmReadsIt) {
+  const fs::path slice = series();
+  test_support::recompressDicomSlice(slice, gdcm::TransferSyntax::ExplicitVRLittleEndian);
+  const std::string bytes = fileBytes(slice);
+  overwrite(slice, bytes.substr(metaGroupEnd(bytes)));
+  gdcm::Reader reader;
+  reader.SetFileName(slice.c_str());
+  ASSERT_TRUE(reader.Read());
+  ASSERT_EQ(reader.GetFile().GetHeader().GetDataSetTransferSyntax(),
+            gdcm::TransferSyntax::ExplicitVRLittleEndian);
+  const auto facts = walkDicomFile(dir_, slice);
+  ASSERT_TRUE(facts.has_value());
+  EXPECT_EQ(facts->seriesUid, kSeriesUid);
+  EXPECT_TRUE(facts->hasPixelData);
+  EXPECT_NE(refusal().find("slice IM2-4.dcm has no DICOM file meta header"), std::string::npos);
 }
 
 // A private sequence stored as UN of undefined length (what a converter makes of a sequence whose
