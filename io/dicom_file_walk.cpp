@@ -239,7 +239,11 @@ class ElementWalk {
   }
   void noteTopLevel(std::uint16_t group, std::uint16_t element, std::uint64_t valueAt,
                     std::uint64_t length) {
-    if (group == 0x0020 && element == 0x000e) facts_.seriesUid = value(valueAt, length);
+    // GDCM keeps the first of a repeated element (implicit VR files have no order to check).
+    if (group == 0x0020 && element == 0x000e && !seriesUidSeen_) {
+      facts_.seriesUid = value(valueAt, length);
+      seriesUidSeen_ = true;
+    }
     if (group == 0x7fe0 && element == 0x0010) facts_.hasPixelData = true;
   }
   // A short text value (a UID), without its padding; cut at 64 bytes, a UID's most.
@@ -300,6 +304,7 @@ class ElementWalk {
   std::string bytes_;       // the file's first kMaxWalkedBytes
   std::uint64_t fileSize_;  // what the lengths are checked against
   DicomFileFacts facts_;
+  bool seriesUidSeen_ = false;
   bool pixelRepresentationKnown_ = false;         // (0028,0103) was met at the top level
   std::optional<std::uint32_t> lastTopLevelTag_;  // the tag before, (group << 16 | element)
 };

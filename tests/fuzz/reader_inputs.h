@@ -19,6 +19,7 @@
 #include "io/tf_file.h"
 #include "io/volume_reader.h"
 #include "render/recipe_json.h"
+#include "tests/fuzz/gdcm_agreement.h"
 #include "tests/fuzz/metaio_agreement.h"
 #include "tests/fuzz/nifti_agreement.h"
 #include "tests/fuzz/teem_agreement.h"
@@ -119,6 +120,7 @@ inline const ReaderTarget kIoReaderTargets[] = {
      [](FuzzInput& input) {
        const std::filesystem::path folder = emptyFolder(input, "input-slice");
        const std::filesystem::path file = writeInputFile(folder / "input.dcm", input.bytes);
+       requireGdcmAgrees(file);
        try {
          readVolume(file, collectingReadWarnings(input));
        } catch (const std::exception& error) {
