@@ -58,15 +58,18 @@ inline std::string metaIoSummary(MetaImageWithSizes& image) {
 }
 
 // Where LOCAL voxel data start for io/ (MetaImageHeader::dataStart) and for MetaIO (its stream after
-// the header), as " data at N", or "" where io/ leaves the voxels to MetaIO (voxel_data_layout.h).
-inline std::string localDataStarts(const std::filesystem::path& file, const MetaImageHeader& header,
-                                   std::string& metaIo) {
-  if (header.field("ElementDataFile") != "LOCAL" || !header.dataStart) return "";
+// the header), each as " data at N"; both "" where the header has no LOCAL data start.
+struct DataStarts {
+  std::string ours, metaIo;
+};
+
+inline DataStarts localDataStarts(const std::filesystem::path& file, const MetaImageHeader& header) {
+  if (header.field("ElementDataFile") != "LOCAL" || !header.dataStart) return {};
   std::ifstream stream(file, std::ios::binary);
   MetaImage image;
-  if (!image.ReadStream(0, &stream, false)) return "";
-  metaIo += " data at " + std::to_string(static_cast<long long>(stream.tellg()));
-  return " data at " + std::to_string(*header.dataStart);
+  if (!image.ReadStream(0, &stream, false)) return {};
+  return {" data at " + std::to_string(*header.dataStart),
+          " data at " + std::to_string(static_cast<long long>(stream.tellg()))};
 }
 
 // An axis whose spacing (ElementSpacing, as ITK takes it) or origin MetaIO read unusable, or "".
@@ -88,8 +91,9 @@ inline void requireMetaIoAgrees(const std::filesystem::path& file, const MetaIma
   }
   MetaImageWithSizes image;
   if (!image.Read(file.c_str(), false)) return;  // MetaIO refuses it too
-  std::string metaIo = metaIoSummary(image) + badGeometry(image);
-  const std::string ours = ourSummary(header) + localDataStarts(file, header, metaIo);
+  const DataStarts starts = localDataStarts(file, header);
+  const std::string metaIo = metaIoSummary(image) + badGeometry(image) + starts.metaIo;
+  const std::string ours = ourSummary(header) + starts.ours;
   if (ours == metaIo) return;
   std::fprintf(stderr, "MetaIO reads the header otherwise:\n  ours:   %s\n  MetaIO: %s\n", ours.c_str(),
                metaIo.c_str());
