@@ -23,7 +23,7 @@ void requireCompleteNrrdData(const std::filesystem::path& file, const VoxelDataL
 
 // The same for NRRD data as text or hex (other encodings pass), which teem allocates the volume
 // for before parsing: text takes a digit and a separator per value (but the last), hex two digits
-// per byte.
+// per byte (line and byte skips only make the data shorter).
 void requireCompleteNrrdText(const std::filesystem::path& file, const NrrdDataStart& start,
                              const StoredDataSize& size);
 

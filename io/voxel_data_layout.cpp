@@ -74,8 +74,6 @@ std::optional<NrrdDataStart> nrrdStart(const std::filesystem::path& file, const 
     return line.kind == NrrdLineKind::unknown;
   });
   if (unreadable) return std::nullopt;  // teem refuses it
-  for (const char* skip : {"lineskip", "byteskip"})
-    if (!header.field(skip).empty() && header.field(skip) != "0") return std::nullopt;
   NrrdDataStart start;
   start.encoding = header.field("encoding", true);
   const std::string dataFile = header.field("datafile");
@@ -94,6 +92,8 @@ std::optional<NrrdDataStart> nrrdStart(const std::filesystem::path& file, const 
 std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, const NrrdHeader& header) {
   const auto start = nrrdStart(file, header);
   if (!start) return std::nullopt;
+  for (const char* skip : {"lineskip", "byteskip"})
+    if (!header.field(skip).empty() && header.field(skip) != "0") return std::nullopt;
   VoxelDataLayout layout;
   if (start->encoding == "gzip" || start->encoding == "gz") {
     layout.encoding = VoxelEncoding::deflate;

@@ -44,8 +44,8 @@ std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file
 // too): raw or gzip, attached or in one data file; nothing for skips, lists and other encodings.
 std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file);
 
-// Where a NRRD's voxel data start in any encoding (attached or in one data file), and the
-// encoding as the header names it ("ascii", "hex", ...); nothing for skips and lists.
+// Where a NRRD's voxel data start in any encoding (attached or in one data file), before any line
+// or byte skip, and the encoding as the header names it ("ascii", "hex", ...); nothing for lists.
 struct NrrdDataStart {
   std::filesystem::path dataFile;
   std::uint64_t fileOffset = 0;
