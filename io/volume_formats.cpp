@@ -1,6 +1,8 @@
 #include "io/volume_formats.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include <itkMetaImageIO.h>
 #include <itkNiftiImageIO.h>
@@ -65,14 +67,36 @@ std::string componentTypeName(itk::IOComponentEnum type) {
   }
 }
 
+namespace {
+
+// Of teem's chain of messages, outermost first ("[nrrd] nrrdLoad: trouble reading ...\n[nrrd]
+// _nrrdHeaderCheck: type (short) and encoding (bzip2) require endian info"), the innermost one
+// that says something, without its function name: the one that names the problem.
+std::optional<std::string> innermostTeemMessage(const std::string& text) {
+  const std::string marker = "[nrrd] ";
+  for (std::size_t at = text.rfind(marker); at != std::string::npos;
+       at = at == 0 ? std::string::npos : text.rfind(marker, at - 1)) {
+    std::string message = text.substr(at + marker.size());
+    message = message.substr(0, message.find('\n'));
+    const std::size_t colon = message.find(':');
+    if (colon != std::string::npos && message.find(' ') > colon) message.erase(0, colon + 1);
+    if (message.find_first_not_of(" \t\r") != std::string::npos) return message;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::string oneLine(const itk::ExceptionObject& error) {
   std::string text = error.GetDescription();
-  // itkExceptionMacro prefixes "ITK ERROR: ClassName(0x55d0...): ", which means nothing to users.
-  const std::string prefix = "ITK ERROR: ";
-  if (text.compare(0, prefix.size(), prefix) == 0) {
+  // itkExceptionMacro prefixes "ITK ERROR: ClassName(0x55d0...): " (or "itk::ERROR: ..."), which
+  // means nothing to users.
+  for (const std::string prefix : {"ITK ERROR: ", "itk::ERROR: "}) {
+    if (text.compare(0, prefix.size(), prefix) != 0) continue;
     const auto end = text.find("): ");
     text = end == std::string::npos ? text.substr(prefix.size()) : text.substr(end + 3);
   }
+  if (const auto teem = innermostTeemMessage(text)) text = *teem;
   std::replace(text.begin(), text.end(), '\n', ' ');
   std::replace(text.begin(), text.end(), '\r', ' ');
   // Collapse runs of spaces and trim.

@@ -237,7 +237,7 @@ const BadInput kFiles[] = {
      "NRRD0004\ntype: uchar\ndimension: 2\nsizes: 2 2\nencoding: ascii\n\n1 2 3 4\n"},
     {RENDER("v.nrrd"), "v.nrrd", "cannot be read", "v.nrrd",
      "NRRD0004\ntype: quaternion\ndimension: 3\nsizes: 2 2 2\nencoding: ascii\n\n1 2 3 4 5 6 7 8\n"},
-    {RENDER("v.nrrd"), "v.nrrd", "cannot be read", "v.nrrd",
+    {RENDER("v.nrrd"), "v.nrrd", "as text cannot hold the 8 values", "v.nrrd",
      "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\nencoding: ascii\n\n1 2 3\n"},
     {RENDER("v.nrrd"), "v.nrrd", "not a valid NRRD", "v.nrrd", ""},
     {RENDER("v.nrrd"), "v.nrrd", "not a valid NRRD", "v.nrrd", "hello, world\n"},

@@ -818,6 +818,15 @@ TEST_F(VolumeReaderTest, NrrdFieldLinesTeemWouldOverflowOnAreRefusedBeforeIt) {
   expectInputError(dir_ / "nul.nrrd", "header line 5 has 3006 characters");
 }
 
+// Teem reports a chain of messages, outermost first ("nrrdLoad: trouble reading ... nrrdRead:
+// trouble ..."); the innermost names the problem, and it is what the user reads.
+TEST_F(VolumeReaderTest, TeemsProblemIsItsInnermostMessage) {
+  writeText(dir_ / "endian.nrrd",
+            "NRRD0004\ntype: short\ndimension: 3\nsizes: 2 2 2\nencoding: bzip2\n\n12");
+  expectInputError(dir_ / "endian.nrrd",
+                   "endian.nrrd: cannot be read: type (short) and encoding (bzip2) require endian info");
+}
+
 // Teem allocates the volume before it parses text or hex data: a value as text takes a digit and
 // a separator (the last one a digit), a byte as hex two digits.
 TEST_F(VolumeReaderTest, NrrdTextOrHexTooShortForItsVolumeIsRefused) {
