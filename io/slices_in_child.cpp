@@ -44,6 +44,10 @@ bool writeAll(int fd, const void* data, std::size_t bytes) {
   // What the libraries print about a damaged stream (libjpeg's "Corrupt JPEG data", the failed
   // assertion) would surround the one line the parent reports: the child's stderr goes nowhere.
   if (const int nowhere = ::open("/dev/null", O_WRONLY); nowhere >= 0) ::dup2(nowhere, STDERR_FILENO);
+  // A codec's failed assertion ends the child by SIGABRT, which the parent reports as the slice's
+  // failure; a handler the process installed for its own aborts (a crash reporter, a fuzzer's
+  // crash dump) has nothing to do with it.
+  std::signal(SIGABRT, SIG_DFL);
   std::vector<Voxel> voxels(voxelsPerSlice);
   for (std::size_t k = 0; k < count; ++k) {
     FrameHeader header;
