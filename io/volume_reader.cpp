@@ -111,6 +111,9 @@ VolumeGeometry storedGeometry(const std::filesystem::path& file, const itk::Imag
   if (used < 3 || extent < 3)
     throw InputError(file, "is " + std::to_string(std::max<std::size_t>(extent, 1)) + "-D (" +
                                dimsText(dims) + " voxels); need a 3-D scalar volume");
+  if (io.GetPixelType() == itk::IOPixelEnum::UNKNOWNPIXELTYPE ||
+      io.GetComponentType() == itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE)
+    throw InputError(file, "has voxels of an unknown type; need integer or floating-point voxels");
   if (io.GetNumberOfComponents() != 1 || io.GetPixelType() != itk::IOPixelEnum::SCALAR)
     throw InputError(file, "has " + std::to_string(io.GetNumberOfComponents()) + "-component " +
                                itk::ImageIOBase::GetPixelTypeAsString(io.GetPixelType()) +

@@ -434,6 +434,14 @@ TEST_F(VolumeReaderTest, CompressedMetaImageDataTooShortForItsVolumeIsRefused) {
                    "is truncated: its 100 bytes of compressed voxel data cannot hold the 524288 bytes");
 }
 
+TEST_F(VolumeReaderTest, AnUnknownVoxelTypeIsNamedSo) {
+  writeText(dir_ / "type.mha",
+            "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_FOO\n"
+            "ElementDataFile = LOCAL\nabcdefghabcdefgh");
+  expectInputError(dir_ / "type.mha",
+                   "has voxels of an unknown type; need integer or floating-point voxels");
+}
+
 // A header that ends the file (no line end after ElementDataFile) has no voxel data at all.
 TEST_F(VolumeReaderTest, MetaImageHeaderEndingTheFileIsTruncated) {
   writeText(dir_ / "header.mha",
