@@ -277,7 +277,7 @@ const BadInput kFiles[] = {
     {RENDER("v.mhd"), "v.mhd", "its data file 'missing.raw' cannot be read: No such file", "v.mhd",
      "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_UCHAR\nElementDataFile = "
      "missing.raw\n"},
-    {RENDER("v.mha"), "v.mha", "scalar volume", "v.mha",
+    {RENDER("v.mha"), "v.mha", "unknown type", "v.mha",
      "ObjectType = Image\nNDims = 3\nDimSize = 2 2 2\nElementType = MET_FROBNICATE\nElementDataFile = "
      "LOCAL\nabcdefgh"},
     {RENDER("v.mha"), "v.mha", "component", "v.mha",
