@@ -95,6 +95,10 @@ class ElementWalk {
       }
       if (length == 0xffffffffu) {  // undefined: a sequence or encapsulated data, walked into
         if (inMeta) fail(group, elementNumber, "has an undefined length in the file meta group");
+        // PS3.5 7.1.3; GDCM asserts on any other VR (gdcm::ExplicitDataElement::ReadValue).
+        if (current.explicitVr && !undefinedLengthAllowed(element.vr))
+          fail(group, elementNumber,
+               "has an undefined length with VR " + element.vr + " (only SQ, UN, OB and OW may)");
         const bool pixels = group == 0x7fe0 && elementNumber == 0x0010;
         // A sequence of unknown VR holds an implicit VR little endian data set (PS3.5 6.2.2).
         const bool unknown = current.explicitVr && element.vr == "UN";
@@ -261,6 +265,9 @@ class ElementWalk {
     for (const char* candidate : kVrs)
       if (vr == candidate) return true;
     return false;
+  }
+  static bool undefinedLengthAllowed(const std::string& vr) {
+    return vr == "SQ" || vr == "UN" || vr == "OB" || vr == "OW";
   }
   // GDCM's guess takes any name of its VR table, its "??" (an invalid VR) among them.
   static bool guessedExplicitVr(const std::string& vr) { return knownVr(vr) || vr == "??"; }

@@ -1,10 +1,11 @@
 #pragma once
 // The differential half of the dicom_slice fuzz target: a file the element walk accepts
-// (io/dicom_file_walk.h) must read the same in GDCM, the parser behind ITK's DICOM reader: the same
-// SeriesInstanceUID at the top level (what a folder's slices are grouped by) and the same answer
-// to whether it holds pixel data (what makes a file a slice). Where they differ the walk stepped
-// through other elements than GDCM does, so its length checks guarded other lengths than GDCM
-// then trusts. A disagreement is a finding: it aborts with both readings.
+// (io/dicom_file_walk.h) must read the same in GDCM, the parser behind ITK's DICOM reader, read as
+// the app reads a slice in its own process (up to the pixel data, io/dicom_slice_check.h; pixel
+// data are decoded in a child process): the same SeriesInstanceUID at the top level, what a
+// folder's slices are grouped by. Where they differ the walk stepped through other elements than
+// GDCM does, so its length checks guarded other lengths than GDCM then trusts. A disagreement is a
+// finding: it aborts with both readings.
 #include <gdcmReader.h>
 
 #include <algorithm>
@@ -19,10 +20,6 @@
 #include "io/shown_text.h"
 
 namespace angio::fuzz {
-
-inline std::string dicomSummary(const std::string& seriesUid, bool pixelData) {
-  return "series " + quotedText(seriesUid) + (pixelData ? ", pixel data" : ", no pixel data");
-}
 
 // GDCM's top-level SeriesInstanceUID as the walk keeps it: cut at 64 bytes (a UID's most), its
 // trailing NULs and spaces removed.
@@ -45,15 +42,14 @@ inline void requireGdcmAgrees(const std::filesystem::path& file) {
   }
   // Not DICOM, or refused by what it is before GDCM reads it.
   if (!facts || !facts->imageProblem.empty()) return;
+  const gdcm::Tag pixelData(0x7fe0, 0x0010);
   gdcm::Reader reader;
   reader.SetFileName(file.c_str());
-  if (!reader.Read()) return;  // GDCM refuses it too
-  const gdcm::DataSet& set = reader.GetFile().GetDataSet();
-  const std::string ours = dicomSummary(facts->seriesUid, facts->hasPixelData);
-  const std::string gdcm =
-      dicomSummary(gdcmSeriesUid(set), set.FindDataElement(gdcm::Tag(0x7fe0, 0x0010)));
+  if (!reader.ReadUpToTag(pixelData, {pixelData})) return;  // GDCM refuses it too
+  const std::string ours = quotedText(facts->seriesUid);
+  const std::string gdcm = quotedText(gdcmSeriesUid(reader.GetFile().GetDataSet()));
   if (ours == gdcm) return;
-  std::fprintf(stderr, "GDCM reads the file otherwise:\n  ours: %s\n  GDCM: %s\n", ours.c_str(),
+  std::fprintf(stderr, "GDCM reads the series UID otherwise:\n  ours: %s\n  GDCM: %s\n", ours.c_str(),
                gdcm.c_str());
   std::abort();
 }

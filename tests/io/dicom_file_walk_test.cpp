@@ -219,6 +219,23 @@ TEST_F(DicomFileWalkTest, ABareExplicitVrDataSetIsWalkedAsGdcmReadsIt) {
   EXPECT_NE(refusal().find("slice IM2-4.dcm has no DICOM file meta header"), std::string::npos);
 }
 
+// Only SQ, UN, OB and OW elements may have an undefined length (PS3.5 7.1.3); GDCM's reader
+// asserts on any other (a fuzzed slice's encapsulated pixel data as OF stopped the process).
+TEST_F(DicomFileWalkTest, AnUndefinedLengthWithAnotherVrIsRefused) {
+  const fs::path slice = series();
+  test_support::recompressDicomSlice(slice, gdcm::TransferSyntax::JPEGLosslessProcess14_1);
+  std::string bytes = fileBytes(slice);
+  const std::string pixels = littleEndian(0x7fe0, 2) + littleEndian(0x0010, 2) + "OB";
+  const std::size_t at = bytes.find(pixels);
+  ASSERT_NE(at, std::string::npos);
+  ASSERT_EQ(bytes.substr(at + 8, 4), littleEndian(0xffffffffu, 4));
+  EXPECT_TRUE(walkDicomFile(dir_, slice).has_value());
+  bytes.replace(at + 4, 2, "OF");
+  overwrite(slice, bytes);
+  EXPECT_NE(refusal().find("slice IM2-4.dcm: element (7fe0,0010) has an undefined length with VR OF"),
+            std::string::npos);
+}
+
 // A private sequence stored as UN of undefined length (what a converter makes of a sequence whose
 // tag it does not know) holds an implicit VR data set even in an explicit VR file (PS3.5 6.2.2):
 // the walk reads its items so, and the series loads.
