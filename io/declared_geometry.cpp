@@ -153,10 +153,11 @@ void checkNrrd(const fs::path& file) {
     if (hasNul) throw InputError(file, "header line " + std::to_string(line.number) + " has a NUL byte");
     const std::string& key = line.name;
     const std::string& value = line.value;
-    // ITK keeps sizes as unsigned int; teem allocates what the header says.
+    // ITK keeps sizes as unsigned int; teem allocates what the header says, and reads a size up to
+    // the first character that is not a digit ("5~" is 5, "99496765535rr0" is 99496765535).
     if (key == "sizes")
       for (const double size : numbersIn(value))
-        if (size > double(std::numeric_limits<int>::max()))
+        if (!(size >= 1 && size <= double(std::numeric_limits<int>::max()) && size == std::floor(size)))
           throw InputError(file, "has impossible dimensions (sizes: " + shownText(value) + ")");
     if (key == "spacings") {
       // Axes past the third are not spatial (NaN is NRRD's "no spacing" for them).

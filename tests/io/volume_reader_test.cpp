@@ -933,6 +933,14 @@ TEST_F(VolumeReaderTest, NrrdFieldsAreCheckedAsTeemReadsThem) {
                                     "spacedirections: (0,0,0) (0,1,0) (0,0,1)\n\n" +
                                     std::string(16000, '\0'));
   expectInputError(dir_ / "axes.nrrd", "has a zero-length axis in space directions");
+  // Teem reads a size up to the first character that is not a digit: this was 6 5 994967655352.
+  writeText(dir_ / "sizes.nrrd",
+            "NRRD0004\ntype: short\ndimension: 3\nsizes: 6 5~ 994967655352rr0\n"
+            "encoding: ascii\n\n3 2 3\n");
+  const std::optional<fuzz::TeemReading> sizes = fuzz::TeemHeaderRead(dir_ / "sizes.nrrd").reading();
+  ASSERT_TRUE(sizes.has_value());
+  EXPECT_EQ(sizes->sizes, "6 5 994967655352");
+  expectInputError(dir_ / "sizes.nrrd", "has impossible dimensions (sizes: 6 5~ 994967655352rr0)");
   // Teem reads a vector's component up to the first character that is not part of a number.
   writeText(dir_ / "garbled.nrrd", header +
                                        "space: left-posterior-superior\n"
