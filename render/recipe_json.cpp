@@ -12,6 +12,7 @@
 #include "io/atomic_write.h"
 #include "io/json_text.h"
 #include "io/sampling_json.h"
+#include "io/shown_text.h"
 #include "io/input_error.h"
 #include "io/tf_file.h"
 #include "io/vessel_glyph_json.h"
@@ -23,6 +24,12 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
 namespace {
+
+// "\"key\" has unknown value 'value'", the value shown on one line (control bytes escaped).
+std::string unknownValue(const std::string& key, const std::string& value) {
+  std::string message = "\"" + key + "\" has unknown value ";
+  return message + quotedText(value);
+}
 
 constexpr int kSidecarVersion = 1;
 
@@ -120,7 +127,7 @@ struct Reader {
               const std::string& where = "") const {
     const std::string value = text(object, key, where);
     const auto parsed = parse(value);
-    if (!parsed) throw InputError(source, "\"" + where + key + "\" has unknown value '" + value + "'");
+    if (!parsed) throw InputError(source, unknownValue(where + key, value));
     return *parsed;
   }
   TransferFunction tf(const Json& object, const std::string& key, const std::string& where = "") const {
@@ -180,8 +187,7 @@ HybridCprRecipe readHybrid(const Reader& r, const Json& json) {
   const std::string display = r.text(json, "display", where);
   if (display == "grey")
     hybrid.grey = WindowLevel{r.number(json, "window", where), r.number(json, "level", where)};
-  else if (display != "tf")
-    throw InputError(r.source, "\"hybrid_cpr.display\" has unknown value '" + display + "'");
+  else if (display != "tf") throw InputError(r.source, unknownValue("hybrid_cpr.display", display));
   return hybrid;
 }
 
@@ -272,7 +278,7 @@ RenderParams readParams(const Reader& r, const Json& json) {
   p.shading.kd = r.number(shading, "kd", "shading.");
   const std::string compositing = r.text(json, "compositing");
   if (compositing != "dvr" && compositing != "mip")
-    throw InputError(r.source, "\"compositing\" has unknown value '" + compositing + "'");
+    throw InputError(r.source, unknownValue("compositing", compositing));
   p.compositing = compositing == "mip" ? Compositing::mip : Compositing::dvr;
   const Json& mip = r.at(json, "mip", "");
   p.mip.window = r.number(mip, "window", "mip.");
@@ -394,7 +400,7 @@ RenderRecipe parseRenderSidecar(const std::string& text, const fs::path& source)
   if (!r.at(json, "quality", "").is_null()) s.quality = r.choice(json, "quality", parseQuality);
   const std::string raycaster = r.text(json, "raycaster");
   if (raycaster != "fast" && raycaster != "reference")
-    throw InputError(source, "\"raycaster\" has unknown value '" + raycaster + "'");
+    throw InputError(source, unknownValue("raycaster", raycaster));
   s.raycaster = raycaster == "reference" ? Raycaster::reference : Raycaster::fast;
   s.params = readParams(r, json);
   s.tf = r.tf(json, "tf");
