@@ -127,6 +127,16 @@ std::vector<ApproximationRow> runApproximationBench(const Volume& volume, const 
         rows.push_back(row(level.name, q, approximate, exact, converged));
         report(rows.back());
       }
+    for (const ImageRefinement& refinement : settings.refinement) {
+      frames.refinement = refinement;
+      rows.push_back(
+          row(level.name, p, renderFrames(frames, scene, p, settings.angles), exact, converged));
+      frames.refinement.reset();
+      char name[64];
+      std::snprintf(name, sizeof name, "refined L%d, tol %g", refinement.levels, refinement.tolerance);
+      rows.back().technique = name;
+      report(rows.back());
+    }
     for (const AdaptiveSampling& adaptive : settings.adaptiveSampling) {
       RenderParams q = p;
       q.sampling.adaptiveSampling = adaptive;

@@ -3,12 +3,14 @@
 // seeds' adaptive techniques): for each level, frames at the level's own osd and at larger ones,
 // exact and pre-integrated, each timed (median, min, max over the angles), its samples counted and
 // its image compared (PSNR over the 8-bit output) with the exact image at the level's osd and with
-// the converged one (exact at a quarter of the level's osd: what a finer osd tends to). Adaptive
+// the converged one (exact at a quarter of the level's osd: what a finer osd tends to). Image-plane
+// refinement rows (core/image_refinement.h) refine the level's exact frames. Adaptive
 // integration rows (seed 000 sec. 4.3) use the level's filter and isd and no osd. The angles are the
 // frame bench's plus 15 degrees, so that no view is axis-aligned.
 #include <string>
 #include <vector>
 
+#include "core/image_refinement.h"
 #include "core/render_params.h"
 #include "core/transfer_function.h"
 #include "core/volume.h"
@@ -28,6 +30,8 @@ struct ApproximationSettings {
   // Adaptive sampling rows (core/adaptive_sampling.h) per level: these levels and oracle
   // tolerances, each a row; the oracle is made ahead (its time is reported apart, once per TF).
   std::vector<AdaptiveSampling> adaptiveSampling = {{3, 3, 0.02}, {3, 6, 0.02}, {3, 6, 0.1}};
+  // Image-plane refinement rows (core/image_refinement.h) per level: these levels and tolerances.
+  std::vector<ImageRefinement> refinement = {{2, 0.02}, {2, 0.1}, {3, 0.05}, {4, 0.3}};
 };
 
 struct ApproximationRow {

@@ -101,7 +101,13 @@ int runBench(const BenchOptionsCli& options) {
     settings.threads = options.threads;
     settings.levels = options.levels;
     if (options.skipAdaptive || options.onlyAdaptiveSampling) settings.adaptive.clear();
-    if (options.onlyAdaptiveSampling) settings.osdScales = {1};  // exact and pre-integrated
+    if (options.onlyAdaptiveSampling || options.onlyRefinement)
+      settings.osdScales = {1};  // exact and pre-integrated
+    if (options.onlyAdaptiveSampling) settings.refinement.clear();
+    if (options.onlyRefinement) {
+      settings.adaptive.clear();
+      settings.adaptiveSampling.clear();
+    }
     std::printf("%s", formatApproximationBench(runApproximationBench(volume, tf, settings)).c_str());
     return 0;
   }

@@ -127,6 +127,7 @@ struct BenchOptionsCli {
   bool tiles = false;         // time only the slice tiles' summaries (bench/tile_bench.h)
   bool skipAdaptive = false;  // --approximations without the adaptive integration rows
   bool onlyAdaptiveSampling = false;  // --approximations: only the adaptive sampling rows
+  bool onlyRefinement = false;        // --approximations: only the image refinement rows
   bool approximations = false;  // time and compare the approximations (bench/approximation_bench.h)
 };
 int runBench(const BenchOptionsCli& options);

@@ -255,6 +255,9 @@ void addBench(CLI::App& app, angio::BenchOptionsCli& o) {
   cmd->add_flag("--only-adaptive-sampling", o.onlyAdaptiveSampling,
                 "With --approximations: only the adaptive sampling rows, with the level's exact and "
                 "pre-integrated rows at its own osd");
+  cmd->add_flag("--only-refinement", o.onlyRefinement,
+                "With --approximations: only the image refinement rows, with the level's exact and "
+                "pre-integrated rows at its own osd");
   cmd->add_flag("--approximations", o.approximations,
                 "Time only the approximations against the exact images: per level, osd x1 ... x4 "
                 "post- and pre-integrated, PSNR against the level's exact image and the converged "

@@ -45,6 +45,14 @@ struct Frame {
   bool clipped = false;  // a crop box, clip plane or slab cuts the rays (params.clipping)
   // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
   const TfTable* anyRegionTf = nullptr;
+  const std::vector<std::uint8_t>* pixels = nullptr;  // FastRenderOptions::pixels
+
+  bool wanted(int x, int y) const { return !pixels || (*pixels)[std::size_t(y) * view.width + x] != 0; }
+  bool rowWanted(int y) const {
+    if (!pixels) return true;
+    const auto row = pixels->begin() + std::ptrdiff_t(y) * view.width;
+    return std::any_of(row, row + view.width, [](std::uint8_t p) { return p != 0; });
+  }
 
   // The uncorrected TF of a region, for visibility queries (nullptr: clipped).
   const TfTable* tfOf(Region region) const {
@@ -163,9 +171,14 @@ std::vector<RowBundle> rowBundles(const Frame& f) {
   std::vector<RowBundle> bundles;
   int lastKey = -1;
   for (int y = 0; y < f.view.height; ++y) {
+    if (!f.rowWanted(y)) {  // not rendered, and the rows around it are no longer consecutive
+      lastKey = -1;
+      continue;
+    }
     const RowPlace place = rowPlace(f, y);
     RowBundle* last = bundles.empty() ? nullptr : &bundles.back();
-    if (last && !place.outside && !last->outside && place.key == lastKey && last->rows < maxRows) {
+    if (last && !place.outside && !last->outside && place.key == lastKey && last->rows < maxRows &&
+        last->firstRow + last->rows == y) {
       last->fracA[last->rows++] = place.fracA;
       last->lanes = distinctRays ? last->rows : 1;
       continue;
@@ -439,8 +452,18 @@ template <class Sampler>
 struct RowScratch {
   RowTiles tiles;
   std::vector<std::optional<BundleRay<Sampler>>> rays;
-  RayProfile profile;  // Mode::profile: this worker's counts
+  std::vector<std::uint8_t> columns;  // with FastRenderOptions::pixels: a row of the bundle wants it
+  RayProfile profile;                 // Mode::profile: this worker's counts
 };
+
+// With FastRenderOptions::pixels: the columns with a wanted pixel in some row of the bundle.
+template <class Sampler>
+void markWantedColumns(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& scratch) {
+  if (!f.pixels) return;
+  scratch.columns.assign(f.view.width, 0);
+  for (int r = 0; r < bundle.rows; ++r)
+    for (int x = 0; x < f.view.width; ++x) scratch.columns[x] |= f.wanted(x, bundle.firstRow + r);
+}
 
 // MIP: may the tile (or group) change a pixel of the bundle's column, that is, hold something
 // denser than the smallest maximum so far?
@@ -552,6 +575,7 @@ void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampl
   for (int r = 0; r < bundle.rows; ++r) {
     const int y = bundle.firstRow + r, l = std::min(r, bundle.lanes - 1);
     for (int x = 0; x < f.view.width; ++x) {
+      if (!f.wanted(x, y)) continue;
       const auto& b = scratch.rays[x];
       if (!b)
         image.at(x, y) = Mode::mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
@@ -591,13 +615,16 @@ template <class Mode, class Sampler>
 bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& scratch, Image& image,
                   std::uint64_t& samples) {
   if (bundle.outside) {
-    std::fill_n(&image.at(0, bundle.firstRow), std::size_t(f.view.width) * bundle.rows, glm::vec4(0.f));
+    for (int y = bundle.firstRow; y < bundle.firstRow + bundle.rows; ++y)
+      for (int x = 0; x < f.view.width; ++x)
+        if (f.wanted(x, y)) image.at(x, y) = glm::vec4(0.f);
     return true;
   }
   if (cancelRequested(f.options)) return false;
   // Every row of the bundle reads the first row's slices (nearest, trilinear) or a subset of them
   // (mean: the same nearest voxel), so its classification holds for all.
   classifyRow(f, bundle.qa, scratch.tiles);
+  markWantedColumns(f, bundle, scratch);
   auto& rays = scratch.rays;
   rays.resize(f.view.width);
   for (auto& ray : rays) ray.reset();
@@ -611,6 +638,7 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
       if (!state) {
+        if (f.pixels && !scratch.columns[visit.column]) continue;
         state.emplace(startColumn<Sampler>(f, bundle, int(visit.column)));
         if constexpr (Mode::profile) {
           state->profile = &scratch.profile;
@@ -741,6 +769,9 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.shareRows = options.shareRows;
   f.ownTfs = f.labels.ownsAny();
   f.clipped = params.clipping.any();
+  f.pixels = options.pixels;
+  if (f.pixels && f.pixels->size() != std::size_t(f.view.width) * f.view.height)
+    throw std::logic_error("renderFast: the pixel mask is not of the view's size");
   // Cell skipping pays only with several samples per cell: at osd 1 (about one sample per cell)
   // the test and leap cost more than the interpolation they save (`angioray bench` times both).
   f.skipCells = options.skipEmpty && options.skipCells && params.sampling.osd < 0.75;

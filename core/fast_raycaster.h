@@ -47,6 +47,10 @@ struct FastRenderOptions {
   // Count where the samples go (FastRenderStats::profile), for plain DVR frames; a separately
   // compiled path, so frames without it pay nothing.
   bool profile = false;
+  // Optional: render only the pixels whose entry is non-zero (row-major, the view's width x height;
+  // core/image_refinement.h); the others keep the values of `recycle`'s image, which must then be
+  // of the frame's size. Rows without such a pixel cost nothing, columns without one nearly nothing.
+  const std::vector<std::uint8_t>* pixels = nullptr;
 };
 
 struct FastRenderStats {

@@ -8,6 +8,7 @@
 
 #include "core/adaptive_integration.h"
 #include "core/adaptive_sampling.h"
+#include "core/image_refinement.h"
 #include "core/reference_raycaster.h"
 
 namespace angio {
@@ -141,7 +142,9 @@ Image FrameRenderer::render(const std::shared_ptr<const PreparedScene>& scene,
     options.cancel = control.cancel;
     options.recycle = control.recycle;
     options.rowsDone = control.rowsDone;
-    image = renderFast(volume_, *classification_, tables, params, options, &s);
+    image = refinement
+                ? renderRefined(volume_, *classification_, tables, params, *refinement, options, &s)
+                : renderFast(volume_, *classification_, tables, params, options, &s);
   }
   if (!s.cancelled) scene->finish(view, regions_, image);
   return image;

@@ -14,6 +14,7 @@
 #include "core/fast_raycaster.h"
 #include "core/sampling_oracle.h"
 #include "core/image.h"
+#include "core/image_refinement.h"
 #include "core/region_intervals.h"
 #include "core/render_params.h"
 #include "core/slice_tiles.h"
@@ -85,6 +86,9 @@ class FrameRenderer {
   // Which of the fast raycaster's techniques run (the bench switches them; the image is the same).
   // Its cancel, recycle and rowsDone come from each render's RenderControl.
   FastRenderOptions techniques;
+  // The bench's image-plane refinement of the fast raycaster's frames (core/image_refinement.h), for
+  // `bench --approximations` only: it did not pay (README), so no recipe or sidecar names it.
+  std::optional<ImageRefinement> refinement;
 
  private:
   // Whether some voxel carries a label: known from complete tiles, else read from the volume.
