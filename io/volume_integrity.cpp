@@ -26,6 +26,20 @@ namespace {
 
 constexpr std::uint64_t kMaxDeflateRatio = 1032;  // zlib's limit (zlib technical details)
 
+// Voxel data as text: every value takes a digit and a separator at least, the last one's separator
+// only where the reader needs it (MetaIO fails on a last value that ends the file; teem does not).
+struct TextDataBound {
+  std::uint64_t bytes = 0;
+  std::string fewest;  // "bytes of voxel data as text cannot hold the 8 values its header promises ..."
+};
+
+TextDataBound textDataBound(const StoredDataSize& size, bool lastNeedsSeparator) {
+  const std::uint64_t values = size.voxelBytes / std::max(1u, size.componentBytes);
+  return {values == 0 ? 0 : 2 * values - (lastNeedsSeparator ? 0 : 1),
+          "bytes of voxel data as text cannot hold the " + std::to_string(values) +
+              " values its header promises (2 bytes each at least)"};
+}
+
 // ---- MetaImage: LOCAL data follow the header; a data file may skip HeaderSize bytes.
 
 // The bytes of voxel data a MetaImage header promises; for text and for compressed data without a
@@ -38,10 +52,8 @@ struct PromisedData {
 PromisedData promisedMetaImageData(const std::filesystem::path& file, const MetaImageHeader& header,
                                    const StoredDataSize& size) {
   if (!header.flag("BinaryData", true)) {
-    // Text: every value takes a digit and a separator (MetaIO fails on a last value the file ends in).
-    const std::uint64_t values = size.voxelBytes / std::max(1u, size.componentBytes);
-    return {2 * values, "bytes of voxel data as text cannot hold the " + std::to_string(values) +
-                            " values its header promises (2 bytes each at least)"};
+    TextDataBound text = textDataBound(size, true);
+    return {text.bytes, std::move(text.fewest)};
   }
   if (!header.flag("CompressedData")) return {size.voxelBytes, ""};
   // MetaIO allocates as many bytes as it reads (a negative size wraps around to nearly 2^64).
@@ -162,15 +174,14 @@ void requireCompleteNrrdText(const std::filesystem::path& file, const NrrdDataSt
   const std::uint64_t fileBytes = std::filesystem::file_size(start.dataFile, error);
   if (error) return;  // teem says it cannot open it
   const std::uint64_t found = fileBytes > start.fileOffset ? fileBytes - start.fileOffset : 0;
-  const std::uint64_t values = size.voxelBytes / std::max(1u, size.componentBytes);
-  const std::uint64_t least = text ? (values ? 2 * values - 1 : 0) : 2 * size.voxelBytes;
-  if (found >= least) return;
-  const std::string held = text ? "text cannot hold the " + std::to_string(values) +
-                                      " values its header promises (2 bytes each at least)"
-                                : "hex cannot hold the " + std::to_string(size.voxelBytes) +
-                                      " bytes its header promises (2 digits each)";
+  const TextDataBound bound =
+      text ? textDataBound(size, false)
+           : TextDataBound{2 * size.voxelBytes, "bytes of voxel data as hex cannot hold the " +
+                                                    std::to_string(size.voxelBytes) +
+                                                    " bytes its header promises (2 digits each)"};
+  if (found >= bound.bytes) return;
   std::string message = "is truncated: its " + std::to_string(found);
-  message += " bytes of voxel data as " + held;
+  message += " " + bound.fewest;
   throw InputError(file, message);
 }
 

@@ -193,6 +193,7 @@ struct OpenedVolume {
   std::optional<VoxelDataLayout> layout;
 
   std::uint64_t storedBytes() const { return std::uint64_t(io->GetImageSizeInBytes()); }
+  StoredDataSize storedSize() const { return {storedBytes(), unsigned(io->GetComponentSize())}; }
 };
 
 // ITK's and the header checks' errors as InputErrors naming the file.
@@ -216,9 +217,8 @@ OpenedVolume openVolume(const std::filesystem::path& file) {
   opened.description = formatLabel + " " + componentTypeName(opened.componentType);
   withComponentType(opened.componentType, [](auto) { return 0; });  // rejects unusual types
   if (const auto format = volumeFormatOf(file)) {
-    const StoredDataSize size{opened.storedBytes(), unsigned(opened.io->GetComponentSize())};
-    requireCompleteData(file, *format, size);
-    opened.layout = voxelDataLayout(file, *format, size);
+    requireCompleteData(file, *format, opened.storedSize());
+    opened.layout = voxelDataLayout(file, *format, opened.storedSize());
   }
   return opened;
 }
@@ -234,12 +234,9 @@ void requireMemoryFor(const std::filesystem::path& file, const OpenedVolume& ope
 // teem allocates the whole volume before it finds its data short.
 void requireCompleteNrrd(const std::filesystem::path& file, const OpenedVolume& opened) {
   if (volumeFormatOf(file) != VolumeFormat::nrrd) return;
-  if (const auto place = nrrdDataPlace(file)) {
-    requireCompleteNrrdData(file, *place, opened.storedBytes());
-  } else if (const auto start = nrrdDataStart(file)) {
-    requireCompleteNrrdText(file, *start,
-                            {opened.storedBytes(), unsigned(opened.io->GetComponentSize())});
-  }
+  const NrrdData data = nrrdData(file);
+  if (data.place) requireCompleteNrrdData(file, *data.place, opened.storedBytes());
+  else if (data.start) requireCompleteNrrdText(file, *data.start, opened.storedSize());
 }
 
 // Reads a volume file's header and voxels as stored. `extraBytesPerVoxel` is what the caller will

@@ -89,8 +89,8 @@ std::optional<NrrdDataStart> nrrdStart(const std::filesystem::path& file, const 
   return start;
 }
 
-std::optional<VoxelDataLayout> nrrdPlace(const std::filesystem::path& file, const NrrdHeader& header) {
-  const auto start = nrrdStart(file, header);
+std::optional<VoxelDataLayout> nrrdPlace(const NrrdHeader& header,
+                                         const std::optional<NrrdDataStart>& start) {
   if (!start) return std::nullopt;
   for (const char* skip : {"lineskip", "byteskip"})
     if (!header.field(skip).empty() && header.field(skip) != "0") return std::nullopt;
@@ -111,7 +111,7 @@ std::optional<VoxelDataLayout> nrrdLayout(const std::filesystem::path& file,
   if (!header || header->crLineEnds) return std::nullopt;  // teem reads the voxels
   const std::string endian = header->field("endian", true);
   if (endian != "little" && !(endian.empty() && size.componentBytes == 1)) return std::nullopt;
-  return nrrdPlace(file, *header);
+  return nrrdPlace(*header, nrrdStart(file, *header));
 }
 
 // ---- NIfTI-1 single file: voxels at vox_offset (of the decompressed stream for .nii.gz).
@@ -146,14 +146,13 @@ std::optional<VoxelDataLayout> niftiLayout(const std::filesystem::path& file,
 
 }  // namespace
 
-std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file) {
+NrrdData nrrdData(const std::filesystem::path& file) {
   const auto header = readNrrdHeader(file);
-  return header ? nrrdPlace(file, *header) : std::nullopt;
-}
-
-std::optional<NrrdDataStart> nrrdDataStart(const std::filesystem::path& file) {
-  const auto header = readNrrdHeader(file);
-  return header ? nrrdStart(file, *header) : std::nullopt;
+  if (!header) return {};
+  NrrdData data;
+  data.start = nrrdStart(file, *header);
+  data.place = nrrdPlace(*header, data.start);
+  return data;
 }
 
 std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,

@@ -40,17 +40,21 @@ struct StoredDataSize {
 std::optional<VoxelDataLayout> voxelDataLayout(const std::filesystem::path& file, VolumeFormat format,
                                                const StoredDataSize& size);
 
-// Where a NRRD's voxel data lie, whatever their byte order (a layout only where io/ reads them
-// too): raw or gzip, attached or in one data file; nothing for skips, lists and other encodings.
-std::optional<VoxelDataLayout> nrrdDataPlace(const std::filesystem::path& file);
-
 // Where a NRRD's voxel data start in any encoding (attached or in one data file), before any line
-// or byte skip, and the encoding as the header names it ("ascii", "hex", ...); nothing for lists.
+// or byte skip, and the encoding as the header names it ("ascii", "hex", ...).
 struct NrrdDataStart {
   std::filesystem::path dataFile;
   std::uint64_t fileOffset = 0;
   std::string encoding;
 };
-std::optional<NrrdDataStart> nrrdDataStart(const std::filesystem::path& file);
+
+// From one reading of a NRRD header: where its data start (nothing for lists of files), and where
+// they lie whatever their byte order, as a layout only where io/ reads them too (raw or gzip, no
+// line or byte skips).
+struct NrrdData {
+  std::optional<NrrdDataStart> start;
+  std::optional<VoxelDataLayout> place;
+};
+NrrdData nrrdData(const std::filesystem::path& file);
 
 }  // namespace angio

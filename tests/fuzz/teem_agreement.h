@@ -2,7 +2,7 @@
 // The differential half of the volume_nrrd fuzz target: a NRRD header the checks before ITK accept
 // (checkDeclaredGeometry) must read the same in teem (ITK's NrrdIO) where it matters, since those
 // checks judge what io/nrrd_header.h reads: every size teem reads is one the checks bounded, every
-// spacing ITK takes from it is > 0, and where io/ places the voxel data (nrrdDataPlace: the
+// spacing ITK takes from it is > 0, and where io/ places the voxel data (nrrdData's place: the
 // truncation check, the voxels io/ decodes itself) is where teem reads them. A disagreement is a
 // finding: it aborts with both readings.
 #include <NrrdIO.h>
@@ -126,7 +126,7 @@ inline void requireTeemAgrees(const std::filesystem::path& file) {
   }
   const std::optional<TeemReading> teem = TeemHeaderRead(file).reading();
   if (!teem) return;
-  const std::optional<VoxelDataLayout> ours = nrrdDataPlace(file);
+  const std::optional<VoxelDataLayout> ours = nrrdData(file).place;
   if (teem->sizesFitInt && teem->badSpacing.empty() && placesAgree(ours, teem->place, file)) return;
   std::fprintf(stderr,
                "teem reads the header otherwise:\n  teem: sizes %s, data %s %s\n  ours: data %s\n",
