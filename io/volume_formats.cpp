@@ -87,6 +87,16 @@ std::optional<std::string> innermostTeemMessage(const std::string& text) {
 
 }  // namespace
 
+std::string readProblemInOurWords(const std::string& text) {
+  // Binary data too short are refused before MetaIO reads them (io/volume_integrity.h), so what
+  // reaches these is data as text with a word that is not a number, or too few numbers.
+  for (const char* metaIo : {"M_ReadElementsData: file stream is fail after read",
+                             "M_ReadElementsData: data not read completely"})
+    if (text.find(metaIo) != std::string::npos)
+      return "its voxel data end early or hold text that is not a number";
+  return text;
+}
+
 std::string oneLine(const itk::ExceptionObject& error) {
   std::string text = error.GetDescription();
   // itkExceptionMacro prefixes "ITK ERROR: ClassName(0x55d0...): " (or "itk::ERROR: ..."), which
@@ -107,7 +117,7 @@ std::string oneLine(const itk::ExceptionObject& error) {
   }
   while (!squeezed.empty() && squeezed.back() == ' ') squeezed.pop_back();
   if (squeezed.size() > 300) squeezed = squeezed.substr(0, 297) + "...";
-  return squeezed.empty() ? "unknown ITK error" : squeezed;
+  return squeezed.empty() ? "unknown ITK error" : readProblemInOurWords(squeezed);
 }
 
 }  // namespace angio

@@ -23,4 +23,8 @@ std::string componentTypeName(itk::IOComponentEnum type);
 // ITK's exception description squeezed onto one line (it may span several and name source files).
 std::string oneLine(const itk::ExceptionObject& error);
 
+// A library's message about voxel data it could not read, in our words where we know what it
+// means (MetaIO's for data as text), else unchanged.
+std::string readProblemInOurWords(const std::string& text);
+
 }  // namespace angio

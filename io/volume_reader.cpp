@@ -149,7 +149,7 @@ void readAllThroughItk(itk::ImageIOBase& io, char* out) {
   io.Read(out);
   // MetaIO says a decompression failed only on std::cerr, and leaves the voxels unset.
   if (const std::string text = errors.text(); !text.empty())
-    throw std::invalid_argument("cannot be read: " + text);
+    throw std::invalid_argument("cannot be read: " + readProblemInOurWords(text));
 }
 
 // A problem io/ found in the voxel data, naming their file when it is not the header's.

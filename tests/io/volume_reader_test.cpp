@@ -475,6 +475,10 @@ TEST_F(VolumeReaderTest, MetaImageTextTooShortForItsVolumeIsRefused) {
       "promises (2 bytes each at least)");
   writeText(dir_ / "huge.mha", header("6 5 99496729") + "1 2 3\n");
   expectInputError(dir_ / "huge.mha", "cannot hold the 2984901870 values");
+  // Long enough, but a word MetaIO cannot read as a number: said in our words, not MetaIO's.
+  writeText(dir_ / "word.mha", header("2 2 2") + "1 2 x 4 5 6 7 8 9\n");
+  expectInputError(dir_ / "word.mha",
+                   "cannot be read: its voxel data end early or hold text that is not a number");
 }
 
 TEST_F(VolumeReaderTest, LabelsOnTheSameGridGoToTheLabelBits) {
