@@ -20,6 +20,7 @@
 #include "io/atomic_write.h"
 #include "io/input_error.h"
 #include "io/number_text.h"
+#include "io/shown_text.h"
 
 namespace angio {
 
@@ -89,7 +90,7 @@ Encoding fileEncoding(const pugi::xml_node& root, const fs::path& source) {
   Encoding encoding;
   const std::string byteOrder = attribute(root, "byte_order", "LittleEndian");
   if (byteOrder != "LittleEndian" && byteOrder != "BigEndian") {
-    throw InputError(source, "unknown byte_order '" + byteOrder + "'");
+    throw InputError(source, "unknown byte_order " + quotedText(byteOrder));
   }
   const bool fileIsBig = byteOrder == "BigEndian";
   encoding.swapBytes = fileIsBig != (std::endian::native == std::endian::big);
@@ -97,13 +98,13 @@ Encoding fileEncoding(const pugi::xml_node& root, const fs::path& source) {
   if (headerType == "UInt64") {
     encoding.headerWordBytes = 8;
   } else if (headerType != "UInt32") {
-    throw InputError(source, "unsupported header_type '" + headerType + "'");
+    throw InputError(source, "unsupported header_type " + quotedText(headerType));
   }
   const std::string compressor = attribute(root, "compressor");
   if (compressor == "vtkZLibDataCompressor") {
     encoding.zlib = true;
   } else if (!compressor.empty()) {
-    throw InputError(source, "unsupported compressor '" + compressor + "' (only zlib)");
+    throw InputError(source, "unsupported compressor " + quotedText(compressor) + " (only zlib)");
   }
   return encoding;
 }
@@ -113,7 +114,7 @@ AppendedData appendedData(const pugi::xml_node& root, const SplitFile& split, co
   if (!element || !split.appended) return {};
   const std::string encoding = attribute(element, "encoding", "raw");
   if (encoding != "raw" && encoding != "base64") {
-    throw InputError(source, "unknown AppendedData encoding '" + encoding + "'");
+    throw InputError(source, "unknown AppendedData encoding " + quotedText(encoding));
   }
   return {true, encoding == "base64", *split.appended};
 }
@@ -370,7 +371,7 @@ std::vector<double> parseAsciiNumbers(std::string_view text, std::size_t expecte
     double value = 0;
     const auto [stop, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || stop != token.data() + token.size()) {
-      throw ArrayProblem("'" + std::string(token) + "' is not a number");
+      throw ArrayProblem(quotedText(token) + " is not a number");
     }
     values.push_back(value);
     position = end;
@@ -449,7 +450,7 @@ std::vector<double> readDataArray(const pugi::xml_node& array, std::size_t tuple
     }
     return decodeArray(array, tuples * components, context);
   } catch (const ArrayProblem& problem) {
-    throw InputError(context.source, "DataArray '" + name + "': " + problem.what());
+    throw InputError(context.source, "DataArray " + quotedText(name) + ": " + problem.what());
   }
 }
 
@@ -711,7 +712,8 @@ Centerlines parseCenterlinesVtp(const std::string& bytes, const fs::path& source
   const pugi::xml_node root = document.child("VTKFile");
   if (!root) throw InputError(source, "not a VTK XML file (no <VTKFile> element)");
   const std::string type = attribute(root, "type");
-  if (type != "PolyData") throw InputError(source, "VTK file of type '" + type + "', not PolyData");
+  if (type != "PolyData")
+    throw InputError(source, "VTK file of type " + quotedText(type) + ", not PolyData");
   const pugi::xml_node polyData = root.child("PolyData");
   if (!polyData) throw InputError(source, "no <PolyData> element");
 

@@ -409,6 +409,15 @@ std::vector<Broken> brokenVtps() {
       {"NoLines", writeVtp(noLines, style("", "binary")), "contains no centerline paths"},
       {"NotANumber", replaced(ascii, "format=\"ascii\">\n2 ", "format=\"ascii\">\ntwo "),
        "'two' is not a number"},
+      // Values from the file are shown with their control bytes escaped and long ones cut short.
+      {"ControlByteInAnAttribute",
+       replaced(ascii, "type=\"PolyData\"",
+                "type=\"Poly\x01"
+                "Data\""),
+       "VTK file of type 'Poly\\x01Data', not PolyData"},
+      {"LongWordInAscii",
+       replaced(ascii, "format=\"ascii\">\n2 ", "format=\"ascii\">\n" + std::string(5000, 'w') + " "),
+       "'" + std::string(80, 'w') + "...' is not a number"},
       {"CorruptZlib", corruptZlib, "DataArray 'Points': corrupt zlib block"},
       {"TruncatedBase64", truncated, "DataArray 'Points': data ends early"},
       {"InvalidBase64",
