@@ -615,6 +615,11 @@ template <class Mode, class Sampler>
 bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& scratch, Image& image,
                   std::uint64_t& samples) {
   if (bundle.outside) {
+    if (!f.pixels) {
+      std::fill_n(&image.at(0, bundle.firstRow), std::size_t(f.view.width) * bundle.rows,
+                  glm::vec4(0.f));
+      return true;
+    }
     for (int y = bundle.firstRow; y < bundle.firstRow + bundle.rows; ++y)
       for (int x = 0; x < f.view.width; ++x)
         if (f.wanted(x, y)) image.at(x, y) = glm::vec4(0.f);

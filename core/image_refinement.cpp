@@ -1,6 +1,7 @@
 #include "core/image_refinement.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "core/view_geometry.h"
@@ -84,8 +85,13 @@ class Refiner {
     return std::move(image_);
   }
 
+  // The cell's corner pixels: top left, top right, bottom left, bottom right.
+  std::array<glm::vec4, 4> corners(const PixelCell& c) {
+    return {at(c.x0, c.y0), at(c.x1, c.y0), at(c.x0, c.y1), at(c.x1, c.y1)};
+  }
+
   bool cornersAgree(const PixelCell& c) {
-    const glm::vec4 a = at(c.x0, c.y0), b = at(c.x1, c.y0), d = at(c.x0, c.y1), e = at(c.x1, c.y1);
+    const auto [a, b, d, e] = corners(c);
     const glm::vec4 lo = glm::min(glm::min(a, b), glm::min(d, e));
     const glm::vec4 hi = glm::max(glm::max(a, b), glm::max(d, e));
     const glm::vec4 spread = hi - lo;
@@ -94,7 +100,7 @@ class Refiner {
 
   // Bilinear interpolation of the corners into the cell's pixels not cast.
   void fill(const PixelCell& c) {
-    const glm::vec4 a = at(c.x0, c.y0), b = at(c.x1, c.y0), d = at(c.x0, c.y1), e = at(c.x1, c.y1);
+    const auto [a, b, d, e] = corners(c);
     const float w = float(c.x1 - c.x0), h = float(c.y1 - c.y0);
     for (int y = c.y0; y <= c.y1; ++y) {
       const float v = h > 0 ? float(y - c.y0) / h : 0.f;
