@@ -78,6 +78,7 @@ std::vector<Technique> techniques() {
       {"tiles", [](Switches& s, bool on) { s.options.skipTiles = on; }},
       {"cell skipping", [](Switches& s, bool on) { s.options.skipCells = on; }},
       {"row bundles", [](Switches& s, bool on) { s.options.shareRows = on; }},
+      {"sample batches", [](Switches& s, bool on) { s.options.batchSamples = on; }},
       {"ERT", [](Switches& s, bool on) { s.ert = on; }},
       {"threads", [](Switches& s, bool on) { s.threads = on; }},
   };

@@ -147,7 +147,7 @@ class Band {
     const ViewGeometry& v = s_.view;
     const double h = (px + 0.5 - v.width * 0.5) * v.pixelMm;
     const double u = (v.height * 0.5 - py - 0.5) * v.pixelMm;
-    return (v.centre + h * v.right + u * v.up) / s_.volume.spacing + double(k) * s_.stepQ;
+    return samplePosition((v.centre + h * v.right + u * v.up) / s_.volume.spacing, s_.stepQ, double(k));
   }
 
   // The bucket a pixel of level l with distance d waits in: the smallest j >= l with d < 2^(j+1)

@@ -105,6 +105,14 @@ class RegionCursor {
 // Interpolated density (>= 0) -> table entry: the nearest of the 4096 entries.
 inline int tableIndex(float density) { return std::min(int(density + 0.5f), kDensityLevels - 1); }
 
+// originQ + k stepQ with one rounding per axis (a fused multiply-add), whatever the compiler would
+// contract: every path that places samples (the raycasters, the fast one's SIMD lanes, adaptive
+// sampling) gets the same bits, so a ray through voxel boundaries rounds alike in all of them.
+inline glm::dvec3 samplePosition(const glm::dvec3& originQ, const glm::dvec3& stepQ, double k) {
+  return {std::fma(k, stepQ.x, originQ.x), std::fma(k, stepQ.y, originQ.y),
+          std::fma(k, stepQ.z, originQ.z)};
+}
+
 // Continuous voxel coordinates of the samples of one ray: q(k) = p(k delta) / spacing, written as
 // origin/spacing + k * (delta d / spacing) so a sample costs one multiply-add per axis.
 struct RaySamples {
@@ -113,7 +121,7 @@ struct RaySamples {
 
   RaySamples(const Volume& volume, const ViewGeometry& view, const glm::dvec3& originMm)
       : originQ(originMm / volume.spacing), stepQ(view.sampleMm * view.viewDir / volume.spacing) {}
-  glm::dvec3 at(long k) const { return originQ + double(k) * stepQ; }
+  glm::dvec3 at(long k) const { return samplePosition(originQ, stepQ, double(k)); }
 };
 
 inline float shadingFactor(const Shading& shading, glm::vec3 gradient, glm::vec3 viewDir) {

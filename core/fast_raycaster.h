@@ -7,6 +7,9 @@
 // together, so a cell's corners, transparency and gradients serve all of them (at the high level
 // several rows share a slice pair); cell transparency and the cell's gradients cached per ray
 // (core/ray_samplers.h); early ray termination; bundles in parallel (oneTBB, dynamic balance).
+// Plain DVR with the trilinear or mean filter reconstructs and classifies eight samples of a ray
+// at once in SIMD lanes, for every row of a bundle (core/sample_batch.h), and shades and
+// composites only the visible ones.
 // The view's clipping (crop box, clip plane, slab: core/clip_interval.h) gives each lane the
 // reference's sample range: it starts at its first sample and is finished after its last.
 // Every evaluated sample uses the reference's operations (core/compositing.h), so the image is the
@@ -37,6 +40,9 @@ struct FastRenderOptions {
                            // only where samples are dense (osd < 0.75), where it pays
   // Rows that read the same voxels rendered in one pass (row bundles, core/fast_raycaster.cpp).
   bool shareRows = true;
+  // Nearest and mean, plain DVR: eight samples of a ray reconstructed and classified at once in
+  // SIMD lanes (core/sample_batch.h).
+  bool batchSamples = true;
   const std::atomic<bool>* cancel = nullptr;  // checked per template column and per group of a row
   // Optional: an earlier frame whose pixel memory the new frame takes over (it is left empty).
   // Fresh memory for a frame costs page faults (the kernel clears every new page). A cancelled

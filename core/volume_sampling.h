@@ -88,8 +88,12 @@ inline Cell cellAt(const Volume& volume, glm::dvec3 q) {
   return cell;
 }
 
-inline float interpolate(float a, float b, float t) { return a + (b - a) * t; }
-inline glm::vec3 interpolate(const glm::vec3& a, const glm::vec3& b, float t) { return a + (b - a) * t; }
+// a + (b - a) t with one rounding (a fused multiply-add), whatever the compiler would contract:
+// the reference, the fast raycaster and its SIMD lanes (core/sample_batch.h) get the same bits.
+inline float interpolate(float a, float b, float t) { return std::fma(b - a, t, a); }
+inline glm::vec3 interpolate(const glm::vec3& a, const glm::vec3& b, float t) {
+  return {interpolate(a.x, b.x, t), interpolate(a.y, b.y, t), interpolate(a.z, b.z, t)};
+}
 
 // corner(dx, dy, dz) gives the value at base + (dx, dy, dz). The bilinear value in the cell's
 // plane dz: along x, then y.

@@ -8,7 +8,7 @@ packages=(
   clang libclang-rt-dev llvm
   libinsighttoolkit5-dev libgdcm-dev libopenimageio-dev openimageio-tools libopencv-dev
   libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libgtest-dev zlib1g-dev
-  libpugixml-dev libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev
+  libpugixml-dev libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev libxsimd-dev
 )
 
 missing=()

@@ -130,6 +130,49 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
   }
 }
 
+// Eight samples reconstructed and classified at once (core/sample_batch.h) against one by one: the
+// same bits for every filter, about every axis, shaded or not, and clipped by a crop box and a
+// plane tilted towards the rotation axis, which starts the rows of a bundle at different samples.
+// The volume's odd
+// voxel count and its faces exercise the batches' fallback to the scalar path.
+TEST(FastRenderOptions, SampleBatchesKeepTheImage) {
+  const Volume volume =
+      generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
+  ASSERT_EQ(volume.voxels.size() % 2, 1u);
+  const TfTable table = buildTable({"soft tissue and vessels",
+                                    {{-1024, {0, 0, 0}, 0},
+                                     {0, {0.8f, 0.4f, 0.3f}, 0.02f},
+                                     {200, {1, 0.2f, 0.2f}, 0.3f},
+                                     {600, {1, 1, 0.9f}, 0.8f}}});
+  for (Axis axis : {Axis::k, Axis::i, Axis::j}) {
+    const SliceTiles tiles = buildSliceTiles(volume, axis);
+    const TileClassification visible(tiles, singleTable(table), /*mip=*/false);
+    for (Filter filter : {Filter::nearest, Filter::mean, Filter::trilinear})
+      for (double osd : {1.0, 0.3})
+        for (int variant = 0; variant < 3; ++variant) {
+          RenderParams p;
+          p.axis = axis;
+          p.angleDeg = 33 + 41 * variant;
+          p.sampling = qualitySampling(Quality::high);
+          p.sampling.filter = filter;
+          p.sampling.osd = osd;
+          p.shading.enabled = variant != 1;
+          const glm::dvec3 extent = glm::dvec3(volume.dims - 1) * volume.spacing;
+          if (variant == 2) {
+            p.clipping.crop = CropBox{0.12 * extent, 0.83 * extent};
+            // Tilted towards every axis: the rows of a bundle start at different samples.
+            p.clipping.plane = ClipPlane{false, 0, 0.5 * extent, {0.5, -0.6, 0.7}};
+          }
+          FastRenderOptions oneByOne;
+          oneByOne.batchSamples = false;
+          const Image batched = renderFast(volume, visible, table, p);
+          ASSERT_TRUE(showsSomething(batched));
+          EXPECT_TRUE(renderFast(volume, visible, table, p, oneByOne).pixels == batched.pixels)
+              << toString(axis) << " filter " << int(filter) << " osd " << osd << " variant " << variant;
+        }
+  }
+}
+
 // Rows and bundles are split among threads as oneTBB likes; each pixel must not care.
 TEST(FastRenderOptions, SameBytesWhateverTheThreadCount) {
   const Scene scene;

@@ -1,0 +1,273 @@
+#pragma once
+// Eight consecutive samples of one ray reconstructed and classified at once: positions, voxels or
+// cells, densities, table entries and opacities, each in SIMD lanes and without a branch per
+// sample. Only the visible samples are then shaded and composited, one by one, in ray order
+// (core/fast_raycaster.cpp). The rows of a bundle share the in-plane positions and differ in the
+// trilinear fraction along the rotation axis a, so a batch classifies each row of the bundle from
+// one set of corner reads.
+//
+// xsimd (header-only, in Debian) gives one type per register width, so the same code builds for
+// AVX2 (8 floats, what -march=x86-64-v3 enables) and for SSE or NEON elsewhere. It has no
+// conversion between lane counts (4 doubles to 4 of 8 ints or floats), and its AVX2 gathers are
+// not reached (below): those few operations use AVX2's intrinsics where they exist.
+//
+// Every value is the scalar path's (core/volume_sampling.h): positions are samplePosition's (one
+// fused multiply-add per axis), the nearest voxel floor(q + 0.5) and the cell cellAt's, clamped to
+// the volume; the mean's seven densities are integers whose sum is exact in any order; trilinear
+// interpolates along x, then y, then z with interpolate's fused multiply-add; tableIndex truncates.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+#include <xsimd/xsimd.hpp>
+
+#include "core/compositing.h"
+#include "core/volume.h"
+#include "core/volume_sampling.h"
+
+namespace angio {
+
+using FloatLanes = xsimd::batch<float>;
+using IntLanes = xsimd::batch<std::int32_t>;
+using DoubleLanes = xsimd::batch<double>;
+constexpr int kBatchSamples = int(FloatLanes::size);
+static_assert(IntLanes::size == FloatLanes::size && DoubleLanes::size * 2 == FloatLanes::size,
+              "a batch is two halves of double lanes");
+
+// One row's classification of the batch's samples.
+struct RowClasses {
+  alignas(64) std::array<std::int32_t, kBatchSamples> entry{};  // tableIndex(density)
+  alignas(64) std::array<float, kBatchSamples> opacity{};       // the table's alpha there
+  std::uint32_t visible = 0;                                    // bit j: opacity[j] > 0
+};
+
+// The samples first .. first + count - 1 of one ray (count <= kBatchSamples; the lanes past count
+// repeat the last sample), classified for each row of a bundle.
+template <int Rows>
+struct SampleBatch {
+  long first = 0;
+  int count = 0;
+  std::array<RowClasses, Rows> rows;
+};
+
+// 0, 1, 2, ...: each lane's sample after the batch's first.
+alignas(64) constexpr std::array<double, kBatchSamples> kLaneNumbers = [] {
+  std::array<double, kBatchSamples> numbers{};
+  for (int j = 0; j < kBatchSamples; ++j) numbers[j] = j;
+  return numbers;
+}();
+
+// Integer-valued doubles below 2^31, two halves, as one batch of ints.
+inline IntLanes narrowToInt(const DoubleLanes& low, const DoubleLanes& high) {
+#if XSIMD_WITH_AVX2
+  return _mm256_set_m128i(_mm256_cvttpd_epi32(high), _mm256_cvttpd_epi32(low));
+#else
+  alignas(64) std::array<std::int32_t, kBatchSamples> lanes;
+  for (std::size_t j = 0; j < DoubleLanes::size; ++j) {
+    lanes[j] = std::int32_t(low.get(j));
+    lanes[j + DoubleLanes::size] = std::int32_t(high.get(j));
+  }
+  return IntLanes::load_aligned(lanes.data());
+#endif
+}
+
+// Gathers (xsimd 8.1's AVX2 gathers are never chosen: their enable_if cannot be deduced, so its
+// lane-by-lane fallback runs; the intrinsics here where AVX2 exists).
+inline IntLanes gatherInts(const std::int32_t* base, const IntLanes& index) {
+#if XSIMD_WITH_AVX2
+  return _mm256_i32gather_epi32(base, index, 4);
+#else
+  return IntLanes::gather(base, index);
+#endif
+}
+
+inline FloatLanes gatherFloats(const float* base, const IntLanes& index) {
+#if XSIMD_WITH_AVX2
+  return _mm256_i32gather_ps(base, index, 4);
+#else
+  return FloatLanes::gather(base, index);
+#endif
+}
+
+// Doubles, two halves, as one batch of floats (each rounded to nearest, as float(x) does).
+inline FloatLanes narrowToFloat(const DoubleLanes& low, const DoubleLanes& high) {
+#if XSIMD_WITH_AVX
+  return _mm256_set_m128(_mm256_cvtpd_ps(high), _mm256_cvtpd_ps(low));
+#else
+  alignas(64) std::array<float, kBatchSamples> lanes;
+  for (std::size_t j = 0; j < DoubleLanes::size; ++j) {
+    lanes[j] = float(low.get(j));
+    lanes[j + DoubleLanes::size] = float(high.get(j));
+  }
+  return FloatLanes::load_aligned(lanes.data());
+#endif
+}
+
+// The positions q of half a batch, per axis; `half` 0 or 1, lanes past count at the last sample.
+inline std::array<DoubleLanes, 3> halfPositions(const RaySamples& positions, long first, int count,
+                                                int half) {
+  const DoubleLanes lane = DoubleLanes::load_aligned(kLaneNumbers.data() + half * DoubleLanes::size);
+  const DoubleLanes k =
+      xsimd::min(DoubleLanes(double(first)) + lane, DoubleLanes(double(first + count - 1)));
+  std::array<DoubleLanes, 3> q;
+  for (int axis = 0; axis < 3; ++axis)
+    q[axis] = xsimd::fma(k, DoubleLanes(positions.stepQ[axis]), DoubleLanes(positions.originQ[axis]));
+  return q;
+}
+
+// Voxel (i, j, k) as an index into Volume::voxels, exact in doubles (below 2^53).
+inline DoubleLanes linearIndex(const Volume& volume, const std::array<DoubleLanes, 3>& v) {
+  const glm::dvec3 strides(1.0, double(volume.dims.x), double(volume.dims.x) * volume.dims.y);
+  return xsimd::fma(v[2], DoubleLanes(strides.z), xsimd::fma(v[1], DoubleLanes(strides.y), v[0]));
+}
+
+// The densities of the voxels at `index`. Voxels are 16 bits; a lane reads the aligned 32-bit word
+// holding its voxel (little-endian: an even index is the low half). No read passes the volume's
+// storage unless the index is the last voxel of a volume with an odd count: callers keep every
+// index below the last voxel's.
+inline IntLanes densitiesAt(const Volume& volume, const IntLanes& index) {
+  static_assert(std::endian::native == std::endian::little, "voxel words read as little-endian");
+  const auto* words = reinterpret_cast<const std::int32_t*>(volume.voxels.data());
+  const IntLanes word = gatherInts(words, index >> 1);
+  return (word >> ((index & IntLanes(1)) << 4)) & IntLanes(0x0FFF);
+}
+
+// Whether every voxel index of the half stays below the volume's last voxel.
+inline bool belowLastVoxel(const Volume& volume, const DoubleLanes& highestIndex) {
+  return xsimd::all(highestIndex < DoubleLanes(double(volume.voxels.size() - 1)));
+}
+
+// The table entries and opacities of one row's densities, and which are visible.
+inline void classifyRow(const SampleTable& table, const FloatLanes& density, int count,
+                        RowClasses& row) {
+  // tableIndex: the conversion truncates, as int() does.
+  const IntLanes entry =
+      xsimd::min(xsimd::to_int(density + FloatLanes(0.5f)), IntLanes(kDensityLevels - 1));
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "the table's entries are packed floats");
+  const FloatLanes opacity = gatherFloats(&table[0].a, entry << 2);  // alpha every 4th float
+  entry.store_aligned(row.entry.data());
+  opacity.store_aligned(row.opacity.data());
+  std::uint32_t visible = 0;
+  for (int j = 0; j < count; ++j) visible |= std::uint32_t(row.opacity[j] > 0.f) << j;
+  row.visible = visible;
+}
+
+// Nearest and mean (one row: the rows of a bundle read the same voxel). False, with the batch
+// unset, where a voxel the filter reads lies at the volume's faces (mean: its six neighbours must
+// exist): there the caller samples one by one.
+template <bool Mean, int Rows>
+bool classifyVoxelSamples(const Volume& volume, const RaySamples& positions, const SampleTable& table,
+                          long first, int count, SampleBatch<Rows>& batch) {
+  std::array<DoubleLanes, 2> index;
+  for (int half = 0; half < 2; ++half) {
+    const std::array<DoubleLanes, 3> q = halfPositions(positions, first, count, half);
+    std::array<DoubleLanes, 3> v;
+    auto inside = xsimd::batch_bool<double>(true);
+    for (int axis = 0; axis < 3; ++axis) {
+      v[axis] = xsimd::min(xsimd::max(xsimd::floor(q[axis] + DoubleLanes(0.5)), DoubleLanes(0.0)),
+                           DoubleLanes(double(volume.dims[axis] - 1)));
+      if constexpr (Mean)
+        inside = inside & (v[axis] >= DoubleLanes(1.0)) &
+                 (v[axis] <= DoubleLanes(double(volume.dims[axis] - 2)));
+    }
+    index[half] = linearIndex(volume, v);
+    if (Mean ? !xsimd::all(inside) : !belowLastVoxel(volume, index[half])) return false;
+  }
+  const IntLanes voxel = narrowToInt(index[0], index[1]);
+  FloatLanes density;
+  if constexpr (Mean) {
+    // Thesis sec. 4.4: the voxel and its six face neighbours, equally weighted.
+    IntLanes sum = densitiesAt(volume, voxel);
+    const glm::ivec3 strides = voxelStrides(volume);
+    for (int axis = 0; axis < 3; ++axis)
+      sum += densitiesAt(volume, voxel - IntLanes(strides[axis])) +
+             densitiesAt(volume, voxel + IntLanes(strides[axis]));
+    density = xsimd::to_float(sum) / FloatLanes(7.f);
+  } else {
+    density = xsimd::to_float(densitiesAt(volume, voxel));
+  }
+  batch.first = first;
+  batch.count = count;
+  classifyRow(table, density, count, batch.rows[0]);
+  return true;
+}
+
+inline FloatLanes interpolateLanes(const FloatLanes& a, const FloatLanes& b, const FloatLanes& t) {
+  return xsimd::fma(b - a, t, a);
+}
+
+// The cells of a batch: corner densities and fractions (cellAt), per lane.
+struct CellLanes {
+  std::array<FloatLanes, 8> corner;  // corner(dx, dy, dz) = dx + 2 dy + 4 dz
+  std::array<FloatLanes, 3> frac;
+};
+
+// cellAt of every lane, and the cells' corner densities. False at the volume's last voxel (see
+// densitiesAt).
+inline bool cellLanes(const Volume& volume, const RaySamples& positions, long first, int count,
+                      CellLanes& cells) {
+  std::array<DoubleLanes, 2> index;
+  std::array<std::array<DoubleLanes, 2>, 3> frac;
+  const glm::ivec3 steps = cornerSteps(volume);
+  for (int half = 0; half < 2; ++half) {
+    const std::array<DoubleLanes, 3> q = halfPositions(positions, first, count, half);
+    std::array<DoubleLanes, 3> base;
+    for (int axis = 0; axis < 3; ++axis) {
+      const DoubleLanes clamped =
+          xsimd::min(xsimd::max(q[axis], DoubleLanes(0.0)), DoubleLanes(double(volume.dims[axis] - 1)));
+      base[axis] =
+          xsimd::min(xsimd::floor(clamped), DoubleLanes(double(std::max(volume.dims[axis] - 2, 0))));
+      frac[axis][half] = clamped - base[axis];
+    }
+    index[half] = linearIndex(volume, base);
+    if (!belowLastVoxel(volume, index[half] + DoubleLanes(double(steps.x + steps.y + steps.z))))
+      return false;
+  }
+  const IntLanes base = narrowToInt(index[0], index[1]);
+  for (int axis = 0; axis < 3; ++axis) cells.frac[axis] = narrowToFloat(frac[axis][0], frac[axis][1]);
+  for (int c = 0; c < 8; ++c) {
+    const int offset = (c & 1) * steps.x + (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
+    cells.corner[c] = xsimd::to_float(densitiesAt(volume, base + IntLanes(offset)));
+  }
+  return true;
+}
+
+// The bilinear value in the cells' plane dz, along x then y (bilinearInPlane).
+inline FloatLanes bilinearLanes(const CellLanes& cells, int dz, const FloatLanes& fx,
+                                const FloatLanes& fy) {
+  const auto& c = cells.corner;
+  return interpolateLanes(interpolateLanes(c[4 * dz], c[4 * dz + 1], fx),
+                          interpolateLanes(c[4 * dz + 2], c[4 * dz + 3], fx), fy);
+}
+
+// Trilinear for each row of a bundle: the rows' fractions along the rotation axis `axis` replace
+// the cells' (TrilinearRaySampler::density). False where the scalar path must take the batch.
+template <int Rows>
+bool classifyTrilinearSamples(const Volume& volume, const RaySamples& positions,
+                              const SampleTable& table, long first, int count, int axis,
+                              const float* fracA, int rows, SampleBatch<Rows>& batch) {
+  CellLanes cells;
+  if (!cellLanes(volume, positions, first, count, cells)) return false;
+  batch.first = first;
+  batch.count = count;
+  const auto& f = cells.frac;
+  if (axis == 2) {  // the two planes serve every row
+    const FloatLanes low = bilinearLanes(cells, 0, f[0], f[1]),
+                     high = bilinearLanes(cells, 1, f[0], f[1]);
+    for (int r = 0; r < rows; ++r)
+      classifyRow(table, interpolateLanes(low, high, FloatLanes(fracA[r])), count, batch.rows[r]);
+    return true;
+  }
+  for (int r = 0; r < rows; ++r) {
+    const FloatLanes fx = axis == 0 ? FloatLanes(fracA[r]) : f[0];
+    const FloatLanes fy = axis == 1 ? FloatLanes(fracA[r]) : f[1];
+    const FloatLanes density =
+        interpolateLanes(bilinearLanes(cells, 0, fx, fy), bilinearLanes(cells, 1, fx, fy), f[2]);
+    classifyRow(table, density, count, batch.rows[r]);
+  }
+  return true;
+}
+
+}  // namespace angio
