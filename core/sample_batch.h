@@ -8,8 +8,8 @@
 //
 // xsimd (header-only, in Debian) gives one type per register width, so the same code builds for
 // AVX2 (8 floats, what -march=x86-64-v3 enables) and for SSE or NEON elsewhere. It has no
-// conversion between lane counts (4 doubles to 4 of 8 ints or floats), and its AVX2 gathers are
-// not reached (below): those few operations use AVX2's intrinsics where they exist.
+// conversion between lane counts (4 doubles to 4 of 8 ints or floats) nor a lane bit mask, and its
+// AVX2 gathers are not reached (below): those few operations use AVX's intrinsics where they exist.
 //
 // Every value is the scalar path's (core/volume_sampling.h): positions are samplePosition's (one
 // fused multiply-add per axis), the nearest voxel floor(q + 0.5) and the cell cellAt's, clamped to
@@ -91,6 +91,17 @@ inline FloatLanes gatherFloats(const float* base, const IntLanes& index) {
 #endif
 }
 
+// Bit j: lane j is true.
+inline std::uint32_t laneBits(const xsimd::batch_bool<float>& lanes) {
+#if XSIMD_WITH_AVX
+  return std::uint32_t(_mm256_movemask_ps(lanes));
+#else
+  std::uint32_t bits = 0;
+  for (std::size_t j = 0; j < FloatLanes::size; ++j) bits |= std::uint32_t(lanes.get(j)) << j;
+  return bits;
+#endif
+}
+
 // Doubles, two halves, as one batch of floats (each rounded to nearest, as float(x) does).
 inline FloatLanes narrowToFloat(const DoubleLanes& low, const DoubleLanes& high) {
 #if XSIMD_WITH_AVX
@@ -149,9 +160,7 @@ inline void classifyRow(const SampleTable& table, const FloatLanes& density, int
   const FloatLanes opacity = gatherFloats(&table[0].a, entry << 2);  // alpha every 4th float
   entry.store_aligned(row.entry.data());
   opacity.store_aligned(row.opacity.data());
-  std::uint32_t visible = 0;
-  for (int j = 0; j < count; ++j) visible |= std::uint32_t(row.opacity[j] > 0.f) << j;
-  row.visible = visible;
+  row.visible = laneBits(opacity > FloatLanes(0.f)) & ((std::uint32_t{1} << count) - 1);
 }
 
 // Nearest and mean (one row: the rows of a bundle read the same voxel). False, with the batch
