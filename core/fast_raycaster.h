@@ -40,8 +40,8 @@ struct FastRenderOptions {
                            // only where samples are dense (osd < 0.75), where it pays
   // Rows that read the same voxels rendered in one pass (row bundles, core/fast_raycaster.cpp).
   bool shareRows = true;
-  // Nearest and mean, plain DVR: eight samples of a ray reconstructed and classified at once in
-  // SIMD lanes (core/sample_batch.h).
+  // Trilinear and mean, plain DVR: eight samples of a ray reconstructed and classified at once in
+  // SIMD lanes (core/sample_batch.h); their samples in hidden cells are classified, not leapt over.
   bool batchSamples = true;
   const std::atomic<bool>* cancel = nullptr;  // checked per template column and per group of a row
   // Optional: an earlier frame whose pixel memory the new frame takes over (it is left empty).
