@@ -492,10 +492,21 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
                    BundleRay<Sampler>& b) {
   const SampleTable& table = *f.tables.of(Region::outside);
   const glm::vec3 viewDir(f.view.viewDir);
-  BundleBatch batch;
-  for (long k = first; k < stop; k += kBatchSamples) {
-    const int count = int(std::min<long>(kBatchSamples, stop - k));
-    if (!classifyBatch(f, bundle, b, table, k, count, batch)) {
+  // Two batches in flight: the next one is classified before this one's visible samples are
+  // composited, so its reads overlap the compositing's branches instead of waiting behind them.
+  std::array<BundleBatch, 2> batches;
+  std::array<bool, 2> classified{};
+  const auto countAt = [&](long k) { return int(std::min<long>(kBatchSamples, stop - k)); };
+  if (first < stop)
+    classified[0] = classifyBatch(f, bundle, b, table, first, countAt(first), batches[0]);
+  for (long k = first, n = 0; k < stop; k += kBatchSamples, ++n) {
+    const int count = countAt(k);
+    const long next = k + kBatchSamples;
+    if (next < stop)
+      classified[(n + 1) % 2] =
+          classifyBatch(f, bundle, b, table, next, countAt(next), batches[(n + 1) % 2]);
+    BundleBatch& batch = batches[n % 2];
+    if (!classified[n % 2]) {
       const long reached = sampleEach<Mode>(f, bundle, k, k + count, b);
       if (b.live == 0) return reached;
       continue;
