@@ -431,15 +431,19 @@ long sampleEach(const Frame& f, const RowBundle& bundle, long first, long stop, 
   return k;
 }
 
-// Whether a span's samples may go through the batches (core/sample_batch.h): plain DVR without
-// labels, trilinear or mean. The mean's rows are one lane (their rows read the same voxel and are
-// copied). Nearest is not batched: one read per sample leaves too little to share, and its frames
-// took 9 % longer in batches (`angioray bench`, "no sample batches" at the medium level).
+// Samplers whose samples go through the batches (core/sample_batch.h): trilinear and mean.
+// Nearest is not batched: one read per sample leaves too little to share, and its frames took
+// 9 % longer in batches (`angioray bench`, "no sample batches" at the medium level).
+template <class Sampler>
+constexpr bool kBatchedSampler = std::is_same_v<Sampler, TrilinearRaySampler<typename Sampler::Read>> ||
+                                 std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>;
+
+// Whether a span's samples go through the batches: plain DVR without labels. The mean's rows are
+// one lane (their rows read the same voxels and are copied).
 template <class Mode>
 bool batchable(const Frame& f, const RowBundle& bundle) {
-  const Filter filter = f.params.sampling.filter;
   return f.batchSamples && !Mode::mip && !Mode::regions && !Mode::labels && !f.segments &&
-         (filter == Filter::trilinear || (filter == Filter::mean && bundle.lanes == 1));
+         (f.params.sampling.filter == Filter::trilinear || bundle.lanes == 1);
 }
 
 using BundleBatch = SampleBatch<kMaxBundleRows>;
@@ -449,9 +453,8 @@ using BundleBatch = SampleBatch<kMaxBundleRows>;
 template <class Sampler>
 bool classifyBatch(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b,
                    const SampleTable& table, long first, int count, BundleBatch& batch) {
-  if constexpr (requires { Sampler::filter; })
-    return classifyVoxelSamples<Sampler::filter == VoxelFilter::mean>(f.volume, b.positions, table,
-                                                                      first, count, batch);
+  if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
+    return classifyMeanSamples(f.volume, b.positions, table, first, count, batch);
   else
     return classifyTrilinearSamples(f.volume, b.positions, table, first, count, f.view.axis,
                                     bundle.fracA.data(), bundle.lanes, batch);
@@ -485,8 +488,8 @@ void countBatch(const RowBundle& bundle, const BundleBatch& batch, int l, int la
 
 // sampleEach for plain DVR: eight samples reconstructed and classified at once for every lane of
 // the bundle, then the visible ones shaded and composited in ray order; the same operations on the
-// same values, so the same bits. Samples in cells the TF hides are classified with the others (a
-// lane costs less than the cell test), and batches at the volume's faces are taken one by one.
+// same values, so the same bits. Samples in cells the TF hides are classified with the others,
+// not leapt over (no cell test), and batches at the volume's faces are taken one by one.
 template <class Mode, class Sampler>
 long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long stop,
                    BundleRay<Sampler>& b) {
@@ -511,8 +514,7 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
       if (b.live == 0) return reached;
       continue;
     }
-    std::array<int, kMaxBundleRows> last;  // profiling: each lane's last evaluated sample
-    last.fill(count - 1);
+    [[maybe_unused]] std::array<int, kMaxBundleRows> last;  // profiling: each lane's last evaluated
     if constexpr (Mode::profile)
       for (int l = 0; l < bundle.lanes; ++l) last[l] = b.lanes[l].done ? -1 : count - 1;
     for (std::uint32_t any = neededSamples(bundle, b, batch); any != 0; any &= any - 1) {
@@ -546,7 +548,8 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
 // The samples [first, stop) of one tile run (sampleEach), in batches where they can be.
 template <class Mode, class Sampler>
 long sampleSpan(const Frame& f, const RowBundle& bundle, long first, long stop, BundleRay<Sampler>& b) {
-  if (batchable<Mode>(f, bundle)) return sampleBatches<Mode>(f, bundle, first, stop, b);
+  if constexpr (kBatchedSampler<Sampler>)
+    if (batchable<Mode>(f, bundle)) return sampleBatches<Mode>(f, bundle, first, stop, b);
   return sampleEach<Mode>(f, bundle, first, stop, b);
 }
 

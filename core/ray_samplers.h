@@ -43,7 +43,6 @@ template <VoxelFilter Filter, class ReadDensity>
 class VoxelRaySampler {
  public:
   using Read = ReadDensity;
-  static constexpr VoxelFilter filter = Filter;
   VoxelRaySampler(const Volume& volume, const glm::dvec3&, int, const Read& read = {})
       : volume_(volume), read_(read) {}
 

@@ -1,6 +1,6 @@
 #pragma once
-// Eight consecutive samples of one ray reconstructed and classified at once: positions, voxels or
-// cells, densities, table entries and opacities, each in SIMD lanes and without a branch per
+// Eight consecutive samples of one ray reconstructed and classified at once, for the trilinear and
+// mean filters: positions, cells or voxels, densities, table entries and opacities, each in SIMD lanes and without a branch per
 // sample. Only the visible samples are then shaded and composited, one by one, in ray order
 // (core/fast_raycaster.cpp). The rows of a bundle share the in-plane positions and differ in the
 // trilinear fraction along the rotation axis a, so a batch classifies each row of the bundle from
@@ -44,11 +44,10 @@ struct RowClasses {
 };
 
 // The samples first .. first + count - 1 of one ray (count <= kBatchSamples; the lanes past count
-// repeat the last sample), classified for each row of a bundle.
+// repeat the last sample and are not visible), classified for each row of a bundle.
 template <int Rows>
 struct SampleBatch {
   long first = 0;
-  int count = 0;
   std::array<RowClasses, Rows> rows;
 };
 
@@ -163,43 +162,35 @@ inline void classifyRow(const SampleTable& table, const FloatLanes& density, int
   row.visible = laneBits(opacity > FloatLanes(0.f)) & ((std::uint32_t{1} << count) - 1);
 }
 
-// Nearest and mean (one row: the rows of a bundle read the same voxel). False, with the batch
-// unset, where a voxel the filter reads lies at the volume's faces (mean: its six neighbours must
-// exist): there the caller samples one by one.
-template <bool Mean, int Rows>
-bool classifyVoxelSamples(const Volume& volume, const RaySamples& positions, const SampleTable& table,
-                          long first, int count, SampleBatch<Rows>& batch) {
+// The mean (thesis sec. 4.4: the nearest voxel and its six face neighbours, equally weighted), one
+// row: the rows of a bundle read the same voxels. False, with the batch unset, where a voxel lacks
+// a neighbour (the volume's faces): there the caller samples one by one.
+template <int Rows>
+bool classifyMeanSamples(const Volume& volume, const RaySamples& positions, const SampleTable& table,
+                         long first, int count, SampleBatch<Rows>& batch) {
   std::array<DoubleLanes, 2> index;
   for (int half = 0; half < 2; ++half) {
     const std::array<DoubleLanes, 3> q = halfPositions(positions, first, count, half);
-    std::array<DoubleLanes, 3> v;
+    std::array<DoubleLanes, 3> v;  // nearestVoxel
     auto inside = xsimd::batch_bool<double>(true);
     for (int axis = 0; axis < 3; ++axis) {
       v[axis] = xsimd::min(xsimd::max(xsimd::floor(q[axis] + DoubleLanes(0.5)), DoubleLanes(0.0)),
                            DoubleLanes(double(volume.dims[axis] - 1)));
-      if constexpr (Mean)
-        inside = inside & (v[axis] >= DoubleLanes(1.0)) &
-                 (v[axis] <= DoubleLanes(double(volume.dims[axis] - 2)));
+      inside = inside & (v[axis] >= DoubleLanes(1.0)) &
+               (v[axis] <= DoubleLanes(double(volume.dims[axis] - 2)));
     }
+    if (!xsimd::all(inside)) return false;
     index[half] = linearIndex(volume, v);
-    if (Mean ? !xsimd::all(inside) : !belowLastVoxel(volume, index[half])) return false;
   }
+  // Inside voxels keep every read below the volume's last voxel (see densitiesAt).
   const IntLanes voxel = narrowToInt(index[0], index[1]);
-  FloatLanes density;
-  if constexpr (Mean) {
-    // Thesis sec. 4.4: the voxel and its six face neighbours, equally weighted.
-    IntLanes sum = densitiesAt(volume, voxel);
-    const glm::ivec3 strides = voxelStrides(volume);
-    for (int axis = 0; axis < 3; ++axis)
-      sum += densitiesAt(volume, voxel - IntLanes(strides[axis])) +
-             densitiesAt(volume, voxel + IntLanes(strides[axis]));
-    density = xsimd::to_float(sum) / FloatLanes(7.f);
-  } else {
-    density = xsimd::to_float(densitiesAt(volume, voxel));
-  }
+  IntLanes sum = densitiesAt(volume, voxel);
+  const glm::ivec3 strides = voxelStrides(volume);
+  for (int axis = 0; axis < 3; ++axis)
+    sum += densitiesAt(volume, voxel - IntLanes(strides[axis])) +
+           densitiesAt(volume, voxel + IntLanes(strides[axis]));
   batch.first = first;
-  batch.count = count;
-  classifyRow(table, density, count, batch.rows[0]);
+  classifyRow(table, xsimd::to_float(sum) / FloatLanes(7.f), count, batch.rows[0]);
   return true;
 }
 
@@ -260,7 +251,6 @@ bool classifyTrilinearSamples(const Volume& volume, const RaySamples& positions,
   CellLanes cells;
   if (!cellLanes(volume, positions, first, count, cells)) return false;
   batch.first = first;
-  batch.count = count;
   const auto& f = cells.frac;
   if (axis == 2) {  // the two planes serve every row
     const FloatLanes low = bilinearLanes(cells, 0, f[0], f[1]),
