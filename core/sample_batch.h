@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -133,15 +134,39 @@ inline DoubleLanes linearIndex(const Volume& volume, const std::array<DoubleLane
   return xsimd::fma(v[2], DoubleLanes(strides.z), xsimd::fma(v[1], DoubleLanes(strides.y), v[0]));
 }
 
-// The densities of the voxels at `index`. Voxels are 16 bits; a lane reads the aligned 32-bit word
-// holding its voxel (little-endian: an even index is the low half). No read passes the volume's
-// storage unless the index is the last voxel of a volume with an odd count: callers keep every
-// index below the last voxel's.
-inline IntLanes densitiesAt(const Volume& volume, const IntLanes& index) {
+// A batch's voxels as 32-bit lanes: indices relative to an even voxel index near them, since the
+// lanes could not hold the indices of a volume of 2^31 voxels or more (1024 x 1024 x 2048).
+struct VoxelLanes {
+  std::size_t origin = 0;  // even
+  IntLanes offset;         // voxel index - origin
+  // The 32-bit word that starts with the origin voxel.
+  const std::int32_t* words(const Volume& volume) const {
+    return reinterpret_cast<const std::int32_t*>(volume.voxels.data() + origin);
+  }
+};
+
+// The voxel indices `index` (two halves, whole numbers >= 0) relative to the even index at or
+// below lane 0 of the low half. False where an offset, or it plus `reach` (the largest offset a
+// caller adds), could leave the 32-bit range.
+inline bool voxelLanes(const std::array<DoubleLanes, 2>& index, int reach, VoxelLanes& lanes) {
+  const double origin = 2.0 * std::floor(index[0].get(0) / 2.0);
+  const DoubleLanes low = index[0] - DoubleLanes(origin), high = index[1] - DoubleLanes(origin);
+  const DoubleLanes limit(double(std::int32_t{1} << 30) - reach);
+  if (!xsimd::all((xsimd::abs(low) < limit) & (xsimd::abs(high) < limit))) return false;
+  lanes.origin = std::size_t(origin);
+  lanes.offset = narrowToInt(low, high);
+  return true;
+}
+
+// The densities of the voxels at `offset` (VoxelLanes). Voxels are 16 bits; a lane reads the
+// aligned 32-bit word holding its voxel (little-endian: an even index is the low half; the origin
+// is even, so the offset's parity is the index's, and its arithmetic shift the word's). No read
+// passes the volume's storage unless the voxel is the last of a volume with an odd count: callers
+// keep every index below the last voxel's.
+inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset) {
   static_assert(std::endian::native == std::endian::little, "voxel words read as little-endian");
-  const auto* words = reinterpret_cast<const std::int32_t*>(volume.voxels.data());
-  const IntLanes word = gatherInts(words, index >> 1);
-  return (word >> ((index & IntLanes(1)) << 4)) & IntLanes(0x0FFF);
+  const IntLanes word = gatherInts(words, offset >> 1);
+  return (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0x0FFF);
 }
 
 // Whether every voxel index of the half stays below the volume's last voxel.
@@ -164,7 +189,8 @@ inline void classifyRow(const SampleTable& table, const FloatLanes& density, int
 
 // The mean (thesis sec. 4.4: the nearest voxel and its six face neighbours, equally weighted), one
 // row: the rows of a bundle read the same voxels. False, with the batch unset, where a voxel lacks
-// a neighbour (the volume's faces): there the caller samples one by one.
+// a neighbour (the volume's faces) or the lanes lie too far apart (voxelLanes): there the caller
+// samples one by one.
 template <int Rows>
 bool classifyMeanSamples(const Volume& volume, const RaySamples& positions, const SampleTable& table,
                          long first, int count, SampleBatch<Rows>& batch) {
@@ -183,12 +209,14 @@ bool classifyMeanSamples(const Volume& volume, const RaySamples& positions, cons
     index[half] = linearIndex(volume, v);
   }
   // Inside voxels keep every read below the volume's last voxel (see densitiesAt).
-  const IntLanes voxel = narrowToInt(index[0], index[1]);
-  IntLanes sum = densitiesAt(volume, voxel);
   const glm::ivec3 strides = voxelStrides(volume);
+  VoxelLanes voxel;
+  if (!voxelLanes(index, strides.z, voxel)) return false;
+  const std::int32_t* words = voxel.words(volume);
+  IntLanes sum = densitiesAt(words, voxel.offset);
   for (int axis = 0; axis < 3; ++axis)
-    sum += densitiesAt(volume, voxel - IntLanes(strides[axis])) +
-           densitiesAt(volume, voxel + IntLanes(strides[axis]));
+    sum += densitiesAt(words, voxel.offset - IntLanes(strides[axis])) +
+           densitiesAt(words, voxel.offset + IntLanes(strides[axis]));
   batch.first = first;
   classifyRow(table, xsimd::to_float(sum) / FloatLanes(7.f), count, batch.rows[0]);
   return true;
@@ -205,7 +233,7 @@ struct CellLanes {
 };
 
 // cellAt of every lane, and the cells' corner densities. False at the volume's last voxel (see
-// densitiesAt).
+// densitiesAt) and where the lanes lie too far apart (voxelLanes).
 inline bool cellLanes(const Volume& volume, const RaySamples& positions, long first, int count,
                       CellLanes& cells) {
   std::array<DoubleLanes, 2> index;
@@ -225,11 +253,13 @@ inline bool cellLanes(const Volume& volume, const RaySamples& positions, long fi
     if (!belowLastVoxel(volume, index[half] + DoubleLanes(double(steps.x + steps.y + steps.z))))
       return false;
   }
-  const IntLanes base = narrowToInt(index[0], index[1]);
+  VoxelLanes base;
+  if (!voxelLanes(index, steps.x + steps.y + steps.z, base)) return false;
+  const std::int32_t* words = base.words(volume);
   for (int axis = 0; axis < 3; ++axis) cells.frac[axis] = narrowToFloat(frac[axis][0], frac[axis][1]);
   for (int c = 0; c < 8; ++c) {
     const int offset = (c & 1) * steps.x + (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
-    cells.corner[c] = xsimd::to_float(densitiesAt(volume, base + IntLanes(offset)));
+    cells.corner[c] = xsimd::to_float(densitiesAt(words, base.offset + IntLanes(offset)));
   }
   return true;
 }
