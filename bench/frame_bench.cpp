@@ -276,6 +276,7 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
   const auto labelScene = PreparedScene::prepare(volume, {}, labelled);
   const auto ownTfScene = PreparedScene::prepare(volume, {}, ownTfRecipe(labelled));
   report.blocking = blockingReport(volume, buildTable(tf));
+  const BlockedVolume blocked = buildBlockedVolume(volume);
 
   Image previous;
   auto timeVariant = [&](const std::string& level, const std::string& variant, int angles,
@@ -298,6 +299,13 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
     clipped.clipping = benchClipping(volume);
     report.rows.push_back(timeFrames(level.name, "clipped", settings.angles, clipped,
                                      sceneFrames(frames, scene, previous)));
+    if (blocksServe(blocked, scene->tables(nullptr), p)) {
+      Switches fromBlocks;
+      fromBlocks.options.blocks = &blocked;
+      report.rows.push_back(timeVariant(level.name, "blocked volume", settings.angles, p, fromBlocks));
+      std::fprintf(stderr, "bench: %s blocked volume %.1f ms\n", level.name.c_str(),
+                   report.rows.back().medianMs);
+    }
     if (settings.withContributions) {
       // Thesis fig. 4.9 ff.: "contribution" = everything but one technique, at every level;
       // "potential" = one technique alone, at the fast level only (without any, a medium frame

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 namespace angio {
@@ -16,7 +17,7 @@ using WindowIndices = std::array<int, kStoredBlockSize>;
 // 32 b - 1 + l clamped to [0, n - 1], the edge replication of volume_sampling.h's clamped reads.
 WindowIndices windowIndices(int block, int n) {
   WindowIndices indices;
-  const int first = block * kBlockSize - kBlockOverlap;
+  const int first = block * kBlockSize - kBlockOverlapBelow;
   for (int l = 0; l < kStoredBlockSize; ++l) indices[l] = std::clamp(first + l, 0, n - 1);
   return indices;
 }
@@ -79,8 +80,9 @@ BlockedVolume emptyBlockedVolume(const Volume& volume, BlockingOptions options) 
 // so the ranges are taken over exactly the voxels that will be stored.
 std::vector<std::uint8_t> summariseBlocks(const Volume& volume, BlockedVolume& blocked) {
   std::vector<std::uint8_t> background(blocked.blockCount());
+  tbb::enumerable_thread_specific<std::vector<Voxel>> scratches(kStoredBlockVoxels);
   tbb::parallel_for(0, blocked.blockCount(), [&](int block) {
-    thread_local std::vector<Voxel> scratch(kStoredBlockVoxels);
+    std::vector<Voxel>& scratch = scratches.local();
     copyWindow(volume, blocked.blockCoord(block), scratch.data());
     const WindowSummary s = summarise(scratch.data());
     blocked.minDensity[block] = s.minDensity;
@@ -97,14 +99,14 @@ void assignOffsets(const std::vector<std::uint8_t>& background, BlockedVolume& b
   std::size_t next = 0;
   if (backgroundBlocks > 0) {
     blocked.dummyOffset = 0;
-    next = kStoredBlockVoxels;
+    next = kBlockSlotVoxels;
   }
   for (int block = 0; block < blocked.blockCount(); ++block) {
     if (background[block]) {
       blocked.blockOffset[block] = blocked.dummyOffset;
     } else {
       blocked.blockOffset[block] = next;
-      next += kStoredBlockVoxels;
+      next += kBlockSlotVoxels;
     }
   }
   blocked.storage.resize(next);

@@ -20,13 +20,15 @@
 #include "core/ray_templates.h"
 #include "core/sample_batch.h"
 #include "core/volume_sampling.h"
+#include "core/voxel_grid.h"
 
 namespace angio {
 
 namespace {
 
 struct Frame {
-  const Volume& volume;
+  const Volume& volume;  // the geometry; voxels are read through `voxels`
+  VoxelGrid voxels;
   const SliceTiles& tiles;
   const std::vector<std::uint64_t>& visibleMasks;  // the classification's, for the filter's reach
   const RenderParams& params;
@@ -454,9 +456,9 @@ template <class Sampler>
 bool classifyBatch(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b,
                    const SampleTable& table, long first, int count, BundleBatch& batch) {
   if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
-    return classifyMeanSamples(f.volume, b.positions, table, first, count, batch);
+    return classifyMeanSamples(f.voxels, b.positions, table, first, count, batch);
   else
-    return classifyTrilinearSamples(f.volume, b.positions, table, first, count, f.view.axis,
+    return classifyTrilinearSamples(f.voxels, b.positions, table, first, count, f.view.axis,
                                     bundle.fracA.data(), bundle.lanes, batch);
 }
 
@@ -709,7 +711,7 @@ template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   BundleRay<Sampler> b{
       RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
-      Sampler(f.volume, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
+      Sampler(f.voxels, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
       {},
       bundle.lanes};
   for (int l = 0; l < bundle.lanes; ++l)
@@ -887,6 +889,18 @@ Image frameImage(const ViewGeometry& view, Image* recycle) {
 
 }  // namespace
 
+bool blocksServe(const BlockedVolume& blocked, const RegionTables& tables, const RenderParams& params) {
+  if (params.compositing == Compositing::mip) {
+    const double black = params.mip.level - params.mip.window / 2;  // mipPixel's grey 0 and below
+    return huOfDensity(float(blocked.backgroundDensity)) <= black;
+  }
+  if (params.sampling.preintegrated) return false;
+  // Background blocks hold label 0 only, which never has a TF of its own (core/label_tables.h).
+  for (const TfTable* table : {tables.focus, tables.context, tables.outside})
+    if (table && table->anyVisible(0, blocked.backgroundDensity - 1)) return false;
+  return true;
+}
+
 Image renderFast(const Volume& volume, const TileClassification& classification, const TfTable& table,
                  const RenderParams& params, const FastRenderOptions& options, FastRenderStats* stats) {
   return renderFast(volume, classification, singleTable(table), params, options, stats);
@@ -904,7 +918,10 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   const auto start = std::chrono::steady_clock::now();
   const SliceTiles& tiles = classification.tiles();
   const bool labels = tables.labelsActive();
+  if (options.blocks && !blocksServe(*options.blocks, tables, params))
+    throw std::logic_error("renderFast: the blocked volume cannot render this frame exactly");
   Frame f{volume,
+          options.blocks ? VoxelGrid(volume, *options.blocks) : VoxelGrid(volume),
           tiles,
           classification.visibleMasks(params.sampling.filter),
           params,

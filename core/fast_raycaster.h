@@ -10,6 +10,8 @@
 // Plain DVR with the trilinear or mean filter reconstructs and classifies eight samples of a ray
 // at once in SIMD lanes, for every row of a bundle (core/sample_batch.h), and shades and
 // composites only the visible ones.
+// Voxels are read from the flat Volume or, with FastRenderOptions::blocks, from the blocked volume
+// (core/voxel_grid.h), which gives the same image where blocksServe says so.
 // The view's clipping (crop box, clip plane, slab: core/clip_interval.h) gives each lane the
 // reference's sample range: it starts at its first sample and is finished after its last.
 // Every evaluated sample uses the reference's operations (core/compositing.h), so the image is the
@@ -19,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/blocked_volume.h"
 #include "core/compositing.h"
 #include "core/image.h"
 #include "core/ray_profile.h"
@@ -57,6 +60,10 @@ struct FastRenderOptions {
   // core/image_refinement.h); the others keep the values of `recycle`'s image, which must then be
   // of the frame's size. Rows without such a pixel cost nothing, columns without one nearly nothing.
   const std::vector<std::uint8_t>* pixels = nullptr;
+  // Optional: read the voxels from these blocks (thesis sec. 4.2.1, core/blocked_volume.h) instead
+  // of the Volume's, which then gives the geometry only and need not hold voxels. Only where
+  // blocksServe says the image is the same; renderFast throws std::logic_error otherwise.
+  const BlockedVolume* blocks = nullptr;
 };
 
 struct FastRenderStats {
@@ -66,6 +73,13 @@ struct FastRenderStats {
   bool profiled = false;  // FastRenderOptions::profile was set and the frame is plain DVR
   RayProfile profile;
 };
+
+// Whether a frame rendered from `blocked` is the flat volume's frame, bit for bit: its dummy block
+// stands for background voxels whose true densities are only known to lie below the background
+// threshold. True for DVR when every TF the frame may use for unlabelled voxels is transparent
+// there, and for MIP when the window shows every density below it as black; never with
+// pre-integration (a segment's opacity depends on where along it the density crosses the TF).
+bool blocksServe(const BlockedVolume& blocked, const RegionTables& tables, const RenderParams& params);
 
 // `classification` must be of tiles built for params.axis and made from `tables`' TFs (throws
 // std::logic_error otherwise). With regions, VesselGlyph: a TF per region of each ray

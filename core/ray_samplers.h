@@ -32,6 +32,7 @@
 #include "core/transfer_function.h"
 #include "core/volume.h"
 #include "core/volume_sampling.h"
+#include "core/voxel_grid.h"
 
 namespace angio {
 
@@ -43,8 +44,8 @@ template <VoxelFilter Filter, class ReadDensity>
 class VoxelRaySampler {
  public:
   using Read = ReadDensity;
-  VoxelRaySampler(const Volume& volume, const glm::dvec3&, int, const Read& read = {})
-      : volume_(volume), read_(read) {}
+  VoxelRaySampler(const VoxelGrid& grid, const glm::dvec3&, int, const Read& read = {})
+      : grid_(grid), volume_(grid.geometry()), read_(read) {}
 
   void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
   bool mayBeVisible(const TfTable&) const { return true; }
@@ -54,18 +55,19 @@ class VoxelRaySampler {
   float density(float) const { return densityOf(voxel_); }
   float densityAt(const glm::dvec3& q, float) const { return densityOf(nearestVoxel(volume_, q)); }
   glm::vec3 gradientAt(const glm::dvec3& q, float) const {
-    return nearestGradient(volume_, nearestVoxel(volume_, q), read_);
+    return nearestGradient(grid_, nearestVoxel(volume_, q), read_);
   }
-  glm::vec3 gradient(float) const { return nearestGradient(volume_, voxel_, read_); }
-  int label(float) const { return labelOf(volume_.at(voxel_.x, voxel_.y, voxel_.z)); }
+  glm::vec3 gradient(float) const { return nearestGradient(grid_, voxel_, read_); }
+  int label(float) const { return labelOf(grid_.at(voxel_)); }
 
  private:
   float densityOf(glm::ivec3 v) const {
-    if constexpr (Filter == VoxelFilter::mean) return meanDensity(volume_, v, read_);
-    else return float(read_(volume_.at(v.x, v.y, v.z)));
+    if constexpr (Filter == VoxelFilter::mean) return meanDensity(grid_, v, read_);
+    else return float(read_(grid_.at(v)));
   }
 
-  const Volume& volume_;
+  const VoxelGrid& grid_;
+  const Volume& volume_;  // the geometry
   const Read read_;
   glm::ivec3 voxel_{0};
 };
@@ -80,9 +82,9 @@ class TrilinearRaySampler {
  public:
   using Read = ReadDensity;
   // `step`: from one sample of the ray to the next, in voxel units; `axis`: the rotation axis a.
-  TrilinearRaySampler(const Volume& volume, const glm::dvec3& step, int axis, const Read& read = {})
-      : volume_(volume), read_(read), steps_(cornerSteps(volume)), interior_(interiorBox(volume)),
-        axis_(axis) {
+  TrilinearRaySampler(const VoxelGrid& grid, const glm::dvec3& step, int axis, const Read& read = {})
+      : grid_(grid), volume_(grid.geometry()), read_(read), steps_(grid.steps()),
+        strides_(grid.strides()), axis_(axis) {
     for (int axis = 0; axis < 3; ++axis) {
       forward_[axis] = step[axis] > 0;
       inverseStep_[axis] = step[axis] != 0 ? 1.0 / std::abs(step[axis]) : 0.0;
@@ -124,12 +126,12 @@ class TrilinearRaySampler {
   float densityAt(const glm::dvec3& q, float fracA) const {
     Cell cell = cellAt(volume_, q);
     cell.frac[axis_] = fracA;
-    return trilinearDensity(volume_, cell, read_);
+    return trilinearDensity(grid_, cell, read_);
   }
   glm::vec3 gradientAt(const glm::dvec3& q, float fracA) const {
     Cell cell = cellAt(volume_, q);
     cell.frac[axis_] = fracA;
-    return trilinearGradient(volume_, cell, read_);
+    return trilinearGradient(grid_, cell, read_);
   }
   glm::vec3 gradient(float fracA) {
     if (!gradientsLoaded_) loadGradients();
@@ -173,24 +175,17 @@ class TrilinearRaySampler {
     return interpolate(planes.value[0], planes.value[1], fracA);
   }
 
-  // Cell bases whose corners' six neighbours all exist: gradients through pointer offsets.
-  struct Box {
-    glm::ivec3 lo{0}, hi{-1};
-    bool holds(glm::ivec3 v) const {
-      return glm::all(glm::greaterThanEqual(v, lo)) && glm::all(glm::lessThanEqual(v, hi));
-    }
-  };
-  static Box interiorBox(const Volume& volume) { return {glm::ivec3(1), volume.dims - 3}; }
-
   void load() {
     cached_ = cell_.base;
     gradientsLoaded_ = false;
-    const Voxel* base = volume_.voxels.data() + volume_.indexOf(cached_.x, cached_.y, cached_.z);
+    base_ = grid_.address(cached_);
+    const Voxel* base = base_;
+    const glm::ivec3 steps = steps_;
     int lo = 4095, hi = 0;
     for (int dz = 0; dz < 2; ++dz)
       for (int dy = 0; dy < 2; ++dy)
         for (int dx = 0; dx < 2; ++dx) {
-          const Voxel v = base[dx * steps_.x + dy * steps_.y + dz * steps_.z];
+          const Voxel v = base[dx * steps.x + dy * steps.y + dz * steps.z];
           const int d = read_(v);
           corners_[corner(dx, dy, dz)] = float(d);
           // Labels pick TFs only on the labelled path; the plain one does not pay for them.
@@ -203,14 +198,18 @@ class TrilinearRaySampler {
     hi_ = hi;
   }
 
-  // As trilinearGradient computes each corner's central differences (volume_sampling.h). Inside
-  // the volume half of the 48 neighbours are the cell's own corners, already in corners_ (the
-  // same float values), so only the 24 voxels of the shell around the cell are read.
-  void loadGradients() {
+  // As trilinearGradient computes each corner's central differences (volume_sampling.h). Where the
+  // shell can be read (everywhere but at a flat volume's faces) half of the 48 neighbours are the
+  // cell's own corners, already in corners_ (the same float values), so only the 24 voxels of the
+  // shell around the cell are read.
+  // Out of line, as GCC chose before: inlined into the row loop it made the loop outgrow GCC's
+  // limits, which then called cellAt and interpolate instead of inlining them (high level 10-15 %
+  // slower, `angioray bench`).
+  [[gnu::noinline]] void loadGradients() {
     gradientsLoaded_ = true;
-    if (interior_.holds(cached_)) {
-      const Voxel* base = volume_.voxels.data() + volume_.indexOf(cached_.x, cached_.y, cached_.z);
-      const glm::ivec3 strides = voxelStrides(volume_);
+    if (grid_.reaches(cached_, 1, 2)) {
+      const Voxel* base = base_;
+      const glm::ivec3 strides = strides_;
       for (int dz = 0; dz < 2; ++dz)
         for (int dy = 0; dy < 2; ++dy)
           for (int dx = 0; dx < 2; ++dx) {
@@ -237,16 +236,17 @@ class TrilinearRaySampler {
               voxelGradient(volume_, clampIndex(volume_, cached_ + glm::ivec3(dx, dy, dz)), read_);
   }
 
-  const Volume& volume_;
+  const VoxelGrid& grid_;
+  const Volume& volume_;  // the geometry; its voxels are read only through grid_
   const Read read_;
-  const glm::ivec3 steps_;
-  const Box interior_;
+  const glm::ivec3 steps_, strides_;  // the grid's
   const int axis_;
   glm::dvec3 inverseStep_{0.0};  // 1 / |step| per axis, 0 where the ray does not move along it
   glm::bvec3 forward_{false};
   Cell cell_;
   glm::dvec3 q_{0.0};
   glm::ivec3 cached_{-1};
+  const Voxel* base_ = nullptr;  // the voxel cached_ (VoxelGrid::address)
   bool gradientsLoaded_ = false;
   int lo_ = 0, hi_ = 0;
   std::array<float, 8> corners_;  // filled by load() before any use

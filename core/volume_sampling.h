@@ -124,12 +124,28 @@ inline glm::ivec3 nearestCorner(const Cell& cell) {
   return cell.base + glm::ivec3(glm::greaterThanEqual(cell.frac, glm::vec3(0.5f)));
 }
 
+// Trilinear density of the cell whose base voxel is at `base`, its far corners `steps` away.
+template <class Read = PlainDensity>
+float trilinearDensityAt(const Voxel* base, glm::ivec3 steps, const Cell& cell, const Read& read = {}) {
+  return trilinear(cell, [&](int dx, int dy, int dz) {
+    return float(read(base[dx * steps.x + dy * steps.y + dz * steps.z]));
+  });
+}
+
 template <class Read = PlainDensity>
 float trilinearDensity(const Volume& volume, const Cell& cell, const Read& read = {}) {
   const Voxel* base = volume.voxels.data() + volume.indexOf(cell.base.x, cell.base.y, cell.base.z);
-  const glm::ivec3 step = cornerSteps(volume);
+  return trilinearDensityAt(base, cornerSteps(volume), cell, read);
+}
+
+// Trilinear gradient of the cell whose base voxel is at `base`, where base - 1 .. base + 2 can be
+// read through `strides` along every axis.
+template <class Read = PlainDensity>
+glm::vec3 trilinearGradientAt(const Voxel* base, glm::ivec3 strides, glm::dvec3 spacing,
+                              const Cell& cell, const Read& read = {}) {
   return trilinear(cell, [&](int dx, int dy, int dz) {
-    return float(read(base[dx * step.x + dy * step.y + dz * step.z]));
+    return voxelGradientInterior(base + dx * strides.x + dy * strides.y + dz * strides.z, strides,
+                                 spacing, read);
   });
 }
 
@@ -137,28 +153,29 @@ template <class Read = PlainDensity>
 glm::vec3 trilinearGradient(const Volume& volume, const Cell& cell, const Read& read = {}) {
   if (hasAllNeighbours(volume, cell.base, 1, 2)) {
     const Voxel* base = volume.voxels.data() + volume.indexOf(cell.base.x, cell.base.y, cell.base.z);
-    const glm::ivec3 strides = voxelStrides(volume);
-    return trilinear(cell, [&](int dx, int dy, int dz) {
-      return voxelGradientInterior(base + dx * strides.x + dy * strides.y + dz * strides.z, strides,
-                                   volume.spacing, read);
-    });
+    return trilinearGradientAt(base, voxelStrides(volume), volume.spacing, cell, read);
   }
   return trilinear(cell, [&](int dx, int dy, int dz) {
     return voxelGradient(volume, clampIndex(volume, cell.base + glm::ivec3(dx, dy, dz)), read);
   });
 }
 
+// The mean filter at a voxel whose six neighbours can be read through `strides`.
+template <class Read = PlainDensity>
+float meanDensityInterior(const Voxel* voxel, glm::ivec3 strides, const Read& read = {}) {
+  float sum = float(read(*voxel));
+  for (int axis = 0; axis < 3; ++axis)
+    sum += float(read(voxel[-strides[axis]])) + float(read(voxel[strides[axis]]));
+  return sum / 7.f;
+}
+
 // Thesis sec. 4.4: the nearest voxel and its 6 face neighbours, equally weighted.
 template <class Read = PlainDensity>
 float meanDensity(const Volume& volume, glm::ivec3 v, const Read& read = {}) {
+  if (hasAllNeighbours(volume, v, 1, 1))
+    return meanDensityInterior(volume.voxels.data() + volume.indexOf(v.x, v.y, v.z),
+                               voxelStrides(volume), read);
   float sum = float(read(volume.at(v.x, v.y, v.z)));
-  if (hasAllNeighbours(volume, v, 1, 1)) {
-    const Voxel* voxel = volume.voxels.data() + volume.indexOf(v.x, v.y, v.z);
-    const glm::ivec3 strides = voxelStrides(volume);
-    for (int axis = 0; axis < 3; ++axis)
-      sum += float(read(voxel[-strides[axis]])) + float(read(voxel[strides[axis]]));
-    return sum / 7.f;
-  }
   for (int axis = 0; axis < 3; ++axis) {
     glm::ivec3 lo = v, hi = v;
     --lo[axis];

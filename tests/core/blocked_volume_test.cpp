@@ -43,12 +43,12 @@ Voxel clampedVoxel(const Volume& volume, glm::ivec3 index) {
   return volume.at(c.x, c.y, c.z);
 }
 
-// The block's 34^3 window of the flat volume, written out from the definition in the header.
+// The block's 35^3 window of the flat volume, written out from the definition in the header.
 template <typename Visit>
 void forEachWindowVoxel(glm::ivec3 block, Visit&& visit) {
-  for (int lk = 0; lk < 34; ++lk)
-    for (int lj = 0; lj < 34; ++lj)
-      for (int li = 0; li < 34; ++li)
+  for (int lk = 0; lk < 35; ++lk)
+    for (int lj = 0; lj < 35; ++lj)
+      for (int li = 0; li < 35; ++li)
         visit(glm::ivec3(li, lj, lk), block * 32 - 1 + glm::ivec3(li, lj, lk));
 }
 
@@ -81,7 +81,7 @@ TEST(BlockedVolume, StoredWindowsEqualClampedFlatVoxels) {
       const Voxel* stored = blocked.blockVoxels(block);
       int mismatches = 0;
       forEachWindowVoxel(b, [&](glm::ivec3 local, glm::ivec3 global) {
-        const std::size_t n = (std::size_t(local.z) * 34 + local.y) * 34 + local.x;
+        const std::size_t n = (std::size_t(local.z) * 35 + local.y) * 35 + local.x;
         mismatches += stored[n] != clampedVoxel(volume, global);
       });
       EXPECT_EQ(mismatches, 0) << "dims " << dims.x << "x" << dims.y << "x" << dims.z << " block " << b.x
@@ -180,7 +180,7 @@ TEST(BlockedVolume, AllBackgroundBlocksShareOneStoredDummy) {
   }
   ASSERT_NE(dummy, nullptr);
   EXPECT_TRUE(std::all_of(dummy, dummy + kStoredBlockVoxels, [](Voxel v) { return v == kDummyVoxel; }));
-  EXPECT_EQ(blocked.storage.size(), (4 + 1) * kStoredBlockVoxels);  // 4 stored + the dummy
+  EXPECT_EQ(blocked.storage.size(), (4 + 1) * kBlockSlotVoxels);  // 4 stored + the dummy
 }
 
 TEST(BlockedVolume, SingleVoxelVolume) {
@@ -197,12 +197,13 @@ TEST(BlockedVolume, SingleVoxelVolume) {
 
   const BlockedVolume air = buildBlockedVolume(makeVolume({1, 1, 1}, {1, 1, 1}, encodeVoxel(-1000)));
   EXPECT_TRUE(air.isBackground(0));
-  EXPECT_EQ(air.storage.size(), kStoredBlockVoxels);
+  EXPECT_EQ(air.storage.size(), kBlockSlotVoxels);
 }
 
 // Reads through the block's storage with local offsets only, as a block renderer would, must
 // give volume_sampling.h's clamped results bit for bit: voxel gradients, the mean filter at the
-// nearest voxel, and trilinear density at the cell base (including the volume's last cell).
+// nearest voxel, and trilinear density and gradient at the cell base (including the volume's last
+// cell).
 struct BlockReader {
   const BlockedVolume& blocked;
   const Voxel* voxels = nullptr;
@@ -216,7 +217,7 @@ struct BlockReader {
   float density(glm::ivec3 global) const {
     const glm::ivec3 local = global - origin;
     EXPECT_TRUE(glm::all(glm::greaterThanEqual(local, glm::ivec3(0))) &&
-                glm::all(glm::lessThan(local, glm::ivec3(34))));
+                glm::all(glm::lessThan(local, glm::ivec3(35))));
     return float(densityOf(voxels[BlockedVolume::localIndex(local)]));
   }
   glm::vec3 gradient(glm::ivec3 v) const {
@@ -250,8 +251,10 @@ TEST(BlockedVolume, BlockLocalReadsEqualClampedSampling) {
     const Volume volume = randomVolume(dims, 5);
     const BlockedVolume blocked = buildBlockedVolume(volume);
     std::mt19937 rng(9);
-    std::vector<glm::dvec3> points = {glm::dvec3(0.0),
-                                      glm::dvec3(volume.dims - 1)};  // first and last cell
+    // The first and last cell, and cells based on a core's last layer (l = 32) where they exist.
+    std::vector<glm::dvec3> points = {
+        glm::dvec3(0.0), glm::dvec3(volume.dims - 1),
+        glm::min(glm::dvec3(31.5, 63.25, 31.75), glm::dvec3(volume.dims - 1))};
     for (int n = 0; n < 2000; ++n) {
       glm::dvec3 q;
       for (int axis = 0; axis < 3; ++axis)
@@ -264,7 +267,16 @@ TEST(BlockedVolume, BlockLocalReadsEqualClampedSampling) {
       EXPECT_EQ(atVoxel.gradient(v), voxelGradient(volume, v));
       EXPECT_EQ(atVoxel.mean(v), meanDensity(volume, v));
       const Cell cell = cellAt(volume, q);
-      EXPECT_EQ(BlockReader(blocked, cell.base).trilinearDensity(cell), trilinearDensity(volume, cell));
+      const BlockReader atCell(blocked, cell.base);
+      EXPECT_EQ(atCell.trilinearDensity(cell), trilinearDensity(volume, cell));
+      // The corners' central differences, which trilinearGradient interpolates, read base - 1 ..
+      // base + 2: two past the core for a base on its last layer. (Compared before the
+      // interpolation, whose fused multiply-adds the compiler may contract with the differences
+      // differently in different places.)
+      for (int corner = 0; corner < 8; ++corner) {
+        const glm::ivec3 v = cell.base + glm::ivec3(corner & 1, corner >> 1 & 1, corner >> 2);
+        EXPECT_EQ(atCell.gradient(v), voxelGradient(volume, clampIndex(volume, v)));
+      }
     }
   }
 }
@@ -355,7 +367,7 @@ TEST(BlockedVolume, SaysWhenATfNeedsTheUnstoredBackground) {
 std::size_t tableBytes(int blocks) {
   return std::size_t(blocks) * (sizeof(std::size_t) + 2 * sizeof(std::uint16_t));
 }
-constexpr std::size_t kBlockBytes = 34 * 34 * 34 * sizeof(Voxel);
+constexpr std::size_t kBlockBytes = (35 * 35 * 35 + 1) * sizeof(Voxel);  // one spare voxel
 
 TEST(BlockedVolume, CountsMemory) {
   // No background: every block stored, no dummy.

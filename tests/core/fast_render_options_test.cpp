@@ -10,6 +10,7 @@
 #include "core/ray_templates.h"
 #include "core/view_geometry.h"
 #include "phantom/phantom.h"
+#include "tests/support/varied_params.h"
 
 namespace angio {
 namespace {
@@ -150,19 +151,7 @@ TEST(FastRenderOptions, SampleBatchesKeepTheImage) {
     for (Filter filter : {Filter::mean, Filter::trilinear})  // nearest is not batched
       for (double osd : {1.0, 0.3})
         for (int variant = 0; variant < 3; ++variant) {
-          RenderParams p;
-          p.axis = axis;
-          p.angleDeg = 33 + 41 * variant;
-          p.sampling = qualitySampling(Quality::high);
-          p.sampling.filter = filter;
-          p.sampling.osd = osd;
-          p.shading.enabled = variant != 1;
-          const glm::dvec3 extent = glm::dvec3(volume.dims - 1) * volume.spacing;
-          if (variant == 2) {
-            p.clipping.crop = CropBox{0.12 * extent, 0.83 * extent};
-            // Tilted towards every axis: the rows of a bundle start at different samples.
-            p.clipping.plane = ClipPlane{false, 0, 0.5 * extent, {0.5, -0.6, 0.7}};
-          }
+          const RenderParams p = test_support::variedParams(volume, axis, filter, osd, variant);
           FastRenderOptions oneByOne;
           oneByOne.batchSamples = false;
           const Image batched = renderFast(volume, visible, table, p);

@@ -1,0 +1,96 @@
+#pragma once
+// Where the fast raycaster reads its voxels: the flat Volume, or the blocked volume
+// (core/blocked_volume.h, thesis sec. 4.2.1), which then makes the flat voxels unnecessary while
+// rendering. Both give the same densities for the same sample, bit for bit, wherever blocksServe
+// allows the blocks: each read takes a voxel and the neighbours a filter needs as a pointer and
+// strides, and the filters (core/volume_sampling.h) compute from them the same way.
+//
+// A sample reads the block that owns its voxel (nearest, mean) or its cell base (trilinear); the
+// block's window holds every neighbour the filters read, replicated at the volume's faces, so the
+// blocked grid never needs the clamped path. The flat grid does at the faces, and there reads the
+// Volume's voxels through volume_sampling.h's clamped functions.
+#include <cstddef>
+#include <stdexcept>
+
+#include <glm/glm.hpp>
+
+#include "core/blocked_volume.h"
+#include "core/volume.h"
+#include "core/volume_sampling.h"
+
+namespace angio {
+
+class VoxelGrid {
+ public:
+  // The flat volume's voxels.
+  explicit VoxelGrid(const Volume& volume)
+      : volume_(volume), steps_(cornerSteps(volume)), strides_(voxelStrides(volume)) {}
+  // The blocks' voxels; `geometry` gives dims and spacing (its voxels are not read and may be
+  // empty). Throws std::logic_error if the two differ in size.
+  VoxelGrid(const Volume& geometry, const BlockedVolume& blocked)
+      : volume_(geometry), blocked_(&blocked), steps_(kBlockStrides), strides_(kBlockStrides) {
+    if (blocked.dims != geometry.dims || blocked.spacing != geometry.spacing)
+      throw std::logic_error("VoxelGrid: the blocked volume is not of this volume's geometry");
+  }
+
+  const Volume& geometry() const { return volume_; }
+  const BlockedVolume* blocks() const { return blocked_; }
+
+  // Voxel v (inside the volume). From it, `steps` lead to a cell's far corners (0 along a
+  // one-voxel axis of a flat volume) and `strides` to the next voxel along each axis, as far as
+  // `reaches` says.
+  const Voxel* address(glm::ivec3 v) const {
+    if (!blocked_) return volume_.voxels.data() + volume_.indexOf(v.x, v.y, v.z);
+    const glm::ivec3 block = v / kBlockSize;
+    return blocked_->blockVoxels(blocked_->blockIndex(block)) +
+           BlockedVolume::localIndex(v - BlockedVolume::windowOrigin(block));
+  }
+  glm::ivec3 steps() const { return steps_; }
+  glm::ivec3 strides() const { return strides_; }
+  // Whether the voxels v - below .. v + above (below <= 1, above <= 2) along each axis can be read
+  // from address(v) through strides: always in a block's window; not at a flat volume's faces,
+  // where the clamped functions of core/volume_sampling.h must be used.
+  bool reaches(glm::ivec3 v, int below, int above) const {
+    return blocked_ || hasAllNeighbours(volume_, v, below, above);
+  }
+
+  Voxel at(glm::ivec3 v) const {
+    return blocked_ ? blocked_->voxel(v.x, v.y, v.z) : volume_.at(v.x, v.y, v.z);
+  }
+
+  // Strides through a block's window.
+  static constexpr glm::ivec3 kBlockStrides{1, kStoredBlockSize, kStoredBlockSize* kStoredBlockSize};
+
+ private:
+  const Volume& volume_;
+  const BlockedVolume* blocked_ = nullptr;
+  glm::ivec3 steps_, strides_;
+};
+
+// The filters of core/volume_sampling.h on either grid.
+
+template <class Read = PlainDensity>
+float trilinearDensity(const VoxelGrid& grid, const Cell& cell, const Read& read = {}) {
+  return trilinearDensityAt(grid.address(cell.base), grid.steps(), cell, read);
+}
+
+template <class Read = PlainDensity>
+glm::vec3 trilinearGradient(const VoxelGrid& grid, const Cell& cell, const Read& read = {}) {
+  if (!grid.reaches(cell.base, 1, 2)) return trilinearGradient(grid.geometry(), cell, read);
+  return trilinearGradientAt(grid.address(cell.base), grid.strides(), grid.geometry().spacing, cell,
+                             read);
+}
+
+template <class Read = PlainDensity>
+float meanDensity(const VoxelGrid& grid, glm::ivec3 v, const Read& read = {}) {
+  if (!grid.reaches(v, 1, 1)) return meanDensity(grid.geometry(), v, read);
+  return meanDensityInterior(grid.address(v), grid.strides(), read);
+}
+
+template <class Read = PlainDensity>
+glm::vec3 nearestGradient(const VoxelGrid& grid, glm::ivec3 v, const Read& read = {}) {
+  if (!grid.reaches(v, 1, 1)) return nearestGradient(grid.geometry(), v, read);
+  return voxelGradientInterior(grid.address(v), grid.strides(), grid.geometry().spacing, read);
+}
+
+}  // namespace angio
