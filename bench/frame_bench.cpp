@@ -240,6 +240,17 @@ std::vector<BenchLevel> benchLevels(const std::vector<std::string>& wanted) {
 
 double benchAngle(int n, int count) { return 360.0 * n / count; }
 
+// The frame at angle 30 from the blocked volume against the flat volume's, pixel for pixel.
+bool sameImageFromBlocks(FrameRenderer& frames, const std::shared_ptr<const PreparedScene>& scene,
+                         RenderParams p, const BlockedVolume& blocked) {
+  p.angleDeg = 30;
+  const Image flat = frames.render(scene, p);
+  frames.techniques.blocks = &blocked;
+  const Image fromBlocks = frames.render(scene, p);
+  frames.techniques = {};
+  return fromBlocks.pixels == flat.pixels;
+}
+
 BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
                           const BenchSettings& settings) {
   std::optional<tbb::global_control> limit;
@@ -305,6 +316,9 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
       report.rows.push_back(timeVariant(level.name, "blocked volume", settings.angles, p, fromBlocks));
       std::fprintf(stderr, "bench: %s blocked volume %.1f ms\n", level.name.c_str(),
                    report.rows.back().medianMs);
+      if (!sameImageFromBlocks(frames, scene, p, blocked))
+        report.blockedImagesDiffering.push_back(level.name);
+      ++report.blockedImagesCompared;
     }
     if (settings.withContributions) {
       // Thesis fig. 4.9 ff.: "contribution" = everything but one technique, at every level;
@@ -375,6 +389,14 @@ std::string formatTable(const BenchReport& r) {
       b.buildMs, b.memoryMiB, b.memoryRatio, b.backgroundBlocks, b.blocks, b.visibleBlocks,
       b.classifyMs);
   out << line;
+  if (r.blockedImagesCompared > 0) {
+    out << "frames from the blocked volume equal to the flat volume's (angle 30): "
+        << r.blockedImagesCompared - int(r.blockedImagesDiffering.size()) << " of "
+        << r.blockedImagesCompared << " levels";
+    for (const std::string& level : r.blockedImagesDiffering)
+      out << (level == r.blockedImagesDiffering.front() ? "; differ: " : ", ") << level;
+    out << "\n";
+  }
   for (const auto& [latency, memory] : {std::pair{r.recycledInterrupt, "recycled"},
                                         std::pair{r.freshInterrupt, "fresh (first after a load)"}}) {
     std::snprintf(line, sizeof line,
@@ -430,7 +452,9 @@ std::string toJson(const BenchReport& r) {
                      {"blocks", r.blocking.blocks},
                      {"dummy_blocks", r.blocking.backgroundBlocks},
                      {"visible_blocks", r.blocking.visibleBlocks},
-                     {"classify_ms", r.blocking.classifyMs}}},
+                     {"classify_ms", r.blocking.classifyMs},
+                     {"images_compared", r.blockedImagesCompared},
+                     {"images_differing", r.blockedImagesDiffering}}},
                    {"interrupt_recycled", toJson(r.recycledInterrupt)},
                    {"interrupt_fresh", toJson(r.freshInterrupt)},
                    {"threads", r.threads},

@@ -77,7 +77,11 @@ struct BenchReport {
   double preprocessMs = 0;     // building the slice tiles for the axis
   double classifyMs = 0;       // classifying them for the TF
   double labelClassifyMs = 0;  // median re-classification after a label change (with labels)
-  BlockingReport blocking;     // the blocked volume (built and classified, not rendered from)
+  BlockingReport blocking;     // the blocked volume (built and classified)
+  // The "blocked volume" rows' levels whose frame at angle 30 from the blocked volume was not the
+  // flat volume's to the bit (a check at full size, beside the unit tests' small volumes).
+  std::vector<std::string> blockedImagesDiffering;
+  int blockedImagesCompared = 0;
   // High-quality frames cancelled part-way: cancel flag set -> the render returned. `recycled`:
   // in frame memory a previous frame gave back, as the GUI renders once it has shown a high frame;
   // `fresh`: in new memory, as the first high frame after a load.

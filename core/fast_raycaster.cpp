@@ -440,15 +440,23 @@ template <class Sampler>
 constexpr bool kBatchedSampler = std::is_same_v<Sampler, TrilinearRaySampler<typename Sampler::Read>> ||
                                  std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>;
 
-// Whether a span's samples go through the batches: plain DVR without labels. The mean's rows are
-// one lane (their rows read the same voxels and are copied).
+// Whether a span's samples go through the batches: plain DVR, its labels (if any) hidden or shown
+// but without TFs of their own (which pick a table per sample). The mean's rows are one lane
+// (their rows read the same voxels and are copied).
 template <class Mode>
 bool batchable(const Frame& f, const RowBundle& bundle) {
-  return f.batchSamples && !Mode::mip && !Mode::regions && !Mode::labels && !f.segments &&
+  return f.batchSamples && !Mode::mip && !Mode::regions && !(Mode::labels && f.ownTfs) && !f.segments &&
          (f.params.sampling.filter == Filter::trilinear || bundle.lanes == 1);
 }
 
 using BundleBatch = SampleBatch<kMaxBundleRows>;
+
+// The sampler's voxel reader: the frame's label mask, or the plain density.
+template <class Read>
+Read densityReader(const Frame& f) {
+  if constexpr (std::is_same_v<Read, MaskedDensity>) return f.labels.density();
+  else return Read{};
+}
 
 // The batch's samples of every lane reconstructed and classified with the sampler's filter; false
 // where the scalar path must take them (the volume's faces).
@@ -456,10 +464,12 @@ template <class Sampler>
 bool classifyBatch(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b,
                    const SampleTable& table, long first, int count, BundleBatch& batch) {
   if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
-    return classifyMeanSamples(f.voxels, b.positions, table, first, count, batch);
+    return classifyMeanSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions, table,
+                               first, count, batch);
   else
-    return classifyTrilinearSamples(f.voxels, b.positions, table, first, count, f.view.axis,
-                                    bundle.fracA.data(), bundle.lanes, batch);
+    return classifyTrilinearSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions,
+                                    table, first, count, f.view.axis, bundle.fracA.data(), bundle.lanes,
+                                    batch);
 }
 
 // The lanes' visible samples of a batch that they still need: none of a lane that is done, none
@@ -675,13 +685,6 @@ bool visitGroup(const Frame& f, const RowBundle& bundle, const RowTiles& row, co
     if (done) return true;
   }
   return false;
-}
-
-// The sampler's voxel reader: the frame's label mask, or the plain density.
-template <class Read>
-Read densityReader(const Frame& f) {
-  if constexpr (std::is_same_v<Read, MaskedDensity>) return f.labels.density();
-  else return Read{};
 }
 
 // Each lane's samples as the reference takes them (clippedSampleRange of the lane's own ray); a

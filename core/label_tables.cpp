@@ -12,6 +12,7 @@ LabelTables::LabelTables(const std::vector<LabelStyle>& styles) : LabelTables() 
     seen[style.label] = true;
     if (style.mode == LabelMode::hidden) {
       read_.mask[style.label] = 0;
+      read_.hiddenLabels |= std::uint32_t{1} << style.label;
       hidesAny_ = true;
     } else if (style.mode == LabelMode::tf) {
       TransferFunction tf;

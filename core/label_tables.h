@@ -15,6 +15,7 @@ namespace angio {
 // A voxel's density with hidden labels cut out: v & mask[label], the mask 0 for a hidden label.
 struct MaskedDensity {
   std::array<Voxel, kLabelCount> mask;
+  std::uint32_t hiddenLabels = 0;  // bit l: label l is hidden (mask[l] == 0), for SIMD lanes
   int operator()(Voxel v) const { return v & mask[labelOf(v)]; }
 };
 

@@ -45,31 +45,47 @@ class VoxelRaySampler {
  public:
   using Read = ReadDensity;
   VoxelRaySampler(const VoxelGrid& grid, const glm::dvec3&, int, const Read& read = {})
-      : grid_(grid), volume_(grid.geometry()), read_(read) {}
+      : grid_(grid), volume_(grid.geometry()), read_(read), cursor_(grid) {}
 
-  void moveTo(const glm::dvec3& q) { voxel_ = nearestVoxel(volume_, q); }
+  void moveTo(const glm::dvec3& q) {
+    voxel_ = nearestVoxel(volume_, q);
+    at_ = cursor_.address(voxel_);
+  }
   bool mayBeVisible(const TfTable&) const { return true; }
   glm::ivec2 densityRange() const { return {0, kDensityLevels - 1}; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
-  float density(float) const { return densityOf(voxel_); }
-  float densityAt(const glm::dvec3& q, float) const { return densityOf(nearestVoxel(volume_, q)); }
+  float density(float) const {
+    if constexpr (Filter == VoxelFilter::mean) return meanDensityAround(voxel_, at_);
+    else return float(read_(*at_));
+  }
+  float densityAt(const glm::dvec3& q, float) const {
+    const glm::ivec3 v = nearestVoxel(volume_, q);
+    if constexpr (Filter == VoxelFilter::mean) return meanDensityAround(v, grid_.address(v));
+    else return float(read_(grid_.at(v)));
+  }
   glm::vec3 gradientAt(const glm::dvec3& q, float) const {
     return nearestGradient(grid_, nearestVoxel(volume_, q), read_);
   }
-  glm::vec3 gradient(float) const { return nearestGradient(grid_, voxel_, read_); }
-  int label(float) const { return labelOf(grid_.at(voxel_)); }
+  glm::vec3 gradient(float) const {
+    if (!grid_.reaches(voxel_, 1, 1)) return nearestGradient(volume_, voxel_, read_);
+    return voxelGradientInterior(at_, grid_.strides(), volume_.spacing, read_);
+  }
+  int label(float) const { return labelOf(*at_); }
 
  private:
-  float densityOf(glm::ivec3 v) const {
-    if constexpr (Filter == VoxelFilter::mean) return meanDensity(grid_, v, read_);
-    else return float(read_(grid_.at(v)));
+  // meanDensity (core/volume_sampling.h) of voxel v, whose address is `at`.
+  float meanDensityAround(glm::ivec3 v, const Voxel* at) const {
+    if (!grid_.reaches(v, 1, 1)) return meanDensity(volume_, v, read_);
+    return meanDensityInterior(at, grid_.strides(), read_);
   }
 
   const VoxelGrid& grid_;
   const Volume& volume_;  // the geometry
   const Read read_;
+  VoxelCursor cursor_;
   glm::ivec3 voxel_{0};
+  const Voxel* at_ = nullptr;  // voxel_'s address
 };
 
 template <class Read>
@@ -202,10 +218,7 @@ class TrilinearRaySampler {
   // shell can be read (everywhere but at a flat volume's faces) half of the 48 neighbours are the
   // cell's own corners, already in corners_ (the same float values), so only the 24 voxels of the
   // shell around the cell are read.
-  // Out of line, as GCC chose before: inlined into the row loop it made the loop outgrow GCC's
-  // limits, which then called cellAt and interpolate instead of inlining them (high level 10-15 %
-  // slower, `angioray bench`).
-  [[gnu::noinline]] void loadGradients() {
+  void loadGradients() {
     gradientsLoaded_ = true;
     if (grid_.reaches(cached_, 1, 2)) {
       const Voxel* base = base_;

@@ -25,6 +25,7 @@
 #include <xsimd/xsimd.hpp>
 
 #include "core/compositing.h"
+#include "core/label_tables.h"
 #include "core/volume.h"
 #include "core/volume_sampling.h"
 #include "core/voxel_grid.h"
@@ -166,6 +167,19 @@ inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset) {
   return (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0x0FFF);
 }
 
+// The same densities as `read` gives them: PlainDensity's, or MaskedDensity's with the voxels of
+// hidden labels read as 0 (core/label_tables.h).
+inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset, const PlainDensity&) {
+  return densitiesAt(words, offset);
+}
+inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset,
+                            const MaskedDensity& read) {
+  const IntLanes word = gatherInts(words, offset >> 1);
+  const IntLanes voxel = (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0xFFFF);
+  const IntLanes hidden = (IntLanes(std::int32_t(read.hiddenLabels)) >> (voxel >> 12)) & IntLanes(1);
+  return voxel & IntLanes(0x0FFF) & (hidden - IntLanes(1));  // all bits where shown, none where hidden
+}
+
 // Whether every voxel index of the half stays below the volume's last voxel.
 inline bool belowLastVoxel(const Volume& volume, const DoubleLanes& highestIndex) {
   return xsimd::all(highestIndex < DoubleLanes(double(volume.voxels.size() - 1)));
@@ -255,9 +269,9 @@ inline void classifyRow(const SampleTable& table, const FloatLanes& density, int
 // row: the rows of a bundle read the same voxels. False, with the batch unset, where a voxel lacks
 // a neighbour (the volume's faces) or the lanes lie too far apart (voxelLanes): there the caller
 // samples one by one.
-template <int Rows>
-bool classifyMeanSamples(const VoxelGrid& grid, const RaySamples& positions, const SampleTable& table,
-                         long first, int count, SampleBatch<Rows>& batch) {
+template <int Rows, class Read>
+bool classifyMeanSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
+                         const SampleTable& table, long first, int count, SampleBatch<Rows>& batch) {
   const Volume& volume = grid.geometry();
   const glm::ivec3 strides = grid.strides();
   BatchAddresses addresses(grid, strides.z);
@@ -277,10 +291,10 @@ bool classifyMeanSamples(const VoxelGrid& grid, const RaySamples& positions, con
   }
   BatchVoxels voxels;
   if (!addresses.finish(voxels)) return false;
-  IntLanes sum = densitiesAt(voxels.words, voxels.offset);
+  IntLanes sum = densitiesAt(voxels.words, voxels.offset, read);
   for (int axis = 0; axis < 3; ++axis)
-    sum += densitiesAt(voxels.words, voxels.offset - IntLanes(strides[axis])) +
-           densitiesAt(voxels.words, voxels.offset + IntLanes(strides[axis]));
+    sum += densitiesAt(voxels.words, voxels.offset - IntLanes(strides[axis]), read) +
+           densitiesAt(voxels.words, voxels.offset + IntLanes(strides[axis]), read);
   batch.first = first;
   classifyRow(table, xsimd::to_float(sum) / FloatLanes(7.f), count, batch.rows[0]);
   return true;
@@ -297,8 +311,9 @@ struct CellLanes {
 };
 
 // cellAt of every lane, and the cells' corner densities. False where BatchAddresses is.
-inline bool cellLanes(const VoxelGrid& grid, const RaySamples& positions, long first, int count,
-                      CellLanes& cells) {
+template <class Read>
+bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positions, long first,
+               int count, CellLanes& cells) {
   const Volume& volume = grid.geometry();
   const glm::ivec3 steps = grid.steps();
   BatchAddresses addresses(grid, steps.x + steps.y + steps.z);
@@ -320,7 +335,7 @@ inline bool cellLanes(const VoxelGrid& grid, const RaySamples& positions, long f
   for (int axis = 0; axis < 3; ++axis) cells.frac[axis] = narrowToFloat(frac[axis][0], frac[axis][1]);
   for (int c = 0; c < 8; ++c) {
     const int offset = (c & 1) * steps.x + (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
-    cells.corner[c] = xsimd::to_float(densitiesAt(voxels.words, voxels.offset + IntLanes(offset)));
+    cells.corner[c] = xsimd::to_float(densitiesAt(voxels.words, voxels.offset + IntLanes(offset), read));
   }
   return true;
 }
@@ -335,12 +350,12 @@ inline FloatLanes bilinearLanes(const CellLanes& cells, int dz, const FloatLanes
 
 // Trilinear for each row of a bundle: the rows' fractions along the rotation axis `axis` replace
 // the cells' (TrilinearRaySampler::density). False where the scalar path must take the batch.
-template <int Rows>
-bool classifyTrilinearSamples(const VoxelGrid& grid, const RaySamples& positions,
+template <int Rows, class Read>
+bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
                               const SampleTable& table, long first, int count, int axis,
                               const float* fracA, int rows, SampleBatch<Rows>& batch) {
   CellLanes cells;
-  if (!cellLanes(grid, positions, first, count, cells)) return false;
+  if (!cellLanes(grid, read, positions, first, count, cells)) return false;
   batch.first = first;
   const auto& f = cells.frac;
   if (axis == 2) {  // the two planes serve every row

@@ -10,6 +10,7 @@
 // blocked grid never needs the clamped path. The flat grid does at the faces, and there reads the
 // Volume's voxels through volume_sampling.h's clamped functions.
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 
 #include <glm/glm.hpp>
@@ -67,6 +68,37 @@ class VoxelGrid {
   glm::ivec3 steps_, strides_;
 };
 
+// VoxelGrid::address for the voxels of one ray, which stay in one block for many samples in a
+// row: a block's voxels are looked up when the ray enters it, not at every voxel.
+class VoxelCursor {
+ public:
+  explicit VoxelCursor(const VoxelGrid& grid) : grid_(grid) {}
+
+  const Voxel* address(glm::ivec3 v) {
+    if (!grid_.blocks()) return grid_.address(v);
+    const glm::ivec3 local = v - origin_;  // in [1, 32] along every axis inside the block's core
+    if (glm::any(glm::lessThan(local, glm::ivec3(kBlockOverlapBelow))) ||
+        glm::any(glm::greaterThanEqual(local, glm::ivec3(kBlockOverlapBelow + kBlockSize))))
+      return enter(v);
+    return voxels_ + BlockedVolume::localIndex(local);
+  }
+
+ private:
+  // Out of line: once per block a ray enters, and the flat grid's loops stay as small as before.
+  [[gnu::noinline]] const Voxel* enter(glm::ivec3 v) {
+    const glm::ivec3 block = v / kBlockSize;
+    const BlockedVolume& blocked = *grid_.blocks();
+    voxels_ = blocked.blockVoxels(blocked.blockIndex(block));
+    origin_ = BlockedVolume::windowOrigin(block);
+    return voxels_ + BlockedVolume::localIndex(v - origin_);
+  }
+
+  const VoxelGrid& grid_;
+  const Voxel* voxels_ = nullptr;  // the current block's window
+  // Its first voxel; at first far below the volume, so that every voxel is outside the block.
+  glm::ivec3 origin_{std::numeric_limits<int>::min() / 2};
+};
+
 // The filters of core/volume_sampling.h on either grid.
 
 template <class Read = PlainDensity>
@@ -79,12 +111,6 @@ glm::vec3 trilinearGradient(const VoxelGrid& grid, const Cell& cell, const Read&
   if (!grid.reaches(cell.base, 1, 2)) return trilinearGradient(grid.geometry(), cell, read);
   return trilinearGradientAt(grid.address(cell.base), grid.strides(), grid.geometry().spacing, cell,
                              read);
-}
-
-template <class Read = PlainDensity>
-float meanDensity(const VoxelGrid& grid, glm::ivec3 v, const Read& read = {}) {
-  if (!grid.reaches(v, 1, 1)) return meanDensity(grid.geometry(), v, read);
-  return meanDensityInterior(grid.address(v), grid.strides(), read);
 }
 
 template <class Read = PlainDensity>

@@ -83,8 +83,9 @@ TEST(BlockedRendering, SameImageAsTheFlatVolume) {
   }
 }
 
-// Hidden labels read as density 0, own TFs pick by the nearest voxel's label; both read the
-// label bits, which the blocks keep. VesselGlyph regions use two more TFs.
+// Hidden labels read as density 0 (in the sample batches too, where no label has its own TF), own
+// TFs pick by the nearest voxel's label; both read the label bits, which the blocks keep.
+// VesselGlyph regions use two more TFs.
 TEST(BlockedRendering, LabelsAndRegionsGiveTheFlatVolumesImage) {
   Scene scene;
   for (Voxel& v : scene.volume.voxels) {  // label 1 on dense voxels, label 2 on soft tissue
@@ -100,6 +101,7 @@ TEST(BlockedRendering, LabelsAndRegionsGiveTheFlatVolumesImage) {
                              LabelMode::tf,
                              {{-1024, {0, 1, 0}, 0}, {-200, {0, 1, 0}, 0.1}, {3071, {0, 1, 0}, 0.1}},
                              {0, 1, 0}}});
+  const LabelTables hiddenOnly({{1, "bone", LabelMode::hidden, {}, {1, 1, 1}}});  // batched
   const TfTable focus =
       buildTable({"focus", {{-1024, {0, 0, 0}, 0}, {50, {1, 0, 0}, 0}, {100, {1, 0, 0}, 0.6}}});
   for (Filter filter : {Filter::mean, Filter::trilinear}) {
@@ -107,6 +109,7 @@ TEST(BlockedRendering, LabelsAndRegionsGiveTheFlatVolumesImage) {
     const ViewGeometry view = makeViewGeometry(scene.volume, p);
     const RayRegions regions = test_support::varyingRegions(view, 3.f, 20, 4.f, 40.f);
     for (const RegionTables& tables : {RegionTables{nullptr, nullptr, nullptr, &table, &labels},
+                                       RegionTables{nullptr, nullptr, nullptr, &table, &hiddenOnly},
                                        RegionTables{&regions, &focus, &table, nullptr, &labels}}) {
       const SliceTiles tiles = buildSliceTiles(scene.volume, Axis::k);
       const TileClassification visible(tiles, tables);
@@ -116,7 +119,8 @@ TEST(BlockedRendering, LabelsAndRegionsGiveTheFlatVolumesImage) {
       FastRenderOptions fromBlocks;
       fromBlocks.blocks = &scene.blocked;
       EXPECT_TRUE(renderFast(scene.geometry, visible, tables, p, fromBlocks).pixels == flat.pixels)
-          << "filter " << int(filter) << (tables.regions ? ", regions" : "");
+          << "filter " << int(filter) << (tables.regions ? ", regions" : "")
+          << (tables.labels == &hiddenOnly ? ", hidden only" : "");
     }
   }
 }

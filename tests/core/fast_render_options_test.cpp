@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/fast_raycaster.h"
+#include "core/label_tables.h"
 #include "core/ray_templates.h"
 #include "core/view_geometry.h"
 #include "phantom/phantom.h"
@@ -131,35 +132,69 @@ TEST(FastRenderOptions, RowBundlesKeepTheImage) {
   }
 }
 
-// Eight samples reconstructed and classified at once (core/sample_batch.h) against one by one: the
-// same bits for both filters that batch, about every axis, shaded or not, and clipped by a crop
-// box and a plane tilted towards the rotation axis, which starts the rows of a bundle at different
-// samples. The volume's odd voxel count and its faces exercise the batches' fallback to the scalar
-// path.
-TEST(FastRenderOptions, SampleBatchesKeepTheImage) {
-  const Volume volume =
-      generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
-  ASSERT_EQ(volume.voxels.size() % 2, 1u);
-  const TfTable table = buildTable({"soft tissue and vessels",
-                                    {{-1024, {0, 0, 0}, 0},
-                                     {0, {0.8f, 0.4f, 0.3f}, 0.02f},
-                                     {200, {1, 0.2f, 0.2f}, 0.3f},
-                                     {600, {1, 1, 0.9f}, 0.8f}}});
-  for (Axis axis : {Axis::k, Axis::i, Axis::j}) {
+TfTable softTissueAndVessels() {
+  return buildTable({"soft tissue and vessels",
+                     {{-1024, {0, 0, 0}, 0},
+                      {0, {0.8f, 0.4f, 0.3f}, 0.02f},
+                      {200, {1, 0.2f, 0.2f}, 0.3f},
+                      {600, {1, 1, 0.9f}, 0.8f}}});
+}
+
+// Batched against one by one, bit for bit, for both filters that batch (nearest does not), osd 1
+// and 0.3, shaded or not, and clipped (test_support::variedParams). With `unlabelled`, the same
+// frame without the tables' labels must differ, so the labels are in effect.
+void expectBatchesKeepTheImage(const Volume& volume, const RegionTables& tables,
+                               std::initializer_list<Axis> axes, const TfTable* unlabelled = nullptr) {
+  for (Axis axis : axes) {
     const SliceTiles tiles = buildSliceTiles(volume, axis);
-    const TileClassification visible(tiles, singleTable(table), /*mip=*/false);
-    for (Filter filter : {Filter::mean, Filter::trilinear})  // nearest is not batched
+    const TileClassification visible(tiles, tables);
+    for (Filter filter : {Filter::mean, Filter::trilinear})
       for (double osd : {1.0, 0.3})
         for (int variant = 0; variant < 3; ++variant) {
           const RenderParams p = test_support::variedParams(volume, axis, filter, osd, variant);
           FastRenderOptions oneByOne;
           oneByOne.batchSamples = false;
-          const Image batched = renderFast(volume, visible, table, p);
+          const Image batched = renderFast(volume, visible, tables, p);
           ASSERT_TRUE(showsSomething(batched));
-          EXPECT_TRUE(renderFast(volume, visible, table, p, oneByOne).pixels == batched.pixels)
+          if (unlabelled) {
+            const TileClassification plain(tiles, singleTable(*unlabelled));
+            EXPECT_FALSE(renderFast(volume, plain, *unlabelled, p).pixels == batched.pixels);
+          }
+          EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels)
               << toString(axis) << " filter " << int(filter) << " osd " << osd << " variant " << variant;
         }
   }
+}
+
+// Eight samples reconstructed and classified at once (core/sample_batch.h) against one by one,
+// about every axis. The crop box and tilted plane start the rows of a bundle at different samples;
+// the volume's odd voxel count and its faces exercise the batches' fallback to the scalar path.
+TEST(FastRenderOptions, SampleBatchesKeepTheImage) {
+  const Volume volume =
+      generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
+  ASSERT_EQ(volume.voxels.size() % 2, 1u);
+  const TfTable table = softTissueAndVessels();
+  expectBatchesKeepTheImage(volume, singleTable(table), {Axis::k, Axis::i, Axis::j});
+}
+
+// The same with hidden labels (bone removal): the lanes read a hidden label's voxels as density 0,
+// as MaskedDensity does one by one. Label 1 on dense voxels (bone), label 3 on a box through the
+// body, label 2 elsewhere and shown.
+TEST(FastRenderOptions, SampleBatchesKeepTheImageWithHiddenLabels) {
+  Volume volume =
+      generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
+  for (int k = 0; k < volume.dims.z; ++k)
+    for (int j = 0; j < volume.dims.y; ++j)
+      for (int i = 0; i < volume.dims.x; ++i) {
+        Voxel& v = volume.voxels[volume.indexOf(i, j, k)];
+        const int label = huOfDensity(densityOf(v)) > 500 ? 1 : (i > 12 && i < 25 && k > 20) ? 3 : 2;
+        v = Voxel(densityOf(v) | label << 12);
+      }
+  const TfTable table = softTissueAndVessels();
+  const LabelTables hidden(
+      {{1, "bone", LabelMode::hidden, {}, {1, 1, 1}}, {3, "box", LabelMode::hidden, {}, {1, 1, 1}}});
+  expectBatchesKeepTheImage(volume, RegionTables{nullptr, nullptr, nullptr, &table, &hidden},
+                            {Axis::k, Axis::i}, &table);
 }
 
 // Rows and bundles are split among threads as oneTBB likes; each pixel must not care.
