@@ -310,6 +310,11 @@ BenchReport runFrameBench(const Volume& volume, const TransferFunction& tf,
     clipped.clipping = benchClipping(volume);
     report.rows.push_back(timeFrames(level.name, "clipped", settings.angles, clipped,
                                      sceneFrames(frames, scene, previous)));
+    RenderParams mip = p;
+    mip.compositing = Compositing::mip;
+    report.rows.push_back(
+        timeFrames(level.name, "mip", settings.angles, mip, sceneFrames(frames, scene, previous)));
+    std::fprintf(stderr, "bench: %s mip %.1f ms\n", level.name.c_str(), report.rows.back().medianMs);
     if (blocksServe(blocked, scene->tables(nullptr), p)) {
       Switches fromBlocks;
       fromBlocks.options.blocks = &blocked;

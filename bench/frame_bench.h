@@ -15,9 +15,10 @@
 
 namespace angio {
 
-// Every level has an "all" row and a "clipped" row: that frame with a crop box around the middle
+// Every level has an "all" row, a "clipped" row: that frame with a crop box around the middle
 // 80 % of the volume and a clip plane facing the viewer through its centre (the per-ray clip
-// intervals, core/clip_interval.h).
+// intervals, core/clip_interval.h), a "mip" row (MIP through the default window, 250 / 600 HU)
+// and, where the TF allows it, a "blocked volume" row (the frame from the blocked volume).
 struct BenchSettings {
   int angles = 36;
   Axis axis = Axis::k;

@@ -48,6 +48,11 @@ struct Frame {
   bool batchSamples = true;
   bool ownTfs = false;   // some label has its own TF
   bool clipped = false;  // a crop box, clip plane or slab cuts the rays (params.clipping)
+  // MIP through the window (mipPixel): a maximum up to mipBlack shows black, one from mipWhite on
+  // white. A ray's maximum starts at mipBlack, so tiles, groups and cells no denser are skipped
+  // (air and fat below a vessel window), and a ray is done once its maximum reaches mipWhite.
+  float mipBlack = 0.f;
+  float mipWhite = std::numeric_limits<float>::infinity();
   // Visible where any region's TF is: a cell hidden from it is hidden from every sample in it.
   const TfTable* anyRegionTf = nullptr;
   const std::vector<std::uint8_t>* pixels = nullptr;  // FastRenderOptions::pixels
@@ -349,6 +354,7 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   Sampler& sampler = b.sampler;
   if constexpr (Mode::mip) {
     lane.mipMaximum = std::max(lane.mipMaximum, sampler.density(bundle.fracA[l]));
+    if (lane.mipMaximum >= f.mipWhite) b.finish(lane);
   } else {
     // (Without regions the sampler's cell already passed this test for every lane. A
     // pre-integrated segment reaches back to the sample before: sampleSpan tests that.)
@@ -710,6 +716,31 @@ void clipLanes(const Frame& f, const RowBundle& bundle, int x, BundleRay<Sampler
   }
 }
 
+// MIP: the largest whole density the window shows black, and the smallest it shows white
+// (mipPixel is monotone in the density, so every sample up to the one shows black, and every
+// sample from the other white).
+struct MipBounds {
+  float black = 0.f;
+  float white = std::numeric_limits<float>::infinity();
+};
+MipBounds mipBounds(const MipWindow& window) {
+  MipBounds bounds;
+  int d = 0;
+  for (; d < kDensityLevels && mipPixel(float(d), window).r <= 0.f; ++d) bounds.black = float(d);
+  for (; d < kDensityLevels; ++d)
+    if (mipPixel(float(d), window).r >= 1.f) return {bounds.black, float(d)};
+  return bounds;
+}
+
+// MIP: the pixel of a ray whose column was never started (no tile could raise its maximum above
+// mipBlack): black where it has samples in the domain and the clipping's interval, none where it
+// has none (as a started lane's `shows` says).
+glm::vec4 unstartedMipPixel(const Frame& f, int x, int y) {
+  if (f.clipped && clippedSampleRange(f.view, f.params.clipping, f.view.rayOrigin(x, y)).empty())
+    return glm::vec4(0.f);
+  return mipPixel(f.mipBlack, f.params.mip);
+}
+
 template <class Sampler>
 BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
   BundleRay<Sampler> b{
@@ -717,8 +748,10 @@ BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
       Sampler(f.voxels, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
       {},
       bundle.lanes};
-  for (int l = 0; l < bundle.lanes; ++l)
+  for (int l = 0; l < bundle.lanes; ++l) {
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
+    b.lanes[l].mipMaximum = f.mipBlack;
+  }
   if (f.clipped) clipLanes(f, bundle, x, b);
   // The rows of a bundle differ only along the rotation axis, inside the domain: one range.
   if (f.segments) b.domainEnd = sampleRange(f.view, f.view.rayOrigin(x, bundle.firstRow)).last + 1;
@@ -736,7 +769,7 @@ void writePixels(const Frame& f, const RowBundle& bundle, const RowScratch<Sampl
       const auto& b = scratch.rays[x];
       if (!b)
         image.at(x, y) = Mode::mip && templates.columnBegin[x] != templates.columnBegin[x + 1]
-                             ? mipPixel(0.f, f.params.mip)
+                             ? unstartedMipPixel(f, x, y)
                              : glm::vec4(0.f);
       else
         image.at(x, y) = !Mode::mip          ? b->lanes[l].ray.pixel()
@@ -796,6 +829,9 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
     const std::int32_t group = templates.rankGroup[rank];
     if constexpr (Mode::profile) countRank(f, bundle, rank, scratch);
     if (!Mode::mip && f.skipGroups && !scratch.tiles.groupMask[group]) continue;
+    // MIP: a group no denser than the window's black raises no ray's maximum; columns that only
+    // cross such groups are never started (unstartedMipPixel).
+    if (Mode::mip && f.skipGroups && float(scratch.tiles.groupMaxDensity[group]) <= f.mipBlack) continue;
     for (std::uint32_t v = templates.rankBegin[rank]; v < templates.rankBegin[rank + 1]; ++v) {
       const GroupVisit visit = templates.visits[v];
       auto& state = rays[visit.column];
@@ -947,6 +983,11 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.batchSamples = options.batchSamples;
   f.ownTfs = f.labels.ownsAny();
   f.clipped = params.clipping.any();
+  if (params.compositing == Compositing::mip) {
+    const MipBounds bounds = mipBounds(params.mip);
+    f.mipBlack = bounds.black;
+    f.mipWhite = bounds.white;
+  }
   f.pixels = options.pixels;
   if (f.pixels && f.pixels->size() != std::size_t(f.view.width) * f.view.height)
     throw std::logic_error("renderFast: the pixel mask is not of the view's size");

@@ -4,6 +4,7 @@
 // transparent samples are skipped; the test checks the documented tolerance and counts.
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -103,6 +104,51 @@ TEST(FastRaycaster, MatchesReferenceOnRealAorta) {
     cases.push_back({axis, quality, n % 4 != 1, n % 6 == 5, 15.0 * n + 3});
   }
   expectSameImages(volume, tf, cases);
+}
+
+// MIP through a window: a ray's maximum starts at the window's black, so what lies below it is
+// skipped, and a ray ends once the window shows it white. Neither may change a pixel, with a crop
+// box and a plane clipping some rays away entirely (transparent, not black). A window showing every
+// density evaluates more.
+TEST(FastRaycaster, MipSkipsBelowTheWindowAndStopsAtWhite) {
+  const Volume volume =
+      generatePhantom({.dims = {48, 48, 112}, .seed = 2, .style = PhantomStyle::realistic}).volume;
+  const TfTable table = buildTable(loadPresetOrFile("cta-vessels-bone"));
+  for (Axis axis : {Axis::k, Axis::i}) {
+    const SliceTiles tiles = buildSliceTiles(volume, axis);
+    const TileClassification visible(tiles, singleTable(table), /*mip=*/true);
+    for (Quality quality : {Quality::fast, Quality::medium, Quality::high})
+      for (bool clipped : {false, true}) {
+        RenderParams p;
+        p.axis = axis;
+        p.angleDeg = 97;  // rays across the table, not through it: columns of air above the body
+        p.sampling = qualitySampling(quality);
+        p.compositing = Compositing::mip;
+        if (clipped) {
+          const glm::dvec3 extent = domainExtent(volume);
+          p.clipping.crop = CropBox{0.2 * extent, 0.9 * extent};
+          p.clipping.plane = ClipPlane{false, 0, 0.5 * extent, {0.3, -0.8, 0.5}};
+        }
+        const auto where = [&] {
+          return std::string(toString(axis)) + " " + toString(quality) + (clipped ? " clipped" : "");
+        };
+        p.mip = {.window = 5000, .level = 1000};  // no density black or white
+        FastRenderStats wideStats;
+        const Image wide = renderFast(volume, visible, table, p, {}, &wideStats);
+        EXPECT_LE(maxChannelDifference(wide, renderReference(volume, table, p)), 1.f / 255.f) << where();
+        // Black up to 175 HU and white from 325 HU; black up to 950 HU (only bone shows), so that
+        // whole columns, clipped away or not, are never started.
+        for (const MipWindow window :
+             {MipWindow{.window = 150, .level = 250}, MipWindow{.window = 100, .level = 1000}}) {
+          p.mip = window;
+          FastRenderStats stats;
+          const Image narrow = renderFast(volume, visible, table, p, {}, &stats);
+          EXPECT_LE(maxChannelDifference(narrow, renderReference(volume, table, p)), 1.f / 255.f)
+              << where() << " level " << window.level;
+          EXPECT_LT(stats.samples, wideStats.samples / 2) << where() << " level " << window.level;
+        }
+      }
+  }
 }
 
 // A classification belongs to its tiles' axis and its TFs: handed another's, the raycaster refuses
