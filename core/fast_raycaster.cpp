@@ -446,12 +446,12 @@ template <class Sampler>
 constexpr bool kBatchedSampler = std::is_same_v<Sampler, TrilinearRaySampler<typename Sampler::Read>> ||
                                  std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>;
 
-// Whether a span's samples go through the batches: plain DVR, its labels (if any) hidden or shown
-// but without TFs of their own (which pick a table per sample). The mean's rows are one lane
-// (their rows read the same voxels and are copied).
+// Whether a span's samples go through the batches: DVR or MIP without regions, its labels (if
+// any) hidden or shown but without TFs of their own (which pick a table per sample). The mean's
+// rows are one lane (their rows read the same voxels and are copied).
 template <class Mode>
 bool batchable(const Frame& f, const RowBundle& bundle) {
-  return f.batchSamples && !Mode::mip && !Mode::regions && !(Mode::labels && f.ownTfs) && !f.segments &&
+  return f.batchSamples && !Mode::regions && !(Mode::labels && f.ownTfs) && !f.segments &&
          (f.params.sampling.filter == Filter::trilinear || bundle.lanes == 1);
 }
 
@@ -563,11 +563,55 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
   return stop;
 }
 
+// MIP: each lane's densities of the batch's samples (trilinear: per row; mean: one lane); false
+// where the scalar path must take them.
+template <class Sampler>
+bool batchDensities(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b, long first,
+                    int count, std::array<FloatLanes, kMaxBundleRows>& densities) {
+  const auto read = densityReader<typename Sampler::Read>(f);
+  if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
+    return meanDensities(f.voxels, read, b.positions, first, count, densities[0]);
+  else
+    return trilinearRowDensities(f.voxels, read, b.positions, first, count, f.view.axis,
+                                 bundle.fracA.data(), bundle.lanes,
+                                 [&](int r, const FloatLanes& d) { densities[r] = d; });
+}
+
+// sampleEach for MIP: eight samples of every lane reconstructed at once, and each lane's maximum
+// raised by the largest of those it needs (from its first sample on). A maximum does not depend on
+// the order, so the bits are one by one's; a lane that reaches the window's white is done.
+template <class Mode, class Sampler>
+long mipBatches(const Frame& f, const RowBundle& bundle, long first, long stop, BundleRay<Sampler>& b) {
+  std::array<FloatLanes, kMaxBundleRows> densities;
+  for (long k = first; k < stop; k += kBatchSamples) {
+    const int count = int(std::min<long>(kBatchSamples, stop - k));
+    if (!batchDensities(f, bundle, b, k, count, densities)) {
+      const long reached = sampleEach<Mode>(f, bundle, k, k + count, b);
+      if (b.live == 0) return reached;
+      continue;
+    }
+    for (int l = 0; l < bundle.lanes; ++l) {
+      Lane& lane = b.lanes[l];
+      if (lane.done) continue;
+      // (resumeAt may be the lowest long: compared before it is subtracted.)
+      const int from = lane.resumeAt <= k ? 0 : int(std::min<long>(lane.resumeAt - k, count));
+      lane.mipMaximum = std::max(lane.mipMaximum, largestDensity(densities[l], from, count));
+      if (lane.mipMaximum >= f.mipWhite) b.finish(lane);
+    }
+    if (b.live == 0) return k + count - 1;
+  }
+  return stop;
+}
+
 // The samples [first, stop) of one tile run (sampleEach), in batches where they can be.
 template <class Mode, class Sampler>
 long sampleSpan(const Frame& f, const RowBundle& bundle, long first, long stop, BundleRay<Sampler>& b) {
-  if constexpr (kBatchedSampler<Sampler>)
-    if (batchable<Mode>(f, bundle)) return sampleBatches<Mode>(f, bundle, first, stop, b);
+  if constexpr (kBatchedSampler<Sampler>) {
+    if (batchable<Mode>(f, bundle)) {
+      if constexpr (Mode::mip) return mipBatches<Mode>(f, bundle, first, stop, b);
+      else return sampleBatches<Mode>(f, bundle, first, stop, b);
+    }
+  }
   return sampleEach<Mode>(f, bundle, first, stop, b);
 }
 

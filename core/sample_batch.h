@@ -20,6 +20,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <glm/glm.hpp>
 #include <xsimd/xsimd.hpp>
@@ -266,12 +267,12 @@ inline void classifyRow(const SampleTable& table, const FloatLanes& density, int
 }
 
 // The mean (thesis sec. 4.4: the nearest voxel and its six face neighbours, equally weighted), one
-// row: the rows of a bundle read the same voxels. False, with the batch unset, where a voxel lacks
+// row: the rows of a bundle read the same voxels. False, with nothing set, where a voxel lacks
 // a neighbour (the volume's faces) or the lanes lie too far apart (voxelLanes): there the caller
 // samples one by one.
-template <int Rows, class Read>
-bool classifyMeanSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                         const SampleTable& table, long first, int count, SampleBatch<Rows>& batch) {
+template <class Read>
+bool meanDensities(const VoxelGrid& grid, const Read& read, const RaySamples& positions, long first,
+                   int count, FloatLanes& densities) {
   const Volume& volume = grid.geometry();
   const glm::ivec3 strides = grid.strides();
   BatchAddresses addresses(grid, strides.z);
@@ -295,8 +296,17 @@ bool classifyMeanSamples(const VoxelGrid& grid, const Read& read, const RaySampl
   for (int axis = 0; axis < 3; ++axis)
     sum += densitiesAt(voxels.words, voxels.offset - IntLanes(strides[axis]), read) +
            densitiesAt(voxels.words, voxels.offset + IntLanes(strides[axis]), read);
+  densities = xsimd::to_float(sum) / FloatLanes(7.f);
+  return true;
+}
+
+template <int Rows, class Read>
+bool classifyMeanSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
+                         const SampleTable& table, long first, int count, SampleBatch<Rows>& batch) {
+  FloatLanes densities;
+  if (!meanDensities(grid, read, positions, first, count, densities)) return false;
   batch.first = first;
-  classifyRow(table, xsimd::to_float(sum) / FloatLanes(7.f), count, batch.rows[0]);
+  classifyRow(table, densities, count, batch.rows[0]);
   return true;
 }
 
@@ -349,30 +359,46 @@ inline FloatLanes bilinearLanes(const CellLanes& cells, int dz, const FloatLanes
 }
 
 // Trilinear for each row of a bundle: the rows' fractions along the rotation axis `axis` replace
-// the cells' (TrilinearRaySampler::density). False where the scalar path must take the batch.
-template <int Rows, class Read>
-bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                              const SampleTable& table, long first, int count, int axis,
-                              const float* fracA, int rows, SampleBatch<Rows>& batch) {
+// the cells' (TrilinearRaySampler::density). Calls perRow(r, densities) for rows r = 0 .. rows - 1;
+// false, without calling it, where the scalar path must take the batch.
+template <class Read, class PerRow>
+bool trilinearRowDensities(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
+                           long first, int count, int axis, const float* fracA, int rows,
+                           PerRow&& perRow) {
   CellLanes cells;
   if (!cellLanes(grid, read, positions, first, count, cells)) return false;
-  batch.first = first;
   const auto& f = cells.frac;
   if (axis == 2) {  // the two planes serve every row
     const FloatLanes low = bilinearLanes(cells, 0, f[0], f[1]),
                      high = bilinearLanes(cells, 1, f[0], f[1]);
-    for (int r = 0; r < rows; ++r)
-      classifyRow(table, interpolateLanes(low, high, FloatLanes(fracA[r])), count, batch.rows[r]);
+    for (int r = 0; r < rows; ++r) perRow(r, interpolateLanes(low, high, FloatLanes(fracA[r])));
     return true;
   }
   for (int r = 0; r < rows; ++r) {
     const FloatLanes fx = axis == 0 ? FloatLanes(fracA[r]) : f[0];
     const FloatLanes fy = axis == 1 ? FloatLanes(fracA[r]) : f[1];
-    const FloatLanes density =
-        interpolateLanes(bilinearLanes(cells, 0, fx, fy), bilinearLanes(cells, 1, fx, fy), f[2]);
-    classifyRow(table, density, count, batch.rows[r]);
+    perRow(r, interpolateLanes(bilinearLanes(cells, 0, fx, fy), bilinearLanes(cells, 1, fx, fy), f[2]));
   }
   return true;
+}
+
+template <int Rows, class Read>
+bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
+                              const SampleTable& table, long first, int count, int axis,
+                              const float* fracA, int rows, SampleBatch<Rows>& batch) {
+  batch.first = first;
+  return trilinearRowDensities(
+      grid, read, positions, first, count, axis, fracA, rows,
+      [&](int r, const FloatLanes& density) { classifyRow(table, density, count, batch.rows[r]); });
+}
+
+// The largest of lanes from .. count - 1 of `densities` (-infinity where from >= count).
+inline float largestDensity(const FloatLanes& densities, int from, int count) {
+  alignas(64) std::array<float, kBatchSamples> lanes;
+  densities.store_aligned(lanes.data());
+  float largest = -std::numeric_limits<float>::infinity();
+  for (int j = from; j < count; ++j) largest = std::max(largest, lanes[j]);
+  return largest;
 }
 
 }  // namespace angio

@@ -140,29 +140,32 @@ TfTable softTissueAndVessels() {
                       {600, {1, 1, 0.9f}, 0.8f}}});
 }
 
-// Batched against one by one, bit for bit, for both filters that batch (nearest does not), osd 1
-// and 0.3, shaded or not, and clipped (test_support::variedParams). With `unlabelled`, the same
-// frame without the tables' labels must differ, so the labels are in effect.
+// Batched against one by one, bit for bit, for both filters that batch (nearest does not), DVR and
+// MIP, osd 1 and 0.3, shaded or not, and clipped (test_support::variedParams). With `unlabelled`,
+// the same frame without the tables' labels must differ, so the labels are in effect.
 void expectBatchesKeepTheImage(const Volume& volume, const RegionTables& tables,
                                std::initializer_list<Axis> axes, const TfTable* unlabelled = nullptr) {
   for (Axis axis : axes) {
     const SliceTiles tiles = buildSliceTiles(volume, axis);
-    const TileClassification visible(tiles, tables);
-    for (Filter filter : {Filter::mean, Filter::trilinear})
-      for (double osd : {1.0, 0.3})
-        for (int variant = 0; variant < 3; ++variant) {
-          const RenderParams p = test_support::variedParams(volume, axis, filter, osd, variant);
-          FastRenderOptions oneByOne;
-          oneByOne.batchSamples = false;
-          const Image batched = renderFast(volume, visible, tables, p);
-          ASSERT_TRUE(showsSomething(batched));
-          if (unlabelled) {
-            const TileClassification plain(tiles, singleTable(*unlabelled));
-            EXPECT_FALSE(renderFast(volume, plain, *unlabelled, p).pixels == batched.pixels);
+    const TileClassification visible(tiles, tables, /*mip=*/true);  // DVR and MIP
+    for (Compositing compositing : {Compositing::dvr, Compositing::mip})
+      for (Filter filter : {Filter::mean, Filter::trilinear})
+        for (double osd : {1.0, 0.3})
+          for (int variant = 0; variant < 3; ++variant) {
+            RenderParams p = test_support::variedParams(volume, axis, filter, osd, variant);
+            p.compositing = compositing;
+            FastRenderOptions oneByOne;
+            oneByOne.batchSamples = false;
+            const Image batched = renderFast(volume, visible, tables, p);
+            ASSERT_TRUE(showsSomething(batched));
+            if (unlabelled) {
+              const TileClassification plain(tiles, singleTable(*unlabelled), /*mip=*/true);
+              EXPECT_FALSE(renderFast(volume, plain, *unlabelled, p).pixels == batched.pixels);
+            }
+            EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels)
+                << toString(axis) << (compositing == Compositing::mip ? " mip" : " dvr") << " filter "
+                << int(filter) << " osd " << osd << " variant " << variant;
           }
-          EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels)
-              << toString(axis) << " filter " << int(filter) << " osd " << osd << " variant " << variant;
-        }
   }
 }
 
