@@ -329,6 +329,14 @@ float segmentShade(const Frame& f, const RowBundle& bundle, int l, long k, float
   return 0.5f * (frontShade + backShade);
 }
 
+// MIP: the lane's maximum raised to `density` if above it; the lane is done once the window shows
+// its maximum white.
+template <class Sampler>
+void raiseMaximum(const Frame& f, Lane& lane, float density, BundleRay<Sampler>& b) {
+  lane.mipMaximum = std::max(lane.mipMaximum, density);
+  if (lane.mipMaximum >= f.mipWhite) b.finish(lane);
+}
+
 // One sample k of one lane, after the bundle's sampler moved to it.
 template <class Mode, class Sampler>
 void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRay<Sampler>& b) {
@@ -353,8 +361,7 @@ void sampleLane(const Frame& f, const RowBundle& bundle, int l, long k, BundleRa
   }
   Sampler& sampler = b.sampler;
   if constexpr (Mode::mip) {
-    lane.mipMaximum = std::max(lane.mipMaximum, sampler.density(bundle.fracA[l]));
-    if (lane.mipMaximum >= f.mipWhite) b.finish(lane);
+    raiseMaximum(f, lane, sampler.density(bundle.fracA[l]), b);
   } else {
     // (Without regions the sampler's cell already passed this test for every lane. A
     // pre-integrated segment reaches back to the sample before: sampleSpan tests that.)
@@ -478,6 +485,13 @@ bool classifyBatch(const Frame& f, const RowBundle& bundle, const BundleRay<Samp
                                     batch);
 }
 
+// The first of the batch's samples (from `first`, `count` of them) that the lane needs: its clip
+// interval may start inside the batch or after it (then `count`).
+int firstNeeded(const Lane& lane, long first, int count) {
+  // (resumeAt may be the lowest long: compared before it is subtracted.)
+  return lane.resumeAt <= first ? 0 : int(std::min<long>(lane.resumeAt - first, count));
+}
+
 // The lanes' visible samples of a batch that they still need: none of a lane that is done, none
 // before its first sample (the view clipping). Returns their union.
 template <class Sampler>
@@ -486,9 +500,7 @@ std::uint32_t neededSamples(const RowBundle& bundle, const BundleRay<Sampler>& b
   for (int l = 0; l < bundle.lanes; ++l) {
     const Lane& lane = b.lanes[l];
     std::uint32_t& visible = batch.rows[l].visible;
-    // (resumeAt may be the lowest long: compared before it is subtracted.)
-    const int skip =
-        lane.resumeAt <= batch.first ? 0 : int(std::min<long>(lane.resumeAt - batch.first, 31));
+    const int skip = firstNeeded(lane, batch.first, kBatchSamples);
     visible = lane.done ? 0 : visible >> skip << skip;
     any |= visible;
   }
@@ -500,7 +512,7 @@ template <class Sampler>
 void countBatch(const RowBundle& bundle, const BundleBatch& batch, int l, int last,
                 BundleRay<Sampler>& b) {
   Lane& lane = b.lanes[l];
-  for (long j = lane.resumeAt <= batch.first ? 0 : lane.resumeAt - batch.first; j <= last; ++j)
+  for (int j = firstNeeded(lane, batch.first, kBatchSamples); j <= last; ++j)
     countSample(bundle, batch.first + j, batch.rows[l].opacity[j], lane, *b.profile);
 }
 
@@ -593,10 +605,7 @@ long mipBatches(const Frame& f, const RowBundle& bundle, long first, long stop, 
     for (int l = 0; l < bundle.lanes; ++l) {
       Lane& lane = b.lanes[l];
       if (lane.done) continue;
-      // (resumeAt may be the lowest long: compared before it is subtracted.)
-      const int from = lane.resumeAt <= k ? 0 : int(std::min<long>(lane.resumeAt - k, count));
-      lane.mipMaximum = std::max(lane.mipMaximum, largestDensity(densities[l], from, count));
-      if (lane.mipMaximum >= f.mipWhite) b.finish(lane);
+      raiseMaximum(f, lane, largestDensity(densities[l], firstNeeded(lane, k, count), count), b);
     }
     if (b.live == 0) return k + count - 1;
   }
@@ -973,10 +982,10 @@ Image frameImage(const ViewGeometry& view, Image* recycle) {
 }  // namespace
 
 bool blocksServe(const BlockedVolume& blocked, const RegionTables& tables, const RenderParams& params) {
-  if (params.compositing == Compositing::mip) {
-    const double black = params.mip.level - params.mip.window / 2;  // mipPixel's grey 0 and below
-    return huOfDensity(float(blocked.backgroundDensity)) <= black;
-  }
+  // MIP: every density a background block can give (below the threshold, or the dummy's 0) shows
+  // black, as the true one does.
+  if (params.compositing == Compositing::mip)
+    return float(blocked.backgroundDensity - 1) <= mipBounds(params.mip).black;
   if (params.sampling.preintegrated) return false;
   // Background blocks hold label 0 only, which never has a TF of its own (core/label_tables.h).
   for (const TfTable* table : {tables.focus, tables.context, tables.outside})

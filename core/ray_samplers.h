@@ -55,29 +55,23 @@ class VoxelRaySampler {
   glm::ivec2 densityRange() const { return {0, kDensityLevels - 1}; }
   float maxDensity() const { return 4095.f; }
   long samplesLeftInCell() const { return 0; }
-  float density(float) const {
-    if constexpr (Filter == VoxelFilter::mean) return meanDensityAround(voxel_, at_);
-    else return float(read_(*at_));
-  }
+  float density(float) const { return densityOf(voxel_, at_); }
   float densityAt(const glm::dvec3& q, float) const {
     const glm::ivec3 v = nearestVoxel(volume_, q);
-    if constexpr (Filter == VoxelFilter::mean) return meanDensityAround(v, grid_.address(v));
-    else return float(read_(grid_.at(v)));
+    return densityOf(v, grid_.address(v));
   }
   glm::vec3 gradientAt(const glm::dvec3& q, float) const {
-    return nearestGradient(grid_, nearestVoxel(volume_, q), read_);
+    const glm::ivec3 v = nearestVoxel(volume_, q);
+    return nearestGradient(grid_, v, grid_.address(v), read_);
   }
-  glm::vec3 gradient(float) const {
-    if (!grid_.reaches(voxel_, 1, 1)) return nearestGradient(volume_, voxel_, read_);
-    return voxelGradientInterior(at_, grid_.strides(), volume_.spacing, read_);
-  }
+  glm::vec3 gradient(float) const { return nearestGradient(grid_, voxel_, at_, read_); }
   int label(float) const { return labelOf(*at_); }
 
  private:
-  // meanDensity (core/volume_sampling.h) of voxel v, whose address is `at`.
-  float meanDensityAround(glm::ivec3 v, const Voxel* at) const {
-    if (!grid_.reaches(v, 1, 1)) return meanDensity(volume_, v, read_);
-    return meanDensityInterior(at, grid_.strides(), read_);
+  // Voxel v's density with the filter; `at` is its address.
+  float densityOf(glm::ivec3 v, const Voxel* at) const {
+    if constexpr (Filter == VoxelFilter::mean) return meanDensity(grid_, v, at, read_);
+    else return float(read_(*at));
   }
 
   const VoxelGrid& grid_;

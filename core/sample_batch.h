@@ -1,10 +1,12 @@
 #pragma once
-// Eight consecutive samples of one ray reconstructed and classified at once, for the trilinear and
-// mean filters: positions, cells or voxels, densities, table entries and opacities, each in SIMD lanes and without a branch per
-// sample. Only the visible samples are then shaded and composited, one by one, in ray order
-// (core/fast_raycaster.cpp). The rows of a bundle share the in-plane positions and differ in the
-// trilinear fraction along the rotation axis a, so a batch classifies each row of the bundle from
-// one set of corner reads.
+// Eight consecutive samples of one ray reconstructed at once, for the trilinear and mean filters:
+// positions, cells or voxels and densities in SIMD lanes, without a branch per sample. DVR then
+// classifies them there (table entries, opacities, which are visible) and shades and composites
+// only the visible ones, one by one, in ray order; MIP takes their maximum (core/fast_raycaster.cpp).
+// The rows of a bundle share the in-plane positions and differ in the trilinear fraction along the
+// rotation axis a, so a batch serves each row of the bundle from one set of corner reads. Voxels
+// come from the flat volume or one block of the blocked volume (core/voxel_grid.h); hidden labels
+// read as density 0.
 //
 // xsimd (header-only, in Debian) gives one type per register width, so the same code builds for
 // AVX2 (8 floats, what -march=x86-64-v3 enables) and for SSE or NEON elsewhere. It has no
@@ -157,26 +159,25 @@ inline bool voxelLanes(const std::array<DoubleLanes, 2>& index, int reach, Voxel
   return true;
 }
 
-// The densities of the voxels at `offset` (VoxelLanes). Voxels are 16 bits; a lane reads the
-// aligned 32-bit word holding its voxel (little-endian: an even index is the low half; the origin
-// is even, so the offset's parity is the index's, and its arithmetic shift the word's). No read
-// passes the volume's storage unless the voxel is the last of a volume with an odd count: callers
-// keep every index below the last voxel's.
-inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset) {
+// The 16-bit voxels at `offset` (VoxelLanes), density and label bits. A lane reads the aligned
+// 32-bit word holding its voxel (little-endian: an even index is the low half; the origin is even,
+// so the offset's parity is the index's, and its arithmetic shift the word's). No read passes the
+// volume's storage unless the voxel is the last of a volume with an odd count: callers keep every
+// index below the last voxel's.
+inline IntLanes voxelsAt(const std::int32_t* words, const IntLanes& offset) {
   static_assert(std::endian::native == std::endian::little, "voxel words read as little-endian");
   const IntLanes word = gatherInts(words, offset >> 1);
-  return (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0x0FFF);
+  return (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0xFFFF);
 }
 
-// The same densities as `read` gives them: PlainDensity's, or MaskedDensity's with the voxels of
+// Their densities as `read` gives them: PlainDensity's, or MaskedDensity's with the voxels of
 // hidden labels read as 0 (core/label_tables.h).
 inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset, const PlainDensity&) {
-  return densitiesAt(words, offset);
+  return voxelsAt(words, offset) & IntLanes(0x0FFF);
 }
 inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset,
                             const MaskedDensity& read) {
-  const IntLanes word = gatherInts(words, offset >> 1);
-  const IntLanes voxel = (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0xFFFF);
+  const IntLanes voxel = voxelsAt(words, offset);
   const IntLanes hidden = (IntLanes(std::int32_t(read.hiddenLabels)) >> (voxel >> 12)) & IntLanes(1);
   return voxel & IntLanes(0x0FFF) & (hidden - IntLanes(1));  // all bits where shown, none where hidden
 }
@@ -197,7 +198,7 @@ struct BatchVoxels {
 // a time): each half's voxels v (whole numbers inside the volume) become indices into the flat
 // volume's voxels, or into one block's window, for reads up to `reach` past them (the largest
 // offset a caller adds through VoxelGrid::steps and strides). False, and the batch goes to the
-// scalar path, where a flat volume's read could pass its last voxel (densitiesAt) or the lanes
+// scalar path, where a flat volume's read could pass its last voxel (voxelsAt) or the lanes
 // lie too far apart (voxelLanes), and where a blocked volume's lanes lie in more than one block.
 class BatchAddresses {
  public:

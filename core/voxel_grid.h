@@ -113,10 +113,18 @@ glm::vec3 trilinearGradient(const VoxelGrid& grid, const Cell& cell, const Read&
                              read);
 }
 
+// The mean filter and the nearest voxel's gradient at voxel v, whose address (VoxelGrid::address
+// or VoxelCursor::address) is `at`.
 template <class Read = PlainDensity>
-glm::vec3 nearestGradient(const VoxelGrid& grid, glm::ivec3 v, const Read& read = {}) {
+float meanDensity(const VoxelGrid& grid, glm::ivec3 v, const Voxel* at, const Read& read = {}) {
+  if (!grid.reaches(v, 1, 1)) return meanDensity(grid.geometry(), v, read);
+  return meanDensityInterior(at, grid.strides(), read);
+}
+
+template <class Read = PlainDensity>
+glm::vec3 nearestGradient(const VoxelGrid& grid, glm::ivec3 v, const Voxel* at, const Read& read = {}) {
   if (!grid.reaches(v, 1, 1)) return nearestGradient(grid.geometry(), v, read);
-  return voxelGradientInterior(grid.address(v), grid.strides(), grid.geometry().spacing, read);
+  return voxelGradientInterior(at, grid.strides(), grid.geometry().spacing, read);
 }
 
 }  // namespace angio

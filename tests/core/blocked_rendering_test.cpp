@@ -11,11 +11,15 @@
 #include "core/label_tables.h"
 #include "core/view_geometry.h"
 #include "phantom/phantom.h"
+#include "tests/support/image_difference.h"
+#include "tests/support/labelled_volume.h"
 #include "tests/support/varied_params.h"
 #include "tests/support/varying_regions.h"
 
 namespace angio {
 namespace {
+
+using test_support::showsSomething;
 
 using test_support::variedParams;
 
@@ -43,12 +47,6 @@ TfTable tissueTable() {
                       {0, {0.8f, 0.4f, 0.3f}, 0.02f},
                       {200, {1, 0.2f, 0.2f}, 0.3f},
                       {600, {1, 1, 0.9f}, 0.8f}}});
-}
-
-bool showsSomething(const Image& image) {
-  for (const glm::vec4& pixel : image.pixels)
-    if (pixel.a > 0.5f) return true;
-  return false;
 }
 
 TEST(BlockedRendering, SameImageAsTheFlatVolume) {
@@ -88,11 +86,10 @@ TEST(BlockedRendering, SameImageAsTheFlatVolume) {
 // VesselGlyph regions use two more TFs.
 TEST(BlockedRendering, LabelsAndRegionsGiveTheFlatVolumesImage) {
   Scene scene;
-  for (Voxel& v : scene.volume.voxels) {  // label 1 on dense voxels, label 2 on soft tissue
-    const double hu = huOfDensity(densityOf(v));
-    if (hu > 500) v = Voxel(densityOf(v) | (1 << 12));
-    else if (hu > 20 && hu < 80) v = Voxel(densityOf(v) | (2 << 12));
-  }
+  // Label 1 on dense voxels, label 2 on soft tissue.
+  test_support::labelVoxels(scene.volume, [](int, int, int, double hu) {
+    return hu > 500 ? 1 : hu > 20 && hu < 80 ? 2 : 0;
+  });
   scene.blocked = buildBlockedVolume(scene.volume);
   const TfTable table = tissueTable();
   const LabelTables labels({{1, "bone", LabelMode::hidden, {}, {1, 1, 1}},

@@ -11,10 +11,14 @@
 #include "core/ray_templates.h"
 #include "core/view_geometry.h"
 #include "phantom/phantom.h"
+#include "tests/support/image_difference.h"
+#include "tests/support/labelled_volume.h"
 #include "tests/support/varied_params.h"
 
 namespace angio {
 namespace {
+
+using test_support::showsSomething;
 
 struct Scene {
   Volume volume =
@@ -32,12 +36,6 @@ struct Scene {
     return renderFast(volume, visible, table, p, options);
   }
 };
-
-bool showsSomething(const Image& image) {
-  for (const glm::vec4& pixel : image.pixels)
-    if (pixel.a > 0.5f) return true;
-  return false;
-}
 
 TEST(FastRenderOptions, RecycledMemoryOfAnotherSizeGivesTheSameImage) {
   const Scene scene;
@@ -186,13 +184,9 @@ TEST(FastRenderOptions, SampleBatchesKeepTheImage) {
 TEST(FastRenderOptions, SampleBatchesKeepTheImageWithHiddenLabels) {
   Volume volume =
       generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
-  for (int k = 0; k < volume.dims.z; ++k)
-    for (int j = 0; j < volume.dims.y; ++j)
-      for (int i = 0; i < volume.dims.x; ++i) {
-        Voxel& v = volume.voxels[volume.indexOf(i, j, k)];
-        const int label = huOfDensity(densityOf(v)) > 500 ? 1 : (i > 12 && i < 25 && k > 20) ? 3 : 2;
-        v = Voxel(densityOf(v) | label << 12);
-      }
+  test_support::labelVoxels(volume, [](int i, int, int k, double hu) {
+    return hu > 500 ? 1 : (i > 12 && i < 25 && k > 20) ? 3 : 2;
+  });
   const TfTable table = softTissueAndVessels();
   const LabelTables hidden(
       {{1, "bone", LabelMode::hidden, {}, {1, 1, 1}}, {3, "box", LabelMode::hidden, {}, {1, 1, 1}}});

@@ -12,6 +12,7 @@
 #include "core/view_geometry.h"
 #include "phantom/phantom.h"
 #include "tests/support/image_difference.h"
+#include "tests/support/labelled_volume.h"
 #include "tests/support/varying_regions.h"
 
 namespace angio {
@@ -50,13 +51,9 @@ LabelStyle ownTf(int label, glm::vec3 color, double opacity) {
 Volume labelledPhantom() {
   Volume volume =
       generatePhantom({.dims = {48, 48, 112}, .seed = 1, .style = PhantomStyle::simple}).volume;
-  for (int k = 0; k < volume.dims.z; ++k)
-    for (int j = 0; j < volume.dims.y; ++j)
-      for (int i = 0; i < volume.dims.x; ++i) {
-        Voxel& v = volume.voxels[volume.indexOf(i, j, k)];
-        if (huOfDensity(densityOf(v)) > 600) v = Voxel(densityOf(v) | (1 << 12));
-        else if (i > 10 && i < 30 && k > 60 && k < 90) v = Voxel(densityOf(v) | (3 << 12));
-      }
+  test_support::labelVoxels(volume, [](int i, int, int k, double hu) {
+    return hu > 600 ? 1 : i > 10 && i < 30 && k > 60 && k < 90 ? 3 : 0;
+  });
   return volume;
 }
 
