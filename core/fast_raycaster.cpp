@@ -226,6 +226,9 @@ struct Lane {
 // What the rays of one column of a bundle carry from one tile group to the next.
 template <class Sampler>
 struct BundleRay {
+  BundleRay(const RaySamples& positions, const Sampler& sampler, int live)
+      : positions(positions), sampler(sampler), live(live) {}
+
   RaySamples positions;  // the first row's; the in-plane part is every row's
   Sampler sampler;
   std::array<Lane, kMaxBundleRows> lanes;
@@ -794,13 +797,15 @@ glm::vec4 unstartedMipPixel(const Frame& f, int x, int y) {
   return mipPixel(f.mipBlack, f.params.mip);
 }
 
+// Column x's state, made in place (a column is started for every bundle that reaches it: a copy
+// of the state was measurable).
 template <class Sampler>
-BundleRay<Sampler> startColumn(const Frame& f, const RowBundle& bundle, int x) {
-  BundleRay<Sampler> b{
-      RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
-      Sampler(f.voxels, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
-      {},
-      bundle.lanes};
+BundleRay<Sampler>& startColumn(const Frame& f, const RowBundle& bundle, int x,
+                                std::optional<BundleRay<Sampler>>& state) {
+  BundleRay<Sampler>& b =
+      state.emplace(RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
+                    Sampler(f.voxels, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
+                    bundle.lanes);
   for (int l = 0; l < bundle.lanes; ++l) {
     b.lanes[l].regions = RegionCursor(f.regionTables.regions, x, bundle.firstRow + l);
     b.lanes[l].mipMaximum = f.mipBlack;
@@ -890,7 +895,7 @@ bool renderBundle(const Frame& f, const RowBundle& bundle, RowScratch<Sampler>& 
       auto& state = rays[visit.column];
       if (!state) {
         if (f.pixels && !scratch.columns[visit.column]) continue;
-        state.emplace(startColumn<Sampler>(f, bundle, int(visit.column)));
+        startColumn(f, bundle, int(visit.column), state);
         if constexpr (Mode::profile) {
           state->profile = &scratch.profile;
           scratch.profile.rays += bundle.rows;

@@ -22,6 +22,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include <glm/glm.hpp>
@@ -42,11 +43,12 @@ constexpr int kBatchSamples = int(FloatLanes::size);
 static_assert(IntLanes::size == FloatLanes::size && DoubleLanes::size * 2 == FloatLanes::size,
               "a batch is two halves of double lanes");
 
-// One row's classification of the batch's samples.
+// One row's classification of the batch's samples (scratch: left uninitialised until classifyRow
+// fills it, since zeroing the batches of every span was measurable).
 struct RowClasses {
-  alignas(64) std::array<std::int32_t, kBatchSamples> entry{};  // tableIndex(density)
-  alignas(64) std::array<float, kBatchSamples> opacity{};       // the table's alpha there
-  std::uint32_t visible = 0;                                    // bit j: opacity[j] > 0
+  alignas(64) std::array<std::int32_t, kBatchSamples> entry;  // tableIndex(density)
+  alignas(64) std::array<float, kBatchSamples> opacity;       // the table's alpha there
+  std::uint32_t visible = 0;                                  // bit j: opacity[j] > 0
 };
 
 // The samples first .. first + count - 1 of one ray (count <= kBatchSamples; the lanes past count
@@ -170,16 +172,37 @@ inline IntLanes voxelsAt(const std::int32_t* words, const IntLanes& offset) {
   return (word >> ((offset & IntLanes(1)) << 4)) & IntLanes(0xFFFF);
 }
 
-// Their densities as `read` gives them: PlainDensity's, or MaskedDensity's with the voxels of
-// hidden labels read as 0 (core/label_tables.h).
-inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset, const PlainDensity&) {
-  return voxelsAt(words, offset) & IntLanes(0x0FFF);
+// The voxels at `offset` and at `offset` + 1 (the next along i) in one gather: each lane reads the
+// unaligned 32-bit word that starts at its voxel, which is that word's low half (little-endian).
+// Both voxels must lie in the storage.
+struct VoxelPairLanes {
+  IntLanes first, second;
+};
+inline VoxelPairLanes voxelPairsAt(const std::int32_t* words, const IntLanes& offset) {
+#if XSIMD_WITH_AVX2
+  const IntLanes word = _mm256_i32gather_epi32(words, offset, 2);  // scale 2: a voxel's bytes
+#else
+  alignas(64) std::array<std::int32_t, kBatchSamples> lanes;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(words);
+  for (std::size_t j = 0; j < IntLanes::size; ++j)
+    std::memcpy(&lanes[j], bytes + 2 * std::ptrdiff_t(offset.get(j)), sizeof(std::int32_t));
+  const IntLanes word = IntLanes::load_aligned(lanes.data());
+#endif
+  return {word & IntLanes(0xFFFF), (word >> 16) & IntLanes(0xFFFF)};
 }
-inline IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset,
-                            const MaskedDensity& read) {
-  const IntLanes voxel = voxelsAt(words, offset);
+
+// Voxels' densities as `read` gives them: PlainDensity's, or MaskedDensity's with the voxels of
+// hidden labels read as 0 (core/label_tables.h).
+inline IntLanes densitiesOf(const IntLanes& voxel, const PlainDensity&) {
+  return voxel & IntLanes(0x0FFF);
+}
+inline IntLanes densitiesOf(const IntLanes& voxel, const MaskedDensity& read) {
   const IntLanes hidden = (IntLanes(std::int32_t(read.hiddenLabels)) >> (voxel >> 12)) & IntLanes(1);
   return voxel & IntLanes(0x0FFF) & (hidden - IntLanes(1));  // all bits where shown, none where hidden
+}
+template <class Read>
+IntLanes densitiesAt(const std::int32_t* words, const IntLanes& offset, const Read& read) {
+  return densitiesOf(voxelsAt(words, offset), read);
 }
 
 // Whether every voxel index of the half stays below the volume's last voxel.
@@ -344,9 +367,20 @@ bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positi
   BatchVoxels voxels;
   if (!addresses.finish(voxels)) return false;
   for (int axis = 0; axis < 3; ++axis) cells.frac[axis] = narrowToFloat(frac[axis][0], frac[axis][1]);
-  for (int c = 0; c < 8; ++c) {
-    const int offset = (c & 1) * steps.x + (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
-    cells.corner[c] = xsimd::to_float(densitiesAt(voxels.words, voxels.offset + IntLanes(offset), read));
+  if (steps.x != 1) {  // a flat volume one voxel wide along i
+    for (int c = 0; c < 8; ++c) {
+      const int offset = (c & 1) * steps.x + (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
+      cells.corner[c] =
+          xsimd::to_float(densitiesAt(voxels.words, voxels.offset + IntLanes(offset), read));
+    }
+    return true;
+  }
+  // The corners along i are neighbours in memory: one gather reads both.
+  for (int c = 0; c < 8; c += 2) {
+    const int offset = (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
+    const VoxelPairLanes pair = voxelPairsAt(voxels.words, voxels.offset + IntLanes(offset));
+    cells.corner[c] = xsimd::to_float(densitiesOf(pair.first, read));
+    cells.corner[c + 1] = xsimd::to_float(densitiesOf(pair.second, read));
   }
   return true;
 }
