@@ -124,11 +124,16 @@ struct RaySamples {
   glm::dvec3 at(long k) const { return samplePosition(originQ, stepQ, double(k)); }
 };
 
+// ka + kd |g . v| / |g|, or 1 where |g| < 1e-3. Every operation is written out (the sums as fused
+// multiply-adds, x first, in float) so that the fast raycaster's eight-lane shading
+// (core/sample_batch.h) gives the same bits whatever the compiler contracts.
 inline float shadingFactor(const Shading& shading, glm::vec3 gradient, glm::vec3 viewDir) {
   if (!shading.enabled) return 1.f;
-  const float length = glm::length(gradient);
+  const glm::vec3 g = gradient;
+  const float length = std::sqrt(std::fma(g.z, g.z, std::fma(g.y, g.y, g.x * g.x)));
   if (length < 1e-3f) return 1.f;
-  return float(shading.ka + shading.kd * std::abs(glm::dot(gradient, viewDir)) / length);
+  const float facing = std::fma(g.z, viewDir.z, std::fma(g.y, viewDir.y, g.x * viewDir.x));
+  return float(shading.ka) + float(shading.kd) * std::abs(facing) / length;
 }
 
 // Front-to-back accumulation state of one ray.

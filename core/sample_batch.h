@@ -1,8 +1,9 @@
 #pragma once
 // Eight consecutive samples of one ray reconstructed at once, for the trilinear and mean filters:
 // positions, cells or voxels and densities in SIMD lanes, without a branch per sample. DVR then
-// classifies them there (table entries, opacities, which are visible) and shades and composites
-// only the visible ones, one by one, in ray order; MIP takes their maximum (core/fast_raycaster.cpp).
+// classifies them there (table entries, opacities, which are visible), with the trilinear filter
+// shades them there too (the corners' central differences, interpolated), and composites only the
+// visible ones, one by one, in ray order; MIP takes their maximum (core/fast_raycaster.cpp).
 // The rows of a bundle share the in-plane positions and differ in the trilinear fraction along the
 // rotation axis a, so a batch serves each row of the bundle from one set of corner reads. Voxels
 // come from the flat volume or one block of the blocked volume (core/voxel_grid.h); hidden labels
@@ -49,14 +50,6 @@ struct RowClasses {
   alignas(64) std::array<std::int32_t, kBatchSamples> entry;  // tableIndex(density)
   alignas(64) std::array<float, kBatchSamples> opacity;       // the table's alpha there
   std::uint32_t visible = 0;                                  // bit j: opacity[j] > 0
-};
-
-// The samples first .. first + count - 1 of one ray (count <= kBatchSamples; the lanes past count
-// repeat the last sample and are not visible), classified for each row of a bundle.
-template <int Rows>
-struct SampleBatch {
-  long first = 0;
-  std::array<RowClasses, Rows> rows;
 };
 
 // 0, 1, 2, ...: each lane's sample after the batch's first.
@@ -277,6 +270,24 @@ class BatchAddresses {
   std::array<DoubleLanes, 2> index_;
 };
 
+// The cells of a batch: corner densities and fractions (cellAt), per lane.
+struct CellLanes {
+  std::array<FloatLanes, 8> corner;  // corner(dx, dy, dz) = dx + 2 dy + 4 dz
+  std::array<FloatLanes, 3> frac;
+  BatchVoxels voxels;        // corner (0, 0, 0) of each lane
+  bool shellInside = false;  // base - 1 .. base + 2 can be read along every axis, for every lane
+};
+
+// The samples first .. first + count - 1 of one ray (count <= kBatchSamples; the lanes past count
+// repeat the last sample and are not visible), classified for each row of a bundle. The trilinear
+// filter keeps the cells, for shading.
+template <int Rows>
+struct SampleBatch {
+  long first = 0;
+  std::array<RowClasses, Rows> rows;
+  CellLanes cells;
+};
+
 // The table entries and opacities of one row's densities, and which are visible.
 inline void classifyRow(const SampleTable& table, const FloatLanes& density, int count,
                         RowClasses& row) {
@@ -338,20 +349,16 @@ inline FloatLanes interpolateLanes(const FloatLanes& a, const FloatLanes& b, con
   return xsimd::fma(b - a, t, a);
 }
 
-// The cells of a batch: corner densities and fractions (cellAt), per lane.
-struct CellLanes {
-  std::array<FloatLanes, 8> corner;  // corner(dx, dy, dz) = dx + 2 dy + 4 dz
-  std::array<FloatLanes, 3> frac;
-};
-
-// cellAt of every lane, and the cells' corner densities. False where BatchAddresses is.
-template <class Read>
+// cellAt of every lane, and the cells' corner densities; with `Shell` also whether the cells'
+// shell can be read (shading). False where BatchAddresses is.
+template <bool Shell, class Read>
 bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positions, long first,
                int count, CellLanes& cells) {
   const Volume& volume = grid.geometry();
   const glm::ivec3 steps = grid.steps();
   BatchAddresses addresses(grid, steps.x + steps.y + steps.z);
   std::array<std::array<DoubleLanes, 2>, 3> frac;
+  auto shellInside = xsimd::batch_bool<double>(true);
   for (int half = 0; half < 2; ++half) {
     const std::array<DoubleLanes, 3> q = halfPositions(positions, first, count, half);
     std::array<DoubleLanes, 3> base;
@@ -361,11 +368,16 @@ bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positi
       base[axis] =
           xsimd::min(xsimd::floor(clamped), DoubleLanes(double(std::max(volume.dims[axis] - 2, 0))));
       frac[axis][half] = clamped - base[axis];
+      if constexpr (Shell)
+        shellInside = shellInside & (base[axis] >= DoubleLanes(1.0)) &
+                      (base[axis] <= DoubleLanes(double(volume.dims[axis] - 3)));
     }
     if (!addresses.addHalf(half, base)) return false;
   }
-  BatchVoxels voxels;
+  BatchVoxels& voxels = cells.voxels;
   if (!addresses.finish(voxels)) return false;
+  // A block's window holds base - 1 .. base + 2 of every voxel in its core.
+  cells.shellInside = Shell && (grid.blocks() || xsimd::all(shellInside));
   for (int axis = 0; axis < 3; ++axis) cells.frac[axis] = narrowToFloat(frac[axis][0], frac[axis][1]);
   if (steps.x != 1) {  // a flat volume one voxel wide along i
     for (int c = 0; c < 8; ++c) {
@@ -385,35 +397,41 @@ bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positi
   return true;
 }
 
-// The bilinear value in the cells' plane dz, along x then y (bilinearInPlane).
-inline FloatLanes bilinearLanes(const CellLanes& cells, int dz, const FloatLanes& fx,
+// The bilinear value of corner values `c` (corner(dx, dy, dz) as CellLanes::corner) in the
+// cells' plane dz, along x then y (bilinearInPlane).
+inline FloatLanes bilinearLanes(const std::array<FloatLanes, 8>& c, int dz, const FloatLanes& fx,
                                 const FloatLanes& fy) {
-  const auto& c = cells.corner;
   return interpolateLanes(interpolateLanes(c[4 * dz], c[4 * dz + 1], fx),
                           interpolateLanes(c[4 * dz + 2], c[4 * dz + 3], fx), fy);
 }
 
-// Trilinear for each row of a bundle: the rows' fractions along the rotation axis `axis` replace
-// the cells' (TrilinearRaySampler::density). Calls perRow(r, densities) for rows r = 0 .. rows - 1;
-// false, without calling it, where the scalar path must take the batch.
-template <class Read, class PerRow>
-bool trilinearRowDensities(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                           long first, int count, int axis, const float* fracA, int rows,
-                           PerRow&& perRow) {
-  CellLanes cells;
-  if (!cellLanes(grid, read, positions, first, count, cells)) return false;
-  const auto& f = cells.frac;
+// Trilinear of corner values `c` for each row of a bundle: the rows' fractions along the rotation
+// axis `axis` replace the cells' `f` (TrilinearRaySampler::interpolateRow). Calls perRow(r, values)
+// for rows r = 0 .. rows - 1.
+template <class PerRow>
+void interpolateRows(const std::array<FloatLanes, 8>& c, const std::array<FloatLanes, 3>& f, int axis,
+                     const float* fracA, int rows, PerRow&& perRow) {
   if (axis == 2) {  // the two planes serve every row
-    const FloatLanes low = bilinearLanes(cells, 0, f[0], f[1]),
-                     high = bilinearLanes(cells, 1, f[0], f[1]);
+    const FloatLanes low = bilinearLanes(c, 0, f[0], f[1]), high = bilinearLanes(c, 1, f[0], f[1]);
     for (int r = 0; r < rows; ++r) perRow(r, interpolateLanes(low, high, FloatLanes(fracA[r])));
-    return true;
+    return;
   }
   for (int r = 0; r < rows; ++r) {
     const FloatLanes fx = axis == 0 ? FloatLanes(fracA[r]) : f[0];
     const FloatLanes fy = axis == 1 ? FloatLanes(fracA[r]) : f[1];
-    perRow(r, interpolateLanes(bilinearLanes(cells, 0, fx, fy), bilinearLanes(cells, 1, fx, fy), f[2]));
+    perRow(r, interpolateLanes(bilinearLanes(c, 0, fx, fy), bilinearLanes(c, 1, fx, fy), f[2]));
   }
+}
+
+// Trilinear densities for each row of a bundle (TrilinearRaySampler::density), from the cells it
+// fills (cellLanes<Shell>). Calls perRow(r, densities) for rows r = 0 .. rows - 1; false, without
+// calling it, where the scalar path must take the batch.
+template <bool Shell, class Read, class PerRow>
+bool trilinearRowDensities(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
+                           long first, int count, int axis, const float* fracA, int rows,
+                           CellLanes& cells, PerRow&& perRow) {
+  if (!cellLanes<Shell>(grid, read, positions, first, count, cells)) return false;
+  interpolateRows(cells.corner, cells.frac, axis, fracA, rows, perRow);
   return true;
 }
 
@@ -422,9 +440,83 @@ bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const Ray
                               const SampleTable& table, long first, int count, int axis,
                               const float* fracA, int rows, SampleBatch<Rows>& batch) {
   batch.first = first;
-  return trilinearRowDensities(
-      grid, read, positions, first, count, axis, fracA, rows,
+  return trilinearRowDensities</*Shell=*/true>(
+      grid, read, positions, first, count, axis, fracA, rows, batch.cells,
       [&](int r, const FloatLanes& density) { classifyRow(table, density, count, batch.rows[r]); });
+}
+
+// The central differences of the cells' corners along every axis (as TrilinearRaySampler's
+// loadGradients: the neighbour inside the cell is the corner across it, the other lies in the
+// shell around the cell), gradient[axis][corner]. Needs cells.shellInside and a grid whose
+// voxels along i are neighbours in memory (strides.x == 1).
+template <class Read>
+std::array<std::array<FloatLanes, 8>, 3> cornerGradients(const VoxelGrid& grid, const Read& read,
+                                                         const CellLanes& cells) {
+  const glm::ivec3 strides = grid.strides();
+  const glm::dvec3 spacing = grid.geometry().spacing;
+  const BatchVoxels& v = cells.voxels;
+  const auto density = [&](const IntLanes& voxel) { return xsimd::to_float(densitiesOf(voxel, read)); };
+  const auto pairAt = [&](int dx, int dy, int dz) {
+    return voxelPairsAt(v.words, v.offset + IntLanes(dx + dy * strides.y + dz * strides.z));
+  };
+  const auto& c = cells.corner;
+  std::array<std::array<FloatLanes, 8>, 3> g;
+  const auto difference = [](const FloatLanes& below, const FloatLanes& above, double spacing) {
+    return (above - below) * FloatLanes(float(0.5 / spacing));  // centralDifference
+  };
+  for (int dz = 0; dz < 2; ++dz)
+    for (int dy = 0; dy < 2; ++dy) {  // along i: voxels -1 and 2 of the cell's row
+      const int row = 2 * dy + 4 * dz;
+      g[0][row] = difference(density(pairAt(-1, dy, dz).first), c[row + 1], spacing.x);
+      g[0][row + 1] = difference(c[row], density(pairAt(1, dy, dz).second), spacing.x);
+    }
+  for (int dz = 0; dz < 2; ++dz) {  // along j: rows -1 and 2 of the cell's plane
+    const VoxelPairLanes below = pairAt(0, -1, dz), above = pairAt(0, 2, dz);
+    const int plane = 4 * dz;
+    g[1][plane] = difference(density(below.first), c[plane + 2], spacing.y);
+    g[1][plane + 1] = difference(density(below.second), c[plane + 3], spacing.y);
+    g[1][plane + 2] = difference(c[plane], density(above.first), spacing.y);
+    g[1][plane + 3] = difference(c[plane + 1], density(above.second), spacing.y);
+  }
+  for (int dy = 0; dy < 2; ++dy) {  // along k: planes -1 and 2
+    const VoxelPairLanes below = pairAt(0, dy, -1), above = pairAt(0, dy, 2);
+    const int row = 2 * dy;
+    g[2][row] = difference(density(below.first), c[row + 4], spacing.z);
+    g[2][row + 1] = difference(density(below.second), c[row + 5], spacing.z);
+    g[2][row + 4] = difference(c[row], density(above.first), spacing.z);
+    g[2][row + 5] = difference(c[row + 1], density(above.second), spacing.z);
+  }
+  return g;
+}
+
+// shadingFactor (core/compositing.h) of each lane's gradient, the same operations in lanes.
+inline FloatLanes shadingLanes(const Shading& shading, const std::array<FloatLanes, 3>& g,
+                               const glm::vec3& viewDir) {
+  const FloatLanes length = xsimd::sqrt(xsimd::fma(g[2], g[2], xsimd::fma(g[1], g[1], g[0] * g[0])));
+  const FloatLanes facing =
+      xsimd::fma(g[2], FloatLanes(viewDir.z),
+                 xsimd::fma(g[1], FloatLanes(viewDir.y), g[0] * FloatLanes(viewDir.x)));
+  const FloatLanes shade =
+      FloatLanes(float(shading.ka)) + FloatLanes(float(shading.kd)) * xsimd::abs(facing) / length;
+  return xsimd::select(length < FloatLanes(1e-3f), FloatLanes(1.f), shade);
+}
+
+// The shading factors of a classified batch's samples for each row (TrilinearRaySampler::gradient,
+// then shadingFactor), into shades[r]; false where the cells' shell cannot be read in lanes (a flat
+// volume's faces, or one voxel wide along i): there the caller shades one by one.
+template <int Rows, class Read>
+bool shadeRows(const VoxelGrid& grid, const Read& read, const SampleBatch<Rows>& batch, int axis,
+               const float* fracA, int rows, const Shading& shading, const glm::vec3& viewDir,
+               std::array<std::array<float, kBatchSamples>, std::size_t(Rows)>& shades) {
+  if (!batch.cells.shellInside || grid.strides().x != 1) return false;
+  const auto corners = cornerGradients(grid, read, batch.cells);
+  std::array<std::array<FloatLanes, 3>, Rows> gradients;
+  for (int component = 0; component < 3; ++component)
+    interpolateRows(corners[component], batch.cells.frac, axis, fracA, rows,
+                    [&](int r, const FloatLanes& value) { gradients[r][component] = value; });
+  for (int r = 0; r < rows; ++r)
+    shadingLanes(shading, gradients[r], viewDir).store_unaligned(shades[r].data());
+  return true;
 }
 
 // The largest of lanes from .. count - 1 of `densities` (-infinity where from >= count).
