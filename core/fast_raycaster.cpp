@@ -46,7 +46,11 @@ struct Frame {
   bool skipGroups = true, skipTiles = true, skipCells = true;  // FastRenderOptions, resolved
   bool shareRows = true;
   bool batchSamples = true;
-  bool ownTfs = false;   // some label has its own TF
+  bool ownTfs = false;  // some label has its own TF
+  // With ownTfs, for the sample batches: the outside TF's table and the labels' own, one after the
+  // other (the batches' LaneTables point into it).
+  std::vector<SampleTable> laneTableEntries;
+  LaneTables laneTables;
   bool clipped = false;  // a crop box, clip plane or slab cuts the rays (params.clipping)
   // MIP through the window (mipPixel): a maximum up to mipBlack shows black, one from mipWhite on
   // white. A ray's maximum starts at mipBlack, so tiles, groups and cells no denser are skipped
@@ -456,12 +460,12 @@ template <class Sampler>
 constexpr bool kBatchedSampler = std::is_same_v<Sampler, TrilinearRaySampler<typename Sampler::Read>> ||
                                  std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>;
 
-// Whether a span's samples go through the batches: DVR or MIP without regions, its labels (if
-// any) hidden or shown but without TFs of their own (which pick a table per sample). The mean's
-// rows are one lane (their rows read the same voxels and are copied).
+// Whether a span's samples go through the batches: DVR or MIP without regions, not pre-integrated.
+// Labels may be hidden, or have TFs of their own (each lane picks its table: LaneTables). The
+// mean's rows are one lane (their rows read the same voxels and are copied).
 template <class Mode>
 bool batchable(const Frame& f, const RowBundle& bundle) {
-  return f.batchSamples && !Mode::regions && !(Mode::labels && f.ownTfs) && !f.segments &&
+  return f.batchSamples && !Mode::regions && !f.segments &&
          (f.params.sampling.filter == Filter::trilinear || bundle.lanes == 1);
 }
 
@@ -478,14 +482,25 @@ Read densityReader(const Frame& f) {
 // where the scalar path must take them (the volume's faces).
 template <class Sampler>
 bool classifyBatch(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b,
-                   const SampleTable& table, long first, int count, BundleBatch& batch) {
+                   const SampleTable& table, const LaneTables* own, long first, int count,
+                   BundleBatch& batch) {
   if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
     return classifyMeanSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions, table,
-                               first, count, batch);
+                               own, first, count, batch);
   else
     return classifyTrilinearSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions,
-                                    table, first, count, f.view.axis, bundle.fracA.data(), bundle.lanes,
-                                    batch);
+                                    table, own, first, count, f.view.axis, bundle.fracA.data(),
+                                    bundle.lanes, batch);
+}
+
+// LaneTables for the frame's labels with TFs of their own (no regions: the outside TF).
+void buildLaneTables(Frame& f) {
+  f.laneTableEntries = {f.tables.outside};
+  f.laneTableEntries.insert(f.laneTableEntries.end(), f.tables.ownTables.begin(),
+                            f.tables.ownTables.end());
+  f.laneTables.entries = f.laneTableEntries.front().data();
+  for (int label = 0; label < kLabelCount; ++label)
+    f.laneTables.start[label] = (f.tables.ownSlot[label] + 1) * kDensityLevels;  // slot -1: 0
 }
 
 // The first of the batch's samples (from `first`, `count` of them) that the lane needs: its clip
@@ -545,6 +560,9 @@ template <class Mode, class Sampler>
 long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long stop,
                    BundleRay<Sampler>& b) {
   const SampleTable& table = *f.tables.of(Region::outside);
+  // Labels with TFs of their own: a row's entries index the tables one after the other.
+  const LaneTables* own = Mode::labels && f.ownTfs ? &f.laneTables : nullptr;
+  const glm::vec4* entries = own ? own->entries : table.data();
   const glm::vec3 viewDir(f.view.viewDir);
   // Two batches in flight: the next one is classified before this one's visible samples are
   // composited, so its reads overlap the compositing's branches instead of waiting behind them.
@@ -552,13 +570,13 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
   std::array<bool, 2> classified{};
   const auto countAt = [&](long k) { return int(std::min<long>(kBatchSamples, stop - k)); };
   if (first < stop)
-    classified[0] = classifyBatch(f, bundle, b, table, first, countAt(first), batches[0]);
+    classified[0] = classifyBatch(f, bundle, b, table, own, first, countAt(first), batches[0]);
   for (long k = first, n = 0; k < stop; k += kBatchSamples, ++n) {
     const int count = countAt(k);
     const long next = k + kBatchSamples;
     if (next < stop)
       classified[(n + 1) % 2] =
-          classifyBatch(f, bundle, b, table, next, countAt(next), batches[(n + 1) % 2]);
+          classifyBatch(f, bundle, b, table, own, next, countAt(next), batches[(n + 1) % 2]);
     BundleBatch& batch = batches[n % 2];
     if (!classified[n % 2]) {
       const long reached = sampleEach<Mode>(f, bundle, k, k + count, b);
@@ -583,7 +601,7 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
             : shadedInLanes
                 ? shades[l][j]
                 : shadingFactor(f.params.shading, b.sampler.gradient(bundle.fracA[l]), viewDir);
-        lane.ray.add(table[batch.rows[l].entry[j]], shade);
+        lane.ray.add(entries[batch.rows[l].entry[j]], shade);
         if (lane.ray.opacity < f.params.sampling.ert) continue;
         if constexpr (Mode::profile) {
           countBatch(bundle, batch, l, j, b);
@@ -609,10 +627,10 @@ bool batchDensities(const Frame& f, const RowBundle& bundle, const BundleRay<Sam
   const auto read = densityReader<typename Sampler::Read>(f);
   if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
     return meanDensities(f.voxels, read, b.positions, first, count, densities[0]);
-  CellLanes cells;
-  return trilinearRowDensities</*Shell=*/false>(f.voxels, read, b.positions, first, count, f.view.axis,
-                                                bundle.fracA.data(), bundle.lanes, cells,
-                                                [&](int r, const FloatLanes& d) { densities[r] = d; });
+  else
+    return trilinearRowDensities(f.voxels, read, b.positions, first, count, f.view.axis,
+                                 bundle.fracA.data(), bundle.lanes,
+                                 [&](int r, const FloatLanes& d) { densities[r] = d; });
 }
 
 // sampleEach for MIP: eight samples of every lane reconstructed at once, and each lane's maximum
@@ -1063,6 +1081,7 @@ Image renderFast(const Volume& volume, const TileClassification& classification,
   f.shareRows = options.shareRows;
   f.batchSamples = options.batchSamples;
   f.ownTfs = f.labels.ownsAny();
+  if (f.ownTfs && f.tables.hasOutside) buildLaneTables(f);
   f.clipped = params.clipping.any();
   if (params.compositing == Compositing::mip) {
     const MipBounds bounds = mipBounds(params.mip);

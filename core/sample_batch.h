@@ -7,7 +7,8 @@
 // The rows of a bundle share the in-plane positions and differ in the trilinear fraction along the
 // rotation axis a, so a batch serves each row of the bundle from one set of corner reads. Voxels
 // come from the flat volume or one block of the blocked volume (core/voxel_grid.h); hidden labels
-// read as density 0.
+// read as density 0, and a label with a TF of its own gives its samples that TF's table
+// (LaneTables: by the label of the sample's nearest voxel or nearest corner, as one by one).
 //
 // xsimd (header-only, in Debian) gives one type per register width, so the same code builds for
 // AVX2 (8 floats, what -march=x86-64-v3 enables) and for SSE or NEON elsewhere. It has no
@@ -276,6 +277,7 @@ struct CellLanes {
   std::array<FloatLanes, 3> frac;
   BatchVoxels voxels;        // corner (0, 0, 0) of each lane
   bool shellInside = false;  // base - 1 .. base + 2 can be read along every axis, for every lane
+  IntLanes labels;           // if asked for: the corners' labels, 4 bits each, corner c at bit 4 c
 };
 
 // The samples first .. first + count - 1 of one ray (count <= kBatchSamples; the lanes past count
@@ -288,17 +290,34 @@ struct SampleBatch {
   CellLanes cells;
 };
 
-// The table entries and opacities of one row's densities, and which are visible.
-inline void classifyRow(const SampleTable& table, const FloatLanes& density, int count,
-                        RowClasses& row) {
+// Labels with TFs of their own, in lanes: the tables one after the other (the region's first) and
+// per label where its table starts there (0: the region's; FrameTables::of(region, label)).
+struct LaneTables {
+  const glm::vec4* entries = nullptr;
+  alignas(64) std::array<std::int32_t, kLabelCount> start{};
+};
+
+// The table entries and opacities of one row's densities, and which are visible: each lane's entry
+// in its table, which starts at `tableStart` in `tables`.
+inline void classifyRow(const glm::vec4* tables, const IntLanes& tableStart, const FloatLanes& density,
+                        int count, RowClasses& row) {
   // tableIndex: the conversion truncates, as int() does.
   const IntLanes entry =
-      xsimd::min(xsimd::to_int(density + FloatLanes(0.5f)), IntLanes(kDensityLevels - 1));
+      xsimd::min(xsimd::to_int(density + FloatLanes(0.5f)), IntLanes(kDensityLevels - 1)) + tableStart;
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "the table's entries are packed floats");
-  const FloatLanes opacity = gatherFloats(&table[0].a, entry << 2);  // alpha every 4th float
+  const FloatLanes opacity = gatherFloats(&tables[0].a, entry << 2);  // alpha every 4th float
   entry.store_aligned(row.entry.data());
   opacity.store_aligned(row.opacity.data());
   row.visible = laneBits(opacity > FloatLanes(0.f)) & ((std::uint32_t{1} << count) - 1);
+}
+inline void classifyRow(const SampleTable& table, const FloatLanes& density, int count,
+                        RowClasses& row) {
+  classifyRow(table.data(), IntLanes(0), density, count, row);
+}
+
+// Where each lane's table starts (LaneTables::start of the lane's label).
+inline IntLanes tableStarts(const LaneTables& own, const IntLanes& labels) {
+  return gatherInts(own.start.data(), labels);
 }
 
 // The mean (thesis sec. 4.4: the nearest voxel and its six face neighbours, equally weighted), one
@@ -307,7 +326,7 @@ inline void classifyRow(const SampleTable& table, const FloatLanes& density, int
 // samples one by one.
 template <class Read>
 bool meanDensities(const VoxelGrid& grid, const Read& read, const RaySamples& positions, long first,
-                   int count, FloatLanes& densities) {
+                   int count, FloatLanes& densities, IntLanes* labels = nullptr) {
   const Volume& volume = grid.geometry();
   const glm::ivec3 strides = grid.strides();
   BatchAddresses addresses(grid, strides.z);
@@ -327,7 +346,9 @@ bool meanDensities(const VoxelGrid& grid, const Read& read, const RaySamples& po
   }
   BatchVoxels voxels;
   if (!addresses.finish(voxels)) return false;
-  IntLanes sum = densitiesAt(voxels.words, voxels.offset, read);
+  const IntLanes voxel = voxelsAt(voxels.words, voxels.offset);
+  if (labels) *labels = voxel >> 12;  // labelOf
+  IntLanes sum = densitiesOf(voxel, read);
   for (int axis = 0; axis < 3; ++axis)
     sum += densitiesAt(voxels.words, voxels.offset - IntLanes(strides[axis]), read) +
            densitiesAt(voxels.words, voxels.offset + IntLanes(strides[axis]), read);
@@ -335,13 +356,18 @@ bool meanDensities(const VoxelGrid& grid, const Read& read, const RaySamples& po
   return true;
 }
 
+// With `own` (labels with TFs of their own), each sample's TF is its nearest voxel's label's.
 template <int Rows, class Read>
 bool classifyMeanSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                         const SampleTable& table, long first, int count, SampleBatch<Rows>& batch) {
+                         const SampleTable& table, const LaneTables* own, long first, int count,
+                         SampleBatch<Rows>& batch) {
   FloatLanes densities;
-  if (!meanDensities(grid, read, positions, first, count, densities)) return false;
+  IntLanes labels;
+  if (!meanDensities(grid, read, positions, first, count, densities, own ? &labels : nullptr))
+    return false;
   batch.first = first;
-  classifyRow(table, densities, count, batch.rows[0]);
+  if (own) classifyRow(own->entries, tableStarts(*own, labels), densities, count, batch.rows[0]);
+  else classifyRow(table, densities, count, batch.rows[0]);
   return true;
 }
 
@@ -353,7 +379,7 @@ inline FloatLanes interpolateLanes(const FloatLanes& a, const FloatLanes& b, con
 // shell can be read (shading). False where BatchAddresses is.
 template <bool Shell, class Read>
 bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positions, long first,
-               int count, CellLanes& cells) {
+               int count, CellLanes& cells, bool labels = false) {
   const Volume& volume = grid.geometry();
   const glm::ivec3 steps = grid.steps();
   BatchAddresses addresses(grid, steps.x + steps.y + steps.z);
@@ -379,11 +405,15 @@ bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positi
   // A block's window holds base - 1 .. base + 2 of every voxel in its core.
   cells.shellInside = Shell && (grid.blocks() || xsimd::all(shellInside));
   for (int axis = 0; axis < 3; ++axis) cells.frac[axis] = narrowToFloat(frac[axis][0], frac[axis][1]);
+  const auto take = [&](int c, const IntLanes& voxel) {
+    cells.corner[c] = xsimd::to_float(densitiesOf(voxel, read));
+    if (labels) cells.labels = cells.labels | ((voxel >> 12) << (4 * c));  // labelOf
+  };
+  if (labels) cells.labels = IntLanes(0);
   if (steps.x != 1) {  // a flat volume one voxel wide along i
     for (int c = 0; c < 8; ++c) {
       const int offset = (c & 1) * steps.x + (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
-      cells.corner[c] =
-          xsimd::to_float(densitiesAt(voxels.words, voxels.offset + IntLanes(offset), read));
+      take(c, voxelsAt(voxels.words, voxels.offset + IntLanes(offset)));
     }
     return true;
   }
@@ -391,10 +421,21 @@ bool cellLanes(const VoxelGrid& grid, const Read& read, const RaySamples& positi
   for (int c = 0; c < 8; c += 2) {
     const int offset = (c >> 1 & 1) * steps.y + (c >> 2) * steps.z;
     const VoxelPairLanes pair = voxelPairsAt(voxels.words, voxels.offset + IntLanes(offset));
-    cells.corner[c] = xsimd::to_float(densitiesOf(pair.first, read));
-    cells.corner[c + 1] = xsimd::to_float(densitiesOf(pair.second, read));
+    take(c, pair.first);
+    take(c + 1, pair.second);
   }
   return true;
+}
+
+// Each lane's label as one row of a bundle sees its cell: the label of the nearest corner
+// (TrilinearRaySampler::label), from cells filled with their labels.
+inline IntLanes nearestLabels(const CellLanes& cells, int axis, float fracA) {
+  FloatLanes corner(0.f);  // nearestCorner's index, dx + 2 dy + 4 dz
+  for (int a = 0; a < 3; ++a) {
+    const FloatLanes f = a == axis ? FloatLanes(fracA) : cells.frac[a];
+    corner += xsimd::select(f >= FloatLanes(0.5f), FloatLanes(float(1 << a)), FloatLanes(0.f));
+  }
+  return (cells.labels >> (xsimd::to_int(corner) << 2)) & IntLanes(0xF);
 }
 
 // The bilinear value of corner values `c` (corner(dx, dy, dz) as CellLanes::corner) in the
@@ -423,26 +464,35 @@ void interpolateRows(const std::array<FloatLanes, 8>& c, const std::array<FloatL
   }
 }
 
-// Trilinear densities for each row of a bundle (TrilinearRaySampler::density), from the cells it
-// fills (cellLanes<Shell>). Calls perRow(r, densities) for rows r = 0 .. rows - 1; false, without
-// calling it, where the scalar path must take the batch.
-template <bool Shell, class Read, class PerRow>
+// Trilinear densities for each row of a bundle (TrilinearRaySampler::density), for MIP. Calls
+// perRow(r, densities) for rows r = 0 .. rows - 1; false, without calling it, where the scalar
+// path must take the batch.
+template <class Read, class PerRow>
 bool trilinearRowDensities(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
                            long first, int count, int axis, const float* fracA, int rows,
-                           CellLanes& cells, PerRow&& perRow) {
-  if (!cellLanes<Shell>(grid, read, positions, first, count, cells)) return false;
+                           PerRow&& perRow) {
+  CellLanes cells;
+  if (!cellLanes</*Shell=*/false>(grid, read, positions, first, count, cells)) return false;
   interpolateRows(cells.corner, cells.frac, axis, fracA, rows, perRow);
   return true;
 }
 
+// With `own` (labels with TFs of their own), each sample's TF is its nearest corner's label's.
 template <int Rows, class Read>
 bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                              const SampleTable& table, long first, int count, int axis,
-                              const float* fracA, int rows, SampleBatch<Rows>& batch) {
+                              const SampleTable& table, const LaneTables* own, long first, int count,
+                              int axis, const float* fracA, int rows, SampleBatch<Rows>& batch) {
   batch.first = first;
-  return trilinearRowDensities</*Shell=*/true>(
-      grid, read, positions, first, count, axis, fracA, rows, batch.cells,
-      [&](int r, const FloatLanes& density) { classifyRow(table, density, count, batch.rows[r]); });
+  if (!cellLanes</*Shell=*/true>(grid, read, positions, first, count, batch.cells, own != nullptr))
+    return false;
+  interpolateRows(
+      batch.cells.corner, batch.cells.frac, axis, fracA, rows, [&](int r, const FloatLanes& density) {
+        if (own)
+          classifyRow(own->entries, tableStarts(*own, nearestLabels(batch.cells, axis, fracA[r])),
+                      density, count, batch.rows[r]);
+        else classifyRow(table, density, count, batch.rows[r]);
+      });
+  return true;
 }
 
 // The central differences of the cells' corners along every axis (as TrilinearRaySampler's

@@ -194,6 +194,27 @@ TEST(FastRenderOptions, SampleBatchesKeepTheImageWithHiddenLabels) {
                             {Axis::k, Axis::i}, &table);
 }
 
+// The same with labels that have TFs of their own (each lane picks its sample's table by the label
+// of its nearest voxel or corner, as one by one): label 1 (200..500 HU) and label 3 (a box through
+// the body) each with its own TF, label 2 (above 500 HU) hidden, so that MIP changes too; the rest
+// unlabelled. Rotation about k and i, so the rows of a bundle see different nearest corners.
+TEST(FastRenderOptions, SampleBatchesKeepTheImageWithLabelsOfTheirOwnTf) {
+  Volume volume =
+      generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
+  test_support::labelVoxels(volume, [](int i, int, int k, double hu) {
+    if (hu > 500) return 2;
+    if (hu > 200) return 1;
+    return (i > 12 && i < 25 && k > 20) ? 3 : 0;
+  });
+  const TfTable table = softTissueAndVessels();
+  const LabelTables labels(
+      {{1, "bone", LabelMode::tf, {{200, {1, 1, 1}, 0.f}, {900, {1, 1, 1}, 0.5f}}, {1, 1, 1}},
+       {2, "hidden", LabelMode::hidden, {}, {1, 1, 1}},
+       {3, "box", LabelMode::tf, {{-200, {0, 0.5f, 1}, 0.05f}, {300, {0, 1, 1}, 0.4f}}, {0, 1, 1}}});
+  expectBatchesKeepTheImage(volume, RegionTables{nullptr, nullptr, nullptr, &table, &labels},
+                            {Axis::k, Axis::i}, &table);
+}
+
 // Rows and bundles are split among threads as oneTBB likes; each pixel must not care.
 TEST(FastRenderOptions, SameBytesWhateverTheThreadCount) {
   const Scene scene;
