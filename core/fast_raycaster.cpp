@@ -460,16 +460,18 @@ template <class Sampler>
 constexpr bool kBatchedSampler = std::is_same_v<Sampler, TrilinearRaySampler<typename Sampler::Read>> ||
                                  std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>;
 
-// Whether a span's samples go through the batches: DVR or MIP without regions, not pre-integrated.
-// Labels may be hidden, or have TFs of their own (each lane picks its table: LaneTables). The
-// mean's rows are one lane (their rows read the same voxels and are copied).
+// Whether a span's samples go through the batches: DVR or MIP, not pre-integrated. Labels may be
+// hidden, or have TFs of their own (each lane picks its table: LaneTables); DVR may have VesselGlyph
+// regions (each lane its region's table) but not with those labels. The mean's rows are one lane
+// (their rows read the same voxels and are copied).
 template <class Mode>
 bool batchable(const Frame& f, const RowBundle& bundle) {
-  return f.batchSamples && !Mode::regions && !f.segments &&
+  return f.batchSamples && !(Mode::regions && (Mode::mip || f.ownTfs)) && !f.segments &&
          (f.params.sampling.filter == Filter::trilinear || bundle.lanes == 1);
 }
 
 using BundleBatch = SampleBatch<kMaxBundleRows>;
+using LanesTables = BatchTables<kMaxBundleRows>;
 
 // The sampler's voxel reader: the frame's label mask, or the plain density.
 template <class Read>
@@ -482,15 +484,52 @@ Read densityReader(const Frame& f) {
 // where the scalar path must take them (the volume's faces).
 template <class Sampler>
 bool classifyBatch(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b,
-                   const SampleTable& table, const LaneTables* own, long first, int count,
-                   BundleBatch& batch) {
+                   const LanesTables& tables, long first, int count, BundleBatch& batch) {
   if constexpr (std::is_same_v<Sampler, MeanRaySampler<typename Sampler::Read>>)
-    return classifyMeanSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions, table,
-                               own, first, count, batch);
+    return classifyMeanSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions, tables,
+                               first, count, batch);
   else
     return classifyTrilinearSamples(f.voxels, densityReader<typename Sampler::Read>(f), b.positions,
-                                    table, own, first, count, f.view.axis, bundle.fracA.data(),
-                                    bundle.lanes, batch);
+                                    tables, first, count, f.view.axis, bundle.fracA.data(), bundle.lanes,
+                                    batch);
+}
+
+// VesselGlyph: the first sample from `at` on (or `stop`) that may lie in a rendered region for some
+// lane not done; before it every lane's region is not rendered (sampleLane leaps the same way, to
+// just before a region's end).
+template <class Sampler>
+long firstRendered(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b, long at,
+                   long stop) {
+  const double t = double(at) * f.view.sampleMm;
+  long first = stop;
+  for (int l = 0; l < bundle.lanes; ++l) {
+    if (b.lanes[l].done) continue;
+    RegionCursor probe = b.lanes[l].regions;
+    if (f.tables.of(probe.at(t))) return at;
+    const double change = probe.nextChange(t);
+    if (change != std::numeric_limits<double>::infinity())
+      first = std::min(first, std::max(at, long(change / f.view.sampleMm) - 1));
+  }
+  return first;
+}
+
+// VesselGlyph: each lane's table for the batch's samples [first, first + count) (BatchTables),
+// false where a lane's region changes inside the batch (the scalar path takes it). The lanes'
+// cursors are probed on copies: a batch is classified ahead of the one before it, which may still
+// go to the scalar path and walk the cursors from where they are.
+template <class Sampler>
+bool regionTables(const Frame& f, const RowBundle& bundle, const BundleRay<Sampler>& b, long first,
+                  int count, LanesTables& tables) {
+  const double begin = double(first) * f.view.sampleMm;
+  const double last = double(first + count - 1) * f.view.sampleMm;
+  for (int l = 0; l < bundle.lanes; ++l) {
+    RegionCursor probe = b.lanes[l].regions;
+    const Region region = probe.at(begin);
+    if (!(last < probe.nextChange(begin))) return false;
+    const SampleTable* table = f.tables.of(region);
+    tables.row[l] = table ? table->data() : nullptr;
+  }
+  return true;
 }
 
 // LaneTables for the frame's labels with TFs of their own (no regions: the outside TF).
@@ -559,25 +598,41 @@ bool shadeBatch(const Frame& f, const RowBundle& bundle, const BundleBatch& batc
 template <class Mode, class Sampler>
 long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long stop,
                    BundleRay<Sampler>& b) {
-  const SampleTable& table = *f.tables.of(Region::outside);
-  // Labels with TFs of their own: a row's entries index the tables one after the other.
-  const LaneTables* own = Mode::labels && f.ownTfs ? &f.laneTables : nullptr;
-  const glm::vec4* entries = own ? own->entries : table.data();
+  // Every lane's table: the outside TF's, or with labels that have TFs of their own the tables one
+  // after the other (LaneTables); with VesselGlyph regions each batch's own (regionTables).
+  LanesTables fixed;
+  if (Mode::labels && f.ownTfs) {
+    fixed.own = &f.laneTables;
+    fixed.row.fill(f.laneTables.entries);
+  } else if (!Mode::regions) {
+    fixed.row.fill(f.tables.of(Region::outside)->data());
+  }
   const glm::vec3 viewDir(f.view.viewDir);
   // Two batches in flight: the next one is classified before this one's visible samples are
   // composited, so its reads overlap the compositing's branches instead of waiting behind them.
   std::array<BundleBatch, 2> batches;
+  std::array<LanesTables, 2> tables;
   std::array<bool, 2> classified{};
   const auto countAt = [&](long k) { return int(std::min<long>(kBatchSamples, stop - k)); };
-  if (first < stop)
-    classified[0] = classifyBatch(f, bundle, b, table, own, first, countAt(first), batches[0]);
-  for (long k = first, n = 0; k < stop; k += kBatchSamples, ++n) {
+  const auto classify = [&](long at, int slot) {
+    if constexpr (Mode::regions) {
+      if (!regionTables(f, bundle, b, at, countAt(at), tables[slot])) return false;
+    } else {
+      tables[slot] = fixed;
+    }
+    return classifyBatch(f, bundle, b, tables[slot], at, countAt(at), batches[slot]);
+  };
+  // With regions a batch starts where some lane's region is rendered, as sampleEach leaps.
+  const auto startAt = [&](long k) { return Mode::regions ? firstRendered(f, bundle, b, k, stop) : k; };
+  const long start = startAt(first);
+  if (start < stop) classified[0] = classify(start, 0);
+  long next = stop;
+  for (long k = start, n = 0; k < stop; k = next, ++n) {
     const int count = countAt(k);
-    const long next = k + kBatchSamples;
-    if (next < stop)
-      classified[(n + 1) % 2] =
-          classifyBatch(f, bundle, b, table, own, next, countAt(next), batches[(n + 1) % 2]);
+    next = startAt(k + count);
+    if (next < stop) classified[(n + 1) % 2] = classify(next, int((n + 1) % 2));
     BundleBatch& batch = batches[n % 2];
+    const LanesTables& batchTables = tables[n % 2];
     if (!classified[n % 2]) {
       const long reached = sampleEach<Mode>(f, bundle, k, k + count, b);
       if (b.live == 0) return reached;
@@ -601,7 +656,7 @@ long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long sto
             : shadedInLanes
                 ? shades[l][j]
                 : shadingFactor(f.params.shading, b.sampler.gradient(bundle.fracA[l]), viewDir);
-        lane.ray.add(entries[batch.rows[l].entry[j]], shade);
+        lane.ray.add(batchTables.row[l][batch.rows[l].entry[j]], shade);
         if (lane.ray.opacity < f.params.sampling.ert) continue;
         if constexpr (Mode::profile) {
           countBatch(bundle, batch, l, j, b);

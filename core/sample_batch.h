@@ -320,6 +320,15 @@ inline IntLanes tableStarts(const LaneTables& own, const IntLanes& labels) {
   return gatherInts(own.start.data(), labels);
 }
 
+// The TF tables the rows of a batch classify with: per row its table's first entry (nullptr: the
+// row's samples lie in a region that is not rendered, none is visible), or, with `own`, the labels'
+// tables (every row's entry then LaneTables::entries).
+template <int Rows>
+struct BatchTables {
+  std::array<const glm::vec4*, Rows> row{};
+  const LaneTables* own = nullptr;
+};
+
 // The mean (thesis sec. 4.4: the nearest voxel and its six face neighbours, equally weighted), one
 // row: the rows of a bundle read the same voxels. False, with nothing set, where a voxel lacks
 // a neighbour (the volume's faces) or the lanes lie too far apart (voxelLanes): there the caller
@@ -356,18 +365,29 @@ bool meanDensities(const VoxelGrid& grid, const Read& read, const RaySamples& po
   return true;
 }
 
-// With `own` (labels with TFs of their own), each sample's TF is its nearest voxel's label's.
+// One row's classification with its tables (BatchTables); `labels` gives the lanes' labels where
+// labels have TFs of their own.
+template <int Rows, class Labels>
+void classifyRowWith(const BatchTables<Rows>& tables, int r, const FloatLanes& density, int count,
+                     Labels&& labels, RowClasses& row) {
+  if (tables.own)
+    classifyRow(tables.own->entries, tableStarts(*tables.own, labels()), density, count, row);
+  else if (tables.row[r]) classifyRow(tables.row[r], IntLanes(0), density, count, row);
+  else row = {.entry = {}, .opacity = {}, .visible = 0};
+}
+
+// With own TFs (BatchTables::own) each sample's TF is its nearest voxel's label's.
 template <int Rows, class Read>
 bool classifyMeanSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                         const SampleTable& table, const LaneTables* own, long first, int count,
+                         const BatchTables<Rows>& tables, long first, int count,
                          SampleBatch<Rows>& batch) {
   FloatLanes densities;
   IntLanes labels;
-  if (!meanDensities(grid, read, positions, first, count, densities, own ? &labels : nullptr))
+  if (!meanDensities(grid, read, positions, first, count, densities, tables.own ? &labels : nullptr))
     return false;
   batch.first = first;
-  if (own) classifyRow(own->entries, tableStarts(*own, labels), densities, count, batch.rows[0]);
-  else classifyRow(table, densities, count, batch.rows[0]);
+  classifyRowWith(
+      tables, 0, densities, count, [&] { return labels; }, batch.rows[0]);
   return true;
 }
 
@@ -477,21 +497,21 @@ bool trilinearRowDensities(const VoxelGrid& grid, const Read& read, const RaySam
   return true;
 }
 
-// With `own` (labels with TFs of their own), each sample's TF is its nearest corner's label's.
+// With own TFs (BatchTables::own) each sample's TF is its nearest corner's label's.
 template <int Rows, class Read>
 bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const RaySamples& positions,
-                              const SampleTable& table, const LaneTables* own, long first, int count,
-                              int axis, const float* fracA, int rows, SampleBatch<Rows>& batch) {
+                              const BatchTables<Rows>& tables, long first, int count, int axis,
+                              const float* fracA, int rows, SampleBatch<Rows>& batch) {
   batch.first = first;
-  if (!cellLanes</*Shell=*/true>(grid, read, positions, first, count, batch.cells, own != nullptr))
+  if (!cellLanes</*Shell=*/true>(grid, read, positions, first, count, batch.cells,
+                                 tables.own != nullptr))
     return false;
-  interpolateRows(
-      batch.cells.corner, batch.cells.frac, axis, fracA, rows, [&](int r, const FloatLanes& density) {
-        if (own)
-          classifyRow(own->entries, tableStarts(*own, nearestLabels(batch.cells, axis, fracA[r])),
-                      density, count, batch.rows[r]);
-        else classifyRow(table, density, count, batch.rows[r]);
-      });
+  interpolateRows(batch.cells.corner, batch.cells.frac, axis, fracA, rows,
+                  [&](int r, const FloatLanes& density) {
+                    classifyRowWith(
+                        tables, r, density, count,
+                        [&] { return nearestLabels(batch.cells, axis, fracA[r]); }, batch.rows[r]);
+                  });
   return true;
 }
 

@@ -14,6 +14,7 @@
 #include "tests/support/image_difference.h"
 #include "tests/support/labelled_volume.h"
 #include "tests/support/varied_params.h"
+#include "tests/support/varying_regions.h"
 
 namespace angio {
 namespace {
@@ -213,6 +214,39 @@ TEST(FastRenderOptions, SampleBatchesKeepTheImageWithLabelsOfTheirOwnTf) {
        {3, "box", LabelMode::tf, {{-200, {0, 0.5f, 1}, 0.05f}, {300, {0, 1, 1}, 0.4f}}, {0, 1, 1}}});
   expectBatchesKeepTheImage(volume, RegionTables{nullptr, nullptr, nullptr, &table, &labels},
                             {Axis::k, Axis::i}, &table);
+}
+
+// The same with VesselGlyph regions (DVR): each lane classifies a batch with its region's table,
+// none where its region is not rendered, and a batch in which a lane's region changes goes one by
+// one. Focus and context at depths that vary from ray to ray (test_support::varyingRegions), the
+// outside shown or not rendered, both filters (the mean batches only single-row bundles here).
+TEST(FastRenderOptions, SampleBatchesKeepTheImageWithVesselGlyphRegions) {
+  const Volume volume =
+      generatePhantom({.dims = {37, 41, 59}, .seed = 5, .style = PhantomStyle::realistic}).volume;
+  const TfTable table = softTissueAndVessels();
+  const TfTable focus =
+      buildTable({"focus", {{-1024, {0, 0, 0}, 0}, {50, {1, 0, 0}, 0}, {150, {1, 0.2f, 0}, 0.6f}}});
+  const TfTable* notRendered = nullptr;
+  for (Axis axis : {Axis::k, Axis::i}) {
+    const SliceTiles tiles = buildSliceTiles(volume, axis);
+    for (Filter filter : {Filter::mean, Filter::trilinear})
+      for (double osd : {1.0, 0.3})
+        for (int variant = 0; variant < 3; ++variant)
+          for (const TfTable* outside : {&table, notRendered}) {
+            const RenderParams p = test_support::variedParams(volume, axis, filter, osd, variant);
+            const RayRegions regions =
+                test_support::varyingRegions(makeViewGeometry(volume, p), 2.f, 12, 3.f, 30.f);
+            const RegionTables tables{&regions, &focus, &table, outside};
+            const TileClassification visible(tiles, tables);
+            const Image batched = renderFast(volume, visible, tables, p);
+            ASSERT_TRUE(showsSomething(batched));
+            FastRenderOptions oneByOne;
+            oneByOne.batchSamples = false;
+            EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels)
+                << toString(axis) << " filter " << int(filter) << " osd " << osd << " variant "
+                << variant << (outside ? "" : ", outside not rendered");
+          }
+  }
 }
 
 // Rows and bundles are split among threads as oneTBB likes; each pixel must not care.
