@@ -591,10 +591,11 @@ bool shadeBatch(const Frame& f, const RowBundle& bundle, const BundleBatch& batc
   }
 }
 
-// sampleEach for plain DVR: eight samples reconstructed and classified at once for every lane of
-// the bundle, then the visible ones shaded and composited in ray order; the same operations on the
-// same values, so the same bits. Samples in cells the TF hides are classified with the others,
-// not leapt over (no cell test), and batches at the volume's faces are taken one by one.
+// sampleEach for DVR: eight samples reconstructed, classified (and with the trilinear filter
+// shaded) at once for every lane of the bundle, then the visible ones composited in ray order; the
+// same operations on the same values, so the same bits. Samples in cells the TF hides are
+// classified with the others, not leapt over (no cell test); batches at the volume's faces, and
+// with VesselGlyph regions batches in which a lane's region changes, are taken one by one.
 template <class Mode, class Sampler>
 long sampleBatches(const Frame& f, const RowBundle& bundle, long first, long stop,
                    BundleRay<Sampler>& b) {
