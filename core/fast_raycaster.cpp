@@ -897,8 +897,8 @@ glm::vec4 unstartedMipPixel(const Frame& f, int x, int y) {
 // Column x's state, made in place (a column is started for every bundle that reaches it: a copy
 // of the state was measurable).
 template <class Sampler>
-BundleRay<Sampler>& startColumn(const Frame& f, const RowBundle& bundle, int x,
-                                std::optional<BundleRay<Sampler>>& state) {
+void startColumn(const Frame& f, const RowBundle& bundle, int x,
+                 std::optional<BundleRay<Sampler>>& state) {
   BundleRay<Sampler>& b =
       state.emplace(RaySamples(f.volume, f.view, f.view.rayOrigin(x, bundle.firstRow)),
                     Sampler(f.voxels, f.rayStepQ, f.view.axis, densityReader<typename Sampler::Read>(f)),
@@ -910,7 +910,6 @@ BundleRay<Sampler>& startColumn(const Frame& f, const RowBundle& bundle, int x,
   if (f.clipped) clipLanes(f, bundle, x, b);
   // The rows of a bundle differ only along the rotation axis, inside the domain: one range.
   if (f.segments) b.domainEnd = sampleRange(f.view, f.view.rayOrigin(x, bundle.firstRow)).last + 1;
-  return b;
 }
 
 template <class Mode, class Sampler>

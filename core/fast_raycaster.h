@@ -7,9 +7,10 @@
 // together, so a cell's corners, transparency and gradients serve all of them (at the high level
 // several rows share a slice pair); cell transparency and the cell's gradients cached per ray
 // (core/ray_samplers.h); early ray termination; bundles in parallel (oneTBB, dynamic balance).
-// With the trilinear or mean filter, DVR and MIP (without VesselGlyph regions or pre-integration;
-// labels hidden or with TFs of their own are fine) reconstruct eight samples of a ray at once in
-// SIMD lanes, for every row of a bundle (core/sample_batch.h); DVR classifies them there (and, with
+// With the trilinear or mean filter, DVR and MIP (not pre-integrated; labels hidden or with TFs of
+// their own are fine, and DVR's VesselGlyph regions unless labels have TFs of their own) reconstruct
+// eight samples of a ray at once in SIMD lanes, for every row of a bundle (core/sample_batch.h);
+// DVR classifies them there (and, with
 // the trilinear filter, shades them there from the cells' central differences) and composites only
 // the visible ones, MIP takes their maximum. MIP starts each ray's maximum at the largest density
 // its window shows black and ends a ray once it shows white.

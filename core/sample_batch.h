@@ -517,8 +517,8 @@ bool classifyTrilinearSamples(const VoxelGrid& grid, const Read& read, const Ray
 
 // The central differences of the cells' corners along every axis (as TrilinearRaySampler's
 // loadGradients: the neighbour inside the cell is the corner across it, the other lies in the
-// shell around the cell), gradient[axis][corner]. Needs cells.shellInside and a grid whose
-// voxels along i are neighbours in memory (strides.x == 1).
+// shell around the cell), gradient[axis][corner]. Needs cells.shellInside (which implies at least
+// four voxels along every axis, so the voxels along i are neighbours in memory).
 template <class Read>
 std::array<std::array<FloatLanes, 8>, 3> cornerGradients(const VoxelGrid& grid, const Read& read,
                                                          const CellLanes& cells) {
@@ -573,12 +573,12 @@ inline FloatLanes shadingLanes(const Shading& shading, const std::array<FloatLan
 
 // The shading factors of a classified batch's samples for each row (TrilinearRaySampler::gradient,
 // then shadingFactor), into shades[r]; false where the cells' shell cannot be read in lanes (a flat
-// volume's faces, or one voxel wide along i): there the caller shades one by one.
+// volume's faces): there the caller shades one by one.
 template <int Rows, class Read>
 bool shadeRows(const VoxelGrid& grid, const Read& read, const SampleBatch<Rows>& batch, int axis,
                const float* fracA, int rows, const Shading& shading, const glm::vec3& viewDir,
                std::array<std::array<float, kBatchSamples>, std::size_t(Rows)>& shades) {
-  if (!batch.cells.shellInside || grid.strides().x != 1) return false;
+  if (!batch.cells.shellInside) return false;
   const auto corners = cornerGradients(grid, read, batch.cells);
   std::array<std::array<FloatLanes, 3>, Rows> gradients;
   for (int component = 0; component < 3; ++component)

@@ -1,6 +1,7 @@
 // FastRenderOptions that must not change the image: recycled frame memory and row progress; and
 // the skipping switches the bench turns off one at a time.
 #include <atomic>
+#include <string>
 
 #include <tbb/global_control.h>
 
@@ -139,6 +140,19 @@ TfTable softTissueAndVessels() {
                       {600, {1, 1, 0.9f}, 0.8f}}});
 }
 
+// One frame batched against one by one, bit for bit; the frame must show something. Returns the
+// batched image.
+Image expectBatchedEqualsOneByOne(const Volume& volume, const TileClassification& visible,
+                                  const RegionTables& tables, const RenderParams& p,
+                                  const std::string& what) {
+  const Image batched = renderFast(volume, visible, tables, p);
+  EXPECT_TRUE(showsSomething(batched)) << what;
+  FastRenderOptions oneByOne;
+  oneByOne.batchSamples = false;
+  EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels) << what;
+  return batched;
+}
+
 // Batched against one by one, bit for bit, for both filters that batch (nearest does not), DVR and
 // MIP, osd 1 and 0.3, shaded or not, and clipped (test_support::variedParams). With `unlabelled`,
 // the same frame without the tables' labels must differ, so the labels are in effect.
@@ -153,17 +167,15 @@ void expectBatchesKeepTheImage(const Volume& volume, const RegionTables& tables,
           for (int variant = 0; variant < 3; ++variant) {
             RenderParams p = test_support::variedParams(volume, axis, filter, osd, variant);
             p.compositing = compositing;
-            FastRenderOptions oneByOne;
-            oneByOne.batchSamples = false;
-            const Image batched = renderFast(volume, visible, tables, p);
-            ASSERT_TRUE(showsSomething(batched));
+            const Image batched = expectBatchedEqualsOneByOne(
+                volume, visible, tables, p,
+                std::string(toString(axis)) + (compositing == Compositing::mip ? " mip" : " dvr") +
+                    " filter " + std::to_string(int(filter)) + " osd " + std::to_string(osd) +
+                    " variant " + std::to_string(variant));
             if (unlabelled) {
               const TileClassification plain(tiles, singleTable(*unlabelled), /*mip=*/true);
               EXPECT_FALSE(renderFast(volume, plain, *unlabelled, p).pixels == batched.pixels);
             }
-            EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels)
-                << toString(axis) << (compositing == Compositing::mip ? " mip" : " dvr") << " filter "
-                << int(filter) << " osd " << osd << " variant " << variant;
           }
   }
 }
@@ -238,13 +250,11 @@ TEST(FastRenderOptions, SampleBatchesKeepTheImageWithVesselGlyphRegions) {
                 test_support::varyingRegions(makeViewGeometry(volume, p), 2.f, 12, 3.f, 30.f);
             const RegionTables tables{&regions, &focus, &table, outside};
             const TileClassification visible(tiles, tables);
-            const Image batched = renderFast(volume, visible, tables, p);
-            ASSERT_TRUE(showsSomething(batched));
-            FastRenderOptions oneByOne;
-            oneByOne.batchSamples = false;
-            EXPECT_TRUE(renderFast(volume, visible, tables, p, oneByOne).pixels == batched.pixels)
-                << toString(axis) << " filter " << int(filter) << " osd " << osd << " variant "
-                << variant << (outside ? "" : ", outside not rendered");
+            expectBatchedEqualsOneByOne(volume, visible, tables, p,
+                                        std::string(toString(axis)) + " filter " +
+                                            std::to_string(int(filter)) + " osd " + std::to_string(osd) +
+                                            " variant " + std::to_string(variant) +
+                                            (outside ? "" : ", outside not rendered"));
           }
   }
 }
